@@ -1,0 +1,29 @@
+# frozen_string_literal: true
+
+require_relative 'lib/syskit/version'
+
+Gem::Specification.new do |spec|
+  spec.name = 'syskit'
+  spec.version = Syskit::VERSION
+  spec.summary = "Describe a robot's devices and buses in Ruby and plan their component network"
+  spec.description = <<~TEXT
+    A standalone implementation of Syskit's model layer (Rock robotics): device and
+    communication-bus models, drivers, robot definitions in profiles, and a network
+    generator that turns a profile into a connection plan, with generators and
+    minitest helpers.
+  TEXT
+  spec.authors = ['Syskit gem authors']
+  spec.license = 'BSD-3-Clause'
+  spec.required_ruby_version = '>= 3.1'
+
+  spec.files = Dir['lib/**/*.rb', 'models/**/*', 'templates/**/*', 'bin/*', 'README.md']
+  spec.bindir = 'bin'
+  spec.executables = ['syskit']
+  spec.require_paths = ['lib']
+
+  spec.add_dependency 'thor', '~> 1.2'
+
+  spec.add_development_dependency 'minitest', '~> 5.15'
+  spec.add_development_dependency 'rake', '~> 13.0'
+  spec.metadata['rubygems_mfa_required'] = 'true'
+end

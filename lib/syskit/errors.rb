@@ -1,0 +1,109 @@
+# frozen_string_literal: true
+
+require 'syskit/location'
+
+module Syskit
+  # Base of every error a user can meet. It says what is wrong, where (the
+  # user's file and line) and how to fix it.
+  class Error < StandardError
+    attr_reader :location, :hint
+
+    def initialize(message, location: nil, hint: nil)
+      super(message)
+      @location = location
+      @hint = hint
+    end
+
+    # The error for a terminal: "file:line: message" then an indented hint.
+    def report(root = nil)
+      first = location ? "#{location.to_s(root)}: #{message}" : message
+      hint ? "#{first}\n  hint: #{hint}" : first
+    end
+
+    # The error as plain data, for `--format json`.
+    def to_h(root = nil)
+      {
+        'file' => location&.relative_path(root), 'line' => location&.lineno,
+        'severity' => 'error', 'message' => message, 'hint' => hint
+      }
+    end
+
+    # Copy of this error pointing at another location, when the first
+    # location found is not the user's (e.g. inside a bundled model).
+    def at(location)
+      copy = dup
+      copy.instance_variable_set(:@location, location)
+      copy
+    end
+  end
+
+  # Misuse of the modelling DSL: a declaration that cannot mean anything.
+  class DeclarationError < Error; end
+
+  # A name (device, bus, property...) that is not known.
+  class UnknownName < DeclarationError; end
+
+  # A file of the app that cannot be loaded: syntax errors, exceptions raised
+  # while it is evaluated, unknown task libraries or typekits.
+  class FileLoadError < Error; end
+
+  # A type that does not exist or a value that does not fit its type.
+  class TypeError < Error; end
+
+  # An .orogen task library specification that cannot be read.
+  class SpecError < Error; end
+
+  # A device without a usable driver, or with too many.
+  class DriverError < Error; end
+
+  # A network that cannot be generated from a profile.
+  class NetworkError < Error; end
+
+  # No, or too many, deployed tasks for a task of the network.
+  class DeploymentError < NetworkError; end
+
+  # A configuration file or section that cannot be applied.
+  class ConfigurationError < Error; end
+
+  # An exception raised by a user's configure method or stub block.
+  class ConfigureMethodError < ConfigurationError; end
+
+  # A generator that refuses to run.
+  class GeneratorError < Error; end
+
+  # Several errors found in one pass (loading an app, one generation step).
+  class ErrorList < Error
+    attr_reader :errors
+
+    def initialize(errors)
+      @errors = errors.flat_map { |e| e.respond_to?(:errors) ? e.errors : [e] }
+      super(@errors.map(&:message).join("\n"), location: @errors.first&.location,
+                                                 hint: @errors.first&.hint)
+    end
+
+    def report(root = nil)
+      @errors.map { |e| e.report(root) }.join("\n")
+    end
+
+    # Raises the errors as one exception, the single error itself when alone.
+    def self.raise_if_any(errors)
+      return if errors.empty?
+      raise errors.first if errors.size == 1
+
+      raise new(errors)
+    end
+  end
+
+  # A problem that does not stop the plan but that the user should know of
+  # (e.g. overlapping CAN filters). `syskit check --strict` makes them errors.
+  class Warning < Error
+    def to_h(root = nil)
+      super.merge('severity' => 'warning')
+    end
+
+    def report(root = nil)
+      text = super
+      location ? text.sub(': ', ': warning: ') : "warning: #{text}"
+    end
+  end
+end

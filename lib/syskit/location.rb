@@ -1,0 +1,48 @@
+# frozen_string_literal: true
+
+module Syskit
+  # A place in a user's file: where a declaration was made or an error comes from.
+  Location = Struct.new(:path, :lineno)
+
+  class Location
+    # The gem's own code; frames in here are never "the user's line".
+    GEM_LIB = File.expand_path('..', __dir__)
+
+    # The first frame of the current call stack that is outside the gem's
+    # library code, i.e. the user's DSL call that led here.
+    def self.of_caller
+      from(caller_locations.find { |loc| user_frame?(loc) })
+    end
+
+    # The first frame of an exception's backtrace that is outside the gem.
+    def self.of_exception(exception)
+      from((exception.backtrace_locations || []).find { |loc| user_frame?(loc) })
+    end
+
+    # The first frame of an exception's backtrace that is in +path+.
+    def self.in_file(exception, path)
+      from((exception.backtrace_locations || []).find { |loc| (loc.absolute_path || loc.path) == path })
+    end
+
+    def self.user_frame?(loc)
+      path = loc.absolute_path || loc.path
+      !path.start_with?(GEM_LIB, '<internal:')
+    end
+
+    def self.from(loc)
+      new(loc.absolute_path || loc.path, loc.lineno) if loc
+    end
+
+    # The path relative to +root+ when it is inside it.
+    def relative_path(root = nil)
+      return path unless root
+
+      prefix = "#{File.expand_path(root)}/"
+      path.start_with?(prefix) ? path.delete_prefix(prefix) : path
+    end
+
+    def to_s(root = nil)
+      "#{relative_path(root)}:#{lineno}"
+    end
+  end
+end

@@ -1,0 +1,45 @@
+# frozen_string_literal: true
+
+module Syskit
+  # Conversions between the path form users type (gps/ublox/f9) and the
+  # constant form models are named with (GPS::Ublox::F9).
+  module Naming
+    CONSTANT_NAME = /\A[A-Z][A-Za-z0-9_]*\z/.freeze
+
+    module_function
+
+    def constant_name?(name)
+      CONSTANT_NAME.match?(name.to_s)
+    end
+
+    # 'gps' -> 'GPS' (when GPS is an acronym), 'gig_e' -> 'GigE', 'f9' -> 'F9'.
+    # A segment already in constant form is kept as it is.
+    def camelize(segment, acronyms = [])
+      return segment if constant_name?(segment) && !segment.include?('_')
+
+      segment.split('_').map do |word|
+        acronyms.find { |a| a.casecmp?(word) } || (word[0].upcase + word[1..])
+      end.join
+    end
+
+    # 'GPS' -> 'gps', 'GigE' -> 'gig_e', 'IMUSensor' -> 'imu_sensor', 'F9' -> 'f9'.
+    def underscore(constant)
+      constant.to_s
+              .gsub(/([A-Z]+)([A-Z][a-z])/, '\1_\2')
+              .gsub(/([a-z\d])([A-Z])/, '\1_\2')
+              .downcase
+    end
+
+    # Suggestions for a misspelled +name+ among +candidates+.
+    def suggest(name, candidates)
+      require 'did_you_mean'
+      DidYouMean::SpellChecker.new(dictionary: candidates.map(&:to_s)).correct(name.to_s)
+    end
+
+    # " (did you mean 'x'?)" or an empty string.
+    def did_you_mean(name, candidates)
+      found = suggest(name, candidates)
+      found.empty? ? '' : " (did you mean #{found.map { |s| "'#{s}'" }.join(' or ')}?)"
+    end
+  end
+end

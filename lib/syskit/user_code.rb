@@ -1,0 +1,104 @@
+# frozen_string_literal: true
+
+module Syskit
+  # Runs code users wrote (model files, .orogen specs, configure methods) and
+  # turns whatever it raises into a Syskit::Error that says what went wrong,
+  # at which line of the user's file, and how to fix it.
+  #
+  # Objects that users call methods on (namespaces, DSL contexts, devices,
+  # properties) explain a missing method through +explain_missing(name)+,
+  # which returns +[message, hint]+.
+  module UserCode
+    module_function
+
+    # Evaluates the file at +path+ with +receiver+ as self.
+    def evaluate(path, receiver, root: nil)
+      receiver.instance_eval(File.read(path), path, 1)
+    rescue ScriptError, StandardError => e
+      raise translate(e, path: path, root: root)
+    end
+
+    # A Syskit::Error for +exception+. +path+ is the file being evaluated:
+    # the location is then its line in that file.
+    def translate(exception, path: nil, root: nil, error_class: FileLoadError, context: nil)
+      case exception
+      when Syskit::Error
+        exception.location ? exception : exception.at(location_of(exception, path))
+      when SyntaxError
+        syntax_error(exception, path)
+      when NameError
+        name_error(exception, path, error_class, context)
+      else
+        message = "#{exception.class}: #{first_line(exception.message)}"
+        error_class.new(context ? "#{context}: #{message}" : message,
+                        location: location_of(exception, path, root),
+                        hint: 'fix the code at this line (run with --trace for the backtrace)')
+      end.tap { |error| error.set_backtrace(exception.backtrace || []) if error.backtrace.nil? }
+    end
+
+    def location_of(exception, path, root = nil)
+      (path && Location.in_file(exception, path)) ||
+        (root && in_root(exception, root)) ||
+        Location.of_exception(exception)
+    end
+
+    def in_root(exception, root)
+      prefix = "#{File.expand_path(root)}/"
+      Location.from((exception.backtrace_locations || []).find do |loc|
+        (loc.absolute_path || loc.path).start_with?(prefix)
+      end)
+    end
+
+    def syntax_error(exception, path)
+      lines = exception.message.lines
+      header = lines.find { |l| l =~ /\A(.+?):(\d+): (.*)/ }
+      if header
+        file, line, text = header.match(/\A(.+?):(\d+): (.*)/).captures
+        location = Location.new(File.expand_path(file), Integer(line))
+      else
+        text = first_line(exception.message)
+        location = path && Location.new(path, 0)
+      end
+      FileLoadError.new("syntax error: #{text.strip}", location: location,
+                                                       hint: 'fix the Ruby syntax at this line')
+    end
+
+    def name_error(exception, path, error_class, context)
+      message, hint = explain(exception)
+      message = "#{context}: #{message}" if context
+      error_class.new(message, location: location_of(exception, path), hint: hint)
+    end
+
+    # The receiver's own explanation of a missing method or constant, or
+    # Ruby's message with its spelling suggestions.
+    def explain(exception)
+      receiver = receiver_of(exception)
+      if exception.name && receiver.respond_to?(:explain_missing)
+        return receiver.explain_missing(exception.name.to_s)
+      end
+
+      text = exception.message.lines.map(&:strip).reject(&:empty?)
+      suggestion = text.drop(1).join(' ')
+      hint = suggestion.empty? ? missing_hint(exception) : suggestion
+      [text.first.to_s.sub(/ for #<[^>]*>\z/, ''), hint]
+    end
+
+    def missing_hint(exception)
+      if exception.is_a?(NoMethodError)
+        'check the spelling and the object the method is called on'
+      else
+        "check the spelling, and that the file defining #{exception.name} is required or loaded"
+      end
+    end
+
+    def receiver_of(exception)
+      exception.receiver
+    rescue ArgumentError
+      nil
+    end
+
+    def first_line(text)
+      text.to_s.lines.first.to_s.strip
+    end
+  end
+end

@@ -1,0 +1,132 @@
+# frozen_string_literal: true
+
+module Syskit
+  # What a port declaration says about the connections it wants. Shared by
+  # ports and dynamic port patterns (a created port inherits its pattern's).
+  module ConnectionNeeds
+    NEEDS = %i[doc multiplexes reliable buffer_size period burst sample_size].freeze
+
+    attr_accessor(*NEEDS)
+
+    def multiplexes?
+      !!multiplexes
+    end
+
+    # Whether a connection into this port must not lose samples.
+    def reliable?
+      !!reliable
+    end
+
+    def input?
+      direction == :input
+    end
+
+    def output?
+      direction == :output
+    end
+
+    def copy_needs_from(other)
+      NEEDS.each { |attr| public_send("#{attr}=", other.public_send(attr)) }
+      self
+    end
+  end
+
+  # A port of a task model: name, direction (:input/:output) and type.
+  # Dynamic ports are the ones created at configure time.
+  class Port
+    include ConnectionNeeds
+
+    attr_reader :name, :direction, :type
+
+    def initialize(name, direction, type, dynamic: false)
+      @name = name
+      @direction = direction
+      @type = type
+      @dynamic = dynamic
+    end
+
+    def dynamic?
+      @dynamic
+    end
+
+    def to_s
+      "#{direction} port '#{name}' (#{type.name})"
+    end
+  end
+
+  # A pattern of ports a task can create at configure time
+  # (+dynamic_output_port(/\w+/, '/canbus/Message')+).
+  class DynamicPort
+    include ConnectionNeeds
+
+    attr_reader :pattern, :direction, :type
+
+    def initialize(pattern, direction, type)
+      @pattern = pattern
+      @direction = direction
+      @type = type
+    end
+
+    def match?(port_name, port_type)
+      pattern.match?(port_name) && port_type == type
+    end
+
+    # The concrete port this pattern gives for +port_name+.
+    def instantiate(port_name)
+      Port.new(port_name, direction, type, dynamic: true).copy_needs_from(self)
+    end
+
+    def to_s
+      "dynamic #{direction} port #{pattern.inspect} (#{type.name})"
+    end
+  end
+
+  # The modifiers oroGen accepts after a port declaration, e.g.
+  # +input_port('in', '/canbus/Message').multiplexes.needs_reliable_connection+.
+  class PortModifiers
+    def initialize(port)
+      @port = port
+    end
+
+    def multiplexes
+      @port.multiplexes = true
+      self
+    end
+
+    def needs_reliable_connection
+      @port.reliable = true
+      self
+    end
+
+    def needs_buffered_connection(size = 1)
+      @port.buffer_size = Integer(size)
+      self
+    end
+
+    def doc(text)
+      @port.doc = text
+      self
+    end
+
+    def period(seconds)
+      @port.period = seconds
+      self
+    end
+
+    def burst(count, _period = nil)
+      @port.burst = count
+      self
+    end
+
+    def sample_size(size)
+      @port.sample_size = size
+      self
+    end
+
+    # Accepted and recorded by oroGen, meaningless for planning.
+    %i[needs_data_connection keep_last_written_value default_policy
+       triggered_on_update max_sizes].each do |name|
+      define_method(name) { |*_args, **_kwargs| self }
+    end
+  end
+end

@@ -1,0 +1,125 @@
+# frozen_string_literal: true
+
+require 'syskit/types/type'
+require 'syskit/types/struct_type'
+require 'syskit/namespace'
+
+module Syskit
+  module Types
+    # All the types an app knows of, by canonical name, plus the +Types+
+    # namespace object that exposes them to Ruby code.
+    class Registry
+      # Spellings oroGen accepts for its base types, and their canonical name.
+      ALIASES = {
+        'char' => '/int8_t', 'short' => '/int16_t', 'int' => '/int32_t', 'long' => '/int64_t',
+        'long long' => '/int64_t', 'unsigned char' => '/uint8_t', 'unsigned short' => '/uint16_t',
+        'unsigned int' => '/uint32_t', 'unsigned' => '/uint32_t', 'unsigned long' => '/uint64_t',
+        'unsigned long long' => '/uint64_t', 'double' => '/double', 'float' => '/float',
+        'bool' => '/bool', 'string' => '/std/string', '/string' => '/std/string'
+      }.freeze
+
+      # Typekits whose types are built in (no file to load).
+      BUILTIN_TYPEKITS = %w[std].freeze
+
+      attr_reader :namespace
+
+      def initialize
+        @types = {}
+        @namespace = Syskit::Namespace.new('Types')
+        @opaque_namespaces = {}
+        register_builtins
+      end
+
+      # The canonical spelling of a type name: leading slash, base type
+      # aliases resolved, container arguments normalized.
+      def self.normalize(name)
+        name = name.to_s.strip
+        return "#{normalize(Regexp.last_match(1))}[#{Regexp.last_match(2)}]" if name =~ /\A(.+)\[(\d+)\]\z/
+
+        if (m = name.match(/\A(.*?)<(.+)>\z/))
+          return "#{normalize(m[1])}<#{normalize(m[2])}>"
+        end
+
+        ALIASES.fetch(name) { name.start_with?('/') ? name : "/#{name}" }
+      end
+
+      # The type called +name+, nil if it is not known. Containers and arrays
+      # of known types are created on demand.
+      def find(name)
+        return name if name.is_a?(Type)
+
+        canonical = Registry.normalize(name)
+        @types[canonical] || derive(canonical)
+      end
+
+      # Like {#find}, but raises a located Syskit::TypeError for unknown names,
+      # unless +opaque_ok+ says the name may come from an unreadable header.
+      def resolve(name, location: nil, opaque_ok: false)
+        found = find(name)
+        return found if found
+
+        canonical = Registry.normalize(name)
+        return register(OpaqueType.new(canonical)) if opaque_ok || opaque_namespace?(canonical)
+
+        raise unknown_type_error(canonical, location)
+      end
+
+      def register(type)
+        @types[type.name] = type
+        segments = type.name.delete_prefix('/').split('/')
+        @namespace.add(segments, type) if segments.size > 1 && type.name.match?(%r{\A[/\w]+\z})
+        type
+      end
+
+      # Declares that types under /+name+/ come from a typekit the gem cannot
+      # read: any type in that namespace is accepted as opaque.
+      def opaque_typekit(name)
+        @opaque_namespaces[name] = true
+      end
+
+      def opaque_namespace?(canonical)
+        @opaque_namespaces.key?(canonical.delete_prefix('/').split('/').first)
+      end
+
+      def each_type(&block)
+        @types.each_value(&block)
+      end
+
+      def names
+        @types.keys.sort
+      end
+
+      private
+
+      def derive(canonical)
+        if (m = canonical.match(/\A(.+)\[(\d+)\]\z/))
+          element = find(m[1])
+          register(ArrayType.new(canonical, element, Integer(m[2]))) if element
+        elsif (m = canonical.match(/\A(.*?)<(.+)>\z/))
+          element = find(m[2])
+          register(ContainerType.new(canonical, element)) if element && m[1] == '/std/vector'
+        end
+      end
+
+      def unknown_type_error(canonical, location)
+        TypeError.new(
+          "unknown type #{canonical}#{Naming.did_you_mean(canonical, @types.keys)}",
+          location: location,
+          hint: "import the typekit that defines it (import_types_from 'typekit_name'); " \
+                'an app declares its own types in models/typekits/NAME.rb'
+        )
+      end
+
+      def register_builtins
+        { 8 => 'int8_t', 16 => 'int16_t', 32 => 'int32_t', 64 => 'int64_t' }.each do |bits, n|
+          register(IntegerType.new("/#{n}", bits: bits, signed: true))
+          register(IntegerType.new("/u#{n}", bits: bits, signed: false))
+        end
+        register(FloatType.new('/double'))
+        register(FloatType.new('/float'))
+        register(BoolType.new('/bool'))
+        register(StringType.new('/std/string'))
+      end
+    end
+  end
+end

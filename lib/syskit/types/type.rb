@@ -1,0 +1,202 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Types
+    # Raised by a type when a value does not fit it. Callers turn it into a
+    # located Syskit::TypeError (they know the property, file and line).
+    class ValueError < StandardError; end
+
+    # A named data type, such as +/canbus/Message+ or +/std/string+.
+    #
+    # Types convert values given by users (Ruby values or plain data read from
+    # YAML) into their canonical Ruby form with {#from_ruby}, and back into
+    # plain data (for plans and JSON) with {#to_plain}.
+    class Type
+      attr_reader :name
+
+      def initialize(name)
+        @name = name
+      end
+
+      def to_s
+        name
+      end
+
+      def inspect
+        "#<#{self.class.name.split('::').last} #{name}>"
+      end
+
+      # The value a property of this type has when nothing sets it.
+      def zero
+        nil
+      end
+
+      def from_ruby(value)
+        value
+      end
+
+      def to_plain(value)
+        value
+      end
+
+      # Whether values of this type are opaque to the gem (declared in C++
+      # headers it cannot read).
+      def opaque?
+        false
+      end
+
+      private
+
+      def mismatch(value, expected)
+        raise ValueError, "expected #{expected} for #{name}, got #{value.inspect}"
+      end
+    end
+
+    # Integer types: int, /int32_t, /uint8_t, ...
+    class IntegerType < Type
+      attr_reader :range
+
+      def initialize(name, bits:, signed:)
+        super(name)
+        @range = signed ? (-(2**(bits - 1))...(2**(bits - 1))) : (0...(2**bits))
+      end
+
+      def zero
+        0
+      end
+
+      def from_ruby(value)
+        mismatch(value, 'an integer') unless value.is_a?(Integer)
+        unless range.cover?(value)
+          raise ValueError, "#{value} is out of range for #{name} (#{range.min}..#{range.max})"
+        end
+
+        value
+      end
+    end
+
+    # Floating-point types: double, float.
+    class FloatType < Type
+      def zero
+        0.0
+      end
+
+      def from_ruby(value)
+        mismatch(value, 'a number') unless value.is_a?(Numeric)
+        value.to_f
+      end
+    end
+
+    # bool
+    class BoolType < Type
+      def zero
+        false
+      end
+
+      def from_ruby(value)
+        mismatch(value, 'true or false') unless [true, false].include?(value)
+        value
+      end
+    end
+
+    # /std/string
+    class StringType < Type
+      def zero
+        ''
+      end
+
+      def from_ruby(value)
+        mismatch(value, 'a string') unless value.is_a?(String) || value.is_a?(Symbol)
+        value.to_s
+      end
+    end
+
+    # An enumeration; values are symbols, written as strings or symbols.
+    class EnumType < Type
+      attr_reader :values
+
+      def initialize(name, values)
+        super(name)
+        @values = values.map(&:to_sym).freeze
+      end
+
+      def zero
+        values.first
+      end
+
+      def from_ruby(value)
+        sym = value.to_sym if value.respond_to?(:to_sym)
+        return sym if values.include?(sym)
+
+        raise ValueError, "#{value.inspect} is not a value of #{name} (#{values.join(', ')})"
+      end
+
+      def to_plain(value)
+        value.to_s
+      end
+    end
+
+    # /std/vector<T>: values are Ruby arrays of T.
+    class ContainerType < Type
+      attr_reader :element
+
+      def initialize(name, element)
+        super(name)
+        @element = element
+      end
+
+      def zero
+        []
+      end
+
+      def from_ruby(value)
+        mismatch(value, 'an array') unless value.is_a?(Array)
+        value.each_with_index.map do |v, i|
+          element.from_ruby(v)
+        rescue ValueError => e
+          raise ValueError, "element #{i}: #{e.message}"
+        end
+      end
+
+      def to_plain(value)
+        value.map { |v| element.to_plain(v) }
+      end
+    end
+
+    # T[N]: a fixed-size array.
+    class ArrayType < ContainerType
+      attr_reader :size
+
+      def initialize(name, element, size)
+        super(name, element)
+        @size = size
+      end
+
+      def zero
+        Array.new(size) { element.zero }
+      end
+
+      def from_ruby(value)
+        values = super
+        raise ValueError, "#{name} holds exactly #{size} elements, got #{values.size}" unless values.size == size
+
+        values
+      end
+    end
+
+    # A type declared in a C/C++ header the gem cannot read: any plain value
+    # (hash, array, string, number, boolean) is accepted as is.
+    class OpaqueType < Type
+      PLAIN = [Hash, Array, String, Symbol, Numeric, TrueClass, FalseClass, NilClass].freeze
+
+      def opaque?
+        true
+      end
+
+      def from_ruby(value)
+        mismatch(value, 'plain data (hash, array, string, number)') unless PLAIN.any? { |k| value.is_a?(k) }
+        value
+      end
+    end
+  end
+end

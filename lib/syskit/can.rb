@@ -1,0 +1,43 @@
+# frozen_string_literal: true
+
+module Syskit
+  # CAN identifiers and filters, shared by the bundled CAN bus model, the
+  # filter-overlap check and the bus traffic tools.
+  module CAN
+    STANDARD_ID_MAX = 0x7FF
+    EXTENDED_ID_MAX = 0x1FFF_FFFF
+
+    # A device's receive filter: it gets the frames with (frame_id & mask) == id.
+    Filter = Struct.new(:id, :mask) do
+      def match?(frame_id)
+        (frame_id & mask) == id
+      end
+
+      # Whether some frame id passes both filters.
+      def overlap?(other)
+        ((id ^ other.id) & mask & other.mask).zero?
+      end
+
+      def to_s
+        format('id 0x%<id>X mask 0x%<mask>X', id: id, mask: mask)
+      end
+    end
+
+    module_function
+
+    # Raises ArgumentError unless +id+/+mask+ is a filter some frame can pass.
+    def check_filter(id, mask)
+      { 'id' => id, 'mask' => mask }.each do |what, value|
+        raise ArgumentError, "the #{what} must be an integer, got #{value.inspect}" unless value.is_a?(Integer)
+        next if value.between?(0, EXTENDED_ID_MAX)
+
+        raise ArgumentError, format('the %<what>s 0x%<v>X does not fit in 29 bits (CAN ids are 11-bit standard ' \
+                                    'or 29-bit extended, at most 0x%<max>X)', what: what, v: value, max: EXTENDED_ID_MAX)
+      end
+      return Filter.new(id, mask) if (id & mask) == id
+
+      raise ArgumentError, format('this filter can never match: id 0x%<id>X has bits outside mask 0x%<mask>X ' \
+                                  '(id & mask = 0x%<both>X)', id: id, mask: mask, both: id & mask)
+    end
+  end
+end

@@ -1,0 +1,31 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Orogen
+    # A deployment: a process that runs named task instances. Declared in an
+    # .orogen file (+deployment 'test_canbus' do task('can0', 'canbus::Task') end+)
+    # or made for one task by +Syskit.conf.use_deployment OroGen.x.Task => 'name'+.
+    class DeploymentSpec
+      # One task instance of a deployment.
+      DeployedTask = Struct.new(:name, :model, :deployment, :declared_at, keyword_init: true) do
+        def to_s
+          "#{name} (#{model.name}, deployment #{deployment.name})"
+        end
+      end
+
+      attr_reader :name, :tasks, :declared_at
+
+      def initialize(name, location: nil)
+        @name = name
+        @tasks = []
+        @declared_at = location
+      end
+
+      def add_task(name, model, location: nil)
+        task = DeployedTask.new(name: name, model: model, deployment: self, declared_at: location)
+        @tasks << task
+        task
+      end
+    end
+  end
+end

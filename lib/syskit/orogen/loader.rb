@@ -1,0 +1,110 @@
+# frozen_string_literal: true
+
+require 'syskit/orogen/task_library'
+require 'syskit/orogen/spec_loader'
+require 'syskit/orogen/root_namespace'
+
+module Syskit
+  module Orogen
+    # The task libraries of an app: where their .orogen files are, which ones
+    # are loaded, their task models and deployments.
+    class Loader
+      attr_reader :namespace
+
+      def initialize(app)
+        @app = app
+        @libraries = {}
+        @deployments = {}
+        @namespace = RootNamespace.new(self)
+        available_library_names.each { |name| @namespace.add_unloaded(name) }
+      end
+
+      # The .orogen file of +name+: the app's models/orogen/ first, then each
+      # directory of SYSKIT_OROGEN_PATH, then the gem's bundled libraries.
+      def spec_path(name)
+        @app.orogen_search_dirs.map { |dir| File.join(dir, "#{name}.orogen") }.find { |p| File.file?(p) }
+      end
+
+      def available_library_names
+        @available_library_names ||=
+          @app.orogen_search_dirs.flat_map { |dir| Dir[File.join(dir, '*.orogen')] }
+              .map { |p| File.basename(p, '.orogen') }.uniq.sort
+      end
+
+      def loaded?(name)
+        @libraries.key?(name)
+      end
+
+      def library(name)
+        @libraries[name]
+      end
+
+      def loaded_library_names
+        @libraries.keys.sort
+      end
+
+      def load_library(name, location)
+        path = spec_path(name)
+        raise unknown_library(name, location) unless path
+
+        library = TaskLibrary.new(name, path)
+        @libraries[name] = library
+        begin
+          SpecLoader.new(@app, library).load
+        rescue Exception # rubocop:disable Lint/RescueException -- undo, then re-raise as is
+          @libraries.delete(name)
+          raise
+        end
+        @namespace.add([name], library.namespace)
+        library
+      end
+
+      def find_task_model(full_name)
+        library(full_name.split('::').first)&.tasks&.[](full_name)
+      end
+
+      def each_task_model(&block)
+        return enum_for(__method__) unless block
+
+        @libraries.each_value { |lib| lib.tasks.each_value(&block) }
+      end
+
+      def register_deployment(library, deployment)
+        if (existing = @deployments[deployment.name])
+          raise SpecError.new("deployment '#{deployment.name}' is already declared at #{existing.declared_at}",
+                              location: deployment.declared_at, hint: 'deployment names are unique in an app')
+        end
+
+        library.deployments[deployment.name] = deployment
+        @deployments[deployment.name] = deployment
+      end
+
+      def find_deployment(name)
+        @deployments[name]
+      end
+
+      def deployment_names
+        @deployments.keys.sort
+      end
+
+      # Task libraries on the search path whose .orogen file declares a
+      # deployment called +name+, found without loading them.
+      def libraries_declaring_deployment(name)
+        pattern = /^\s*deployment\s*\(?\s*["']#{Regexp.escape(name)}["']/
+        available_library_names.select { |lib| File.read(spec_path(lib)).match?(pattern) }
+      end
+
+      private
+
+      def unknown_library(name, location)
+        searched = @app.orogen_search_dirs.map { |d| Location.new(d, 0).relative_path(@app.root) }
+        FileLoadError.new(
+          "no task library '#{name}'#{Naming.did_you_mean(name, available_library_names)}",
+          location: location,
+          hint: "there is no #{name}.orogen in #{searched.join(', ')}; " \
+                "create models/orogen/#{name}.orogen or add its directory to SYSKIT_OROGEN_PATH"
+        )
+      end
+    end
+  end
+end

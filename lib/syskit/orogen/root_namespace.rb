@@ -1,0 +1,45 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Orogen
+    # The object behind the +OroGen+ constant: +OroGen.canbus+ is the loaded
+    # canbus library's namespace, +OroGen.extend_task+ extends a task model.
+    class RootNamespace < Syskit::Namespace
+      def initialize(loader)
+        super('OroGen')
+        @loader = loader
+      end
+
+      # Same as Syskit.extend_model.
+      def extend_task(model, &block)
+        Syskit.extend_model(model, &block)
+      end
+
+      # A library that exists on the search path but is not loaded yet: using
+      # it says which using_task_library is missing.
+      def add_unloaded(name)
+        return unless name.match?(/\A[a-z_]\w*\z/) && !respond_to?(name)
+
+        define_singleton_method(name) do
+          raise FileLoadError.new(
+            "task library '#{name}' is not loaded (loaded: #{loaded_list})",
+            location: Location.of_caller, hint: "add using_task_library '#{name}' before using OroGen.#{name}"
+          )
+        end
+      end
+
+      def explain_missing(name)
+        available = @loader.available_library_names
+        ["there is no task library '#{name}'#{Naming.did_you_mean(name, available)} (loaded: #{loaded_list})",
+         "available task libraries: #{available.join(', ')}; load one with using_task_library 'name'"]
+      end
+
+      private
+
+      def loaded_list
+        names = @loader.loaded_library_names
+        names.empty? ? 'none' : names.join(', ')
+      end
+    end
+  end
+end

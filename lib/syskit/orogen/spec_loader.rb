@@ -1,0 +1,93 @@
+# frozen_string_literal: true
+
+require 'syskit/orogen/spec_dsl'
+
+module Syskit
+  module Orogen
+    # Reads one .orogen file (oroGen's own Ruby syntax) into a TaskLibrary:
+    # a task model class per task_context and a DeploymentSpec per deployment.
+    class SpecLoader
+      attr_reader :library
+
+      def initialize(app, library)
+        @app = app
+        @library = library
+        @opaque_ok = false
+      end
+
+      def load
+        UserCode.evaluate(library.path, ProjectDSL.new(self), root: @app.root)
+        library
+      end
+
+      def check_project_name(name, location)
+        return if name == library.name
+
+        raise SpecError.new("#{File.basename(library.path)} declares the project name '#{name}'",
+                            location: location, hint: "the file of task library '#{name}' must be named #{name}.orogen")
+      end
+
+      def define_task(name, parent_name, location, &block)
+        full_name = "#{library.name}::#{name}"
+        if library.tasks.key?(full_name)
+          raise SpecError.new("task_context '#{name}' is declared twice", location: location,
+                                                                          hint: 'give each task context its own name')
+        end
+
+        spec = TaskSpec.new(full_name, library, location: location)
+        @parent_model = Syskit::TaskContext
+        subclass(spec, parent_name, location) if parent_name
+        TaskContextDSL.new(self, spec).instance_eval(&block) if block
+        spec.finalize
+        library.add_task(@parent_model.new_model(spec))
+      end
+
+      # Makes +spec+ a subclass of the task model called +parent_name+.
+      def subclass(spec, parent_name, location)
+        @parent_model = find_task_model(parent_name, location)
+        spec.superclass = @parent_model.spec
+      end
+
+      def define_deployment(name, location, &block)
+        deployment = DeploymentSpec.new(name, location: location)
+        DeploymentDSL.new(self, deployment).instance_eval(&block) if block
+        @app.orogen.register_deployment(library, deployment)
+      end
+
+      # +import_types_from+: a typekit, or a C/C++ header whose types stay opaque.
+      def import_types(name, location)
+        @opaque_ok = true if @app.import_types(name, location: location, from_spec: true) != :typekit
+      end
+
+      def using_task_library(name, location)
+        @app.using_task_library(name, location: location)
+      end
+
+      def resolve_type(name, location)
+        @app.types.resolve(name, location: location, opaque_ok: @opaque_ok)
+      end
+
+      # A task model by full name, or by name relative to this library.
+      def find_task_model(name, location)
+        found = library.find_task(name) || @app.orogen.find_task_model(name)
+        return found if found
+
+        lib_name = name.split('::').first
+        hint =
+          if name.include?('::') && !@app.orogen.loaded?(lib_name)
+            "add using_task_library '#{lib_name}' before this line"
+          else
+            "the task models known here are #{known_task_names.join(', ')}"
+          end
+        raise SpecError.new("unknown task model '#{name}'#{Naming.did_you_mean(name, known_task_names)}",
+                            location: location, hint: hint)
+      end
+
+      private
+
+      def known_task_names
+        (library.tasks.keys + @app.orogen.each_task_model.map(&:name)).uniq.sort
+      end
+    end
+  end
+end

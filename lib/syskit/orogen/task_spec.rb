@@ -1,0 +1,66 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Orogen
+    # What an .orogen file says of one task context: its ports, dynamic port
+    # patterns, properties, operations, states and activity.
+    class TaskSpec
+      attr_reader :name, :library, :properties, :attributes, :ports,
+                  :dynamic_ports, :operations, :states, :declared_at
+      attr_accessor :superclass, :doc, :abstract, :needs_configuration, :activity, :worstcase_processing_time
+
+      def initialize(name, library, superclass: nil, location: nil)
+        @name = name
+        @library = library
+        @superclass = superclass
+        @declared_at = location
+        @properties = {}
+        @attributes = {}
+        @ports = {}
+        @dynamic_ports = []
+        @operations = {}
+        @states = Hash.new { |h, k| h[k] = [] }
+        @abstract = false
+        @needs_configuration = false
+      end
+
+      def abstract?
+        abstract
+      end
+
+      # Ports, including those inherited from the parent task, by name.
+      def all_ports
+        @all_ports || (superclass ? superclass.all_ports : {}).merge(ports)
+      end
+
+      def all_dynamic_ports
+        @all_dynamic_ports || (superclass ? superclass.all_dynamic_ports : []) + dynamic_ports
+      end
+
+      def all_properties
+        @all_properties || (superclass ? superclass.all_properties : {}).merge(properties)
+      end
+
+      def find_port(name)
+        all_ports[name.to_s]
+      end
+
+      # The dynamic port pattern +name+ of +type+ would be created from.
+      def dynamic_port_for(direction, name, type)
+        all_dynamic_ports.find { |p| p.direction == direction && p.match?(name, type) }
+      end
+
+      # Called once the task_context block is evaluated: the inherited views
+      # are computed once, generation reads them often.
+      def finalize
+        @all_ports = all_ports.freeze
+        @all_dynamic_ports = all_dynamic_ports.freeze
+        @all_properties = all_properties.freeze
+      end
+
+      def to_s
+        name
+      end
+    end
+  end
+end

@@ -1,0 +1,44 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Models
+    # A service provided by a task model, from +provides+ or +driver_for+:
+    # its name (+as:+), the service model and which task port each service
+    # port is.
+    class BoundService
+      attr_reader :task_model, :name, :model, :port_mappings, :declared_at
+
+      def initialize(task_model, name, model, port_mappings, location)
+        @task_model = task_model
+        @name = name
+        @model = model
+        @port_mappings = port_mappings.freeze
+        @declared_at = location
+      end
+
+      # The device or bus model the task drives through this service, if any.
+      def driven_device_model
+        model.driven_device_model
+      end
+
+      # The task argument holding the device (+f9_dev+ for +as: 'f9'+).
+      def argument_name
+        :"#{name}_dev"
+      end
+
+      def fullfills?(other)
+        model.fullfills?(other)
+      end
+
+      # The task port a port of +srv_model+ (this service's model or one it
+      # provides) is bound to.
+      def task_port_for(srv_model, srv_port_name)
+        task_model.find_port(port_mappings.fetch(model.port_mappings_for(srv_model).fetch(srv_port_name)))
+      end
+
+      def to_s
+        "service '#{name}' (#{model}) of #{task_model.name}"
+      end
+    end
+  end
+end

@@ -1,0 +1,123 @@
+# frozen_string_literal: true
+
+require 'syskit/models/device_model'
+
+module Syskit
+  module Models
+    # A communication bus model (+com_bus_type 'CAN', message_type: T+): a
+    # device whose driver multiplexes the I/O of the devices attached to it.
+    #
+    # Every bus model defines seven services, all of its message type:
+    # BusBaseSrv; BusSrv, BusInSrv, BusOutSrv for bus drivers (+to_bus+ input,
+    # +from_bus+ output); ClientSrv, ClientInSrv, ClientOutSrv for the drivers
+    # of attached devices (+from_bus+ input, +to_bus+ output).
+    class ComBusModel < DeviceModel
+      SERVICES = %w[BusBaseSrv BusSrv BusInSrv BusOutSrv ClientSrv ClientInSrv ClientOutSrv].freeze
+
+      attr_reader :message_type
+
+      def self.kind
+        'communication bus'
+      end
+
+      def initialize(message_type: nil, **options)
+        super(**options)
+        @attached_device_configuration = nil
+        self.message_type = message_type if message_type
+      end
+
+      def apply_options(message_type: nil)
+        self.message_type = message_type if message_type
+      end
+
+      def message_type=(type)
+        location = Location.of_caller
+        type = Models.resolve_type(type, location)
+        if @message_type && @message_type != type
+          raise DeclarationError.new(
+            "#{self} has message type #{@message_type}, cannot change it to #{type}",
+            location: location, hint: 'a bus model has a single message type'
+          )
+        end
+        return if @message_type
+
+        @message_type = type
+        define_services
+      end
+
+      SERVICES.each do |srv|
+        define_method(Naming.underscore(srv)) { const_get(srv, false) if message_type }
+      end
+
+      # Adds the methods defined in the block (e.g. +dsl_attribute :can_id+) to
+      # every device attached to a bus of this model or of its sub-models.
+      def extend_attached_device_configuration(&block)
+        @attached_device_configuration ||= DeviceConfigurationModule.new
+        @attached_device_configuration.module_eval(&block)
+        @attached_device_configuration
+      end
+
+      def attached_device_configuration_modules
+        fullfilled_models.reverse.filter_map do |m|
+          m.instance_variable_get(:@attached_device_configuration) if m.is_a?(ComBusModel)
+        end
+      end
+
+      def provides(model, mappings = {})
+        if model.is_a?(ComBusModel) && model.message_type
+          if message_type && message_type != model.message_type
+            raise DeclarationError.new(
+              "#{self} (message type #{message_type}) cannot provide #{model} " \
+              "(message type #{model.message_type})",
+              location: Location.of_caller, hint: 'a bus can only provide buses of the same message type'
+            )
+          end
+          self.message_type = model.message_type
+        end
+        super
+        link_services(model) if model.is_a?(ComBusModel) && model.message_type
+        self
+      end
+
+      def finalize_declaration
+        return if message_type || equal?(Syskit::ComBus)
+
+        raise DeclarationError.new(
+          "#{self} has no message type", location: declared_at,
+          hint: "pass it: com_bus_type '#{name.to_s.split('::').last}', message_type: '/canbus/Message'"
+        )
+      end
+
+      private
+
+      def define_services
+        type = message_type
+        base = service('BusBaseSrv') { nil }
+        bus_in = service('BusInSrv') { input_port 'to_bus', type }
+        bus_out = service('BusOutSrv') { output_port 'from_bus', type }
+        bus = service('BusSrv') { nil }
+        [bus_in, bus_out].each { |s| s.provides(base) }
+        bus.provides(bus_in).provides(bus_out)
+
+        client_in = service('ClientInSrv') { input_port 'from_bus', type }
+        client_out = service('ClientOutSrv') { output_port 'to_bus', type }
+        service('ClientSrv') { nil }.provides(client_in).provides(client_out)
+      end
+
+      def service(name, &block)
+        srv = DataServiceModel.new(location: declared_at, name: "#{self}::#{name}")
+        const_set(name, srv)
+        srv.instance_eval(&block)
+        srv.bus_model = self
+        srv.bus_role = Naming.underscore(name.delete_suffix('Srv')).to_sym
+        srv
+      end
+
+      # Our services provide the provided bus's, so drivers of a sub-bus are
+      # drivers of the parent bus too.
+      def link_services(model)
+        SERVICES.each { |srv| const_get(srv, false).provides(model.const_get(srv, false)) }
+      end
+    end
+  end
+end

@@ -1,0 +1,251 @@
+# frozen_string_literal: true
+
+require 'syskit/port'
+
+module Syskit
+  module Models
+    # A data service: a named set of ports that components provide
+    # (+data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+).
+    #
+    # Models are modules so that assigning one to a constant names it, as Ruby
+    # does for any module (+Device = DeviceModel.new+ is then called Device).
+    class DataServiceModel < Module
+      attr_reader :ports, :parents, :declared_at
+      attr_accessor :doc
+
+      # The word used for this kind of model in messages.
+      def self.kind
+        'data service'
+      end
+
+      # Defines the model +name+ in +namespace+ (the module the statement is
+      # in), provides +root+, then evaluates the declaration block on it.
+      def self.define(namespace, name, location:, root:, model_class: self, **options, &block)
+        name = name.to_s
+        unless Naming.constant_name?(name)
+          raise DeclarationError.new(
+            "'#{name}' is not a valid name for a #{kind}", location: location,
+            hint: "model names are Ruby constant names, e.g. '#{Naming.camelize(name.gsub(/\W/, '_'))}'"
+          )
+        end
+        if namespace.const_defined?(name, false)
+          existing = namespace.const_get(name, false)
+          where = existing.respond_to?(:declared_at) && existing.declared_at ? " at #{existing.declared_at}" : ''
+          raise DeclarationError.new("#{namespace}::#{name} is already defined#{where}",
+                                     location: location, hint: 'give the new model another name')
+        end
+
+        model = model_class.new(location: location)
+        namespace.const_set(name, model)
+        model.apply_options(**options)
+        model.provides(root) unless model.equal?(root)
+        model.instance_eval(&block) if block
+        model.finalize_declaration
+        model
+      end
+
+      def initialize(location: nil, name: nil)
+        super()
+        @declared_at = location || Location.of_caller
+        @given_name = name
+        @ports = {}
+        @parents = {}
+        @timing = {}
+      end
+
+      # Options of the declaration statement, applied once the model is named.
+      def apply_options(**options)
+        return if options.empty?
+
+        raise DeclarationError.new("unknown option(s) #{options.keys.join(', ')} for #{kind} #{self}",
+                                   location: declared_at)
+      end
+
+      # Checks run once the declaration block has been evaluated.
+      def finalize_declaration; end
+
+      # The constant name, or the name given at creation for anonymous models.
+      def name
+        constant_name = super
+        constant_name && !constant_name.start_with?('#<') ? constant_name : @given_name
+      end
+
+      def to_s
+        name || "anonymous #{self.class.kind}"
+      end
+      alias inspect to_s
+
+      def kind
+        self.class.kind
+      end
+
+      # Declares an input port: +input_port 'cmd', '/base/Command'+.
+      def input_port(name, type)
+        add_port(name, :input, type)
+      end
+
+      # Declares an output port: +output_port 'samples', '/base/Pose'+.
+      def output_port(name, type)
+        add_port(name, :output, type)
+      end
+
+      def find_port(name)
+        ports[name.to_s]
+      end
+
+      # Timing information real bundles write (+worstcase_processing_time 0.2+):
+      # recorded, and used to size buffers.
+      def worstcase_processing_time(seconds = nil)
+        return @timing[:worstcase_processing_time] if seconds.nil?
+
+        @timing[:worstcase_processing_time] = seconds
+      end
+
+      # Declares that this model provides +model+: its ports become ours,
+      # renamed by +mappings+ (+'their_port' => 'our_port'+).
+      def provides(model, mappings = {})
+        location = Location.of_caller
+        check_provides(model, location)
+        return self if @parents.key?(model)
+
+        renames = Models.normalize_mappings(model, mappings, location, owner: self)
+        @parents[model] = model.ports.each_value.to_h do |port|
+          [port.name, adopt_port(port, renames.fetch(port.name, port.name), model, location)]
+        end
+        @fullfilled = nil
+        self
+      end
+
+      # Whether this model is +model+ or provides it, directly or not.
+      def fullfills?(model)
+        fullfilled_models.include?(model)
+      end
+      alias fulfills? fullfills?
+
+      # This model and every model it provides, closest first.
+      def fullfilled_models
+        @fullfilled ||= ([self] + parents.keys.flat_map(&:fullfilled_models)).uniq
+      end
+
+      # For a model this one provides, its port names mapped to ours.
+      def port_mappings_for(model)
+        return ports.keys.to_h { |n| [n, n] } if model.equal?(self)
+
+        parents.each do |parent, mapping|
+          next unless parent.fullfills?(model)
+
+          return parent.port_mappings_for(model).transform_values { |name| mapping.fetch(name) }
+        end
+        raise ArgumentError, "#{self} does not provide #{model}"
+      end
+
+      private
+
+      def add_port(name, direction, type)
+        location = Location.of_caller
+        name = name.to_s
+        if ports.key?(name)
+          raise DeclarationError.new("#{self} already has a port named '#{name}'",
+                                     location: location, hint: 'give each port its own name')
+        end
+
+        port = Port.new(name, direction, Models.resolve_type(type, location))
+        ports[name] = port
+        PortModifiers.new(port)
+      end
+
+      def adopt_port(port, name, model, location)
+        existing = ports[name]
+        if existing && (existing.type != port.type || existing.direction != port.direction)
+          raise DeclarationError.new(
+            "#{model}'s #{port} collides with #{self}'s #{existing}", location: location,
+            hint: "map it to another name: provides #{model}, '#{port.name}' => 'other_name'"
+          )
+        end
+
+        ports[name] ||= Port.new(name, port.direction, port.type)
+        name
+      end
+
+      # What a model of this kind may provide.
+      def check_provides(model, location)
+        unless model.is_a?(DataServiceModel)
+          raise DeclarationError.new(
+            "provides expects a data service, device or bus model, got #{model.inspect}",
+            location: location, hint: 'pass a model defined with data_service_type or device_type'
+          )
+        end
+        return unless model.is_a?(DeviceModel) && !is_a?(DeviceModel)
+
+        raise DeclarationError.new(
+          "#{self} is a data service and cannot provide the device #{model}",
+          location: location, hint: 'only devices provide devices: declare it with device_type'
+        )
+      end
+    end
+
+    # The model of type names in declarations: a Types::Type, or a name the
+    # loaded app's type registry knows.
+    def self.resolve_type(type, location)
+      return type if type.is_a?(Types::Type)
+
+      app = Syskit.app
+      unless app
+        raise DeclarationError.new("cannot resolve the type name #{type} without a loaded app",
+                                   location: location, hint: 'pass a type object instead')
+      end
+
+      app.types.resolve(type, location: location)
+    end
+
+    # Port mappings given to +provides+ or +driver_for+, as +{their_port =>
+    # our_port}+. Either side may name the provided model's port (the seed
+    # writes both orders); aliases such as 'bus_in' for 'from_bus' are known.
+    def self.normalize_mappings(model, mappings, location, owner:)
+      mappings.to_h do |a, b|
+        a = a.to_s
+        b = b.to_s
+        if (name = model.port_name_for(a)) then [name, b]
+        elsif (name = model.port_name_for(b)) then [name, a]
+        else
+          raise DeclarationError.new(
+            "#{model} has no port named '#{a}' or '#{b}' (mapping '#{a}' => '#{b}' on #{owner})",
+            location: location,
+            hint: "#{model}'s ports are #{model.ports.values.map(&:to_s).join(', ')}; " \
+                  "write '#{model.ports.keys.first || 'its_port'}' => 'your_port'"
+          )
+        end
+      end
+    end
+
+    class DataServiceModel
+      # What users may write for a bus client's ports in port mappings (the
+      # seed's disambiguation example maps 'bus_in' and 'bus_out').
+      CLIENT_PORT_ALIASES = { 'bus_in' => 'from_bus', 'bus_out' => 'to_bus' }.freeze
+
+      # For the seven services of a bus model: the bus, and the service's role
+      # (:bus, :bus_in, :client_in, ...).
+      attr_accessor :bus_model, :bus_role
+
+      # The port called +name+ in mappings (a port name or one of its aliases).
+      def port_name_for(name)
+        return name if ports.key?(name)
+
+        aliased = CLIENT_PORT_ALIASES[name] if bus_role.to_s.start_with?('client')
+        aliased if aliased && ports.key?(aliased)
+      end
+
+      # Whether a task providing this service drives a bus (BusSrv, BusInSrv...).
+      def bus_driver_service?
+        bus_role && !bus_role.to_s.start_with?('client')
+      end
+
+      # The device (or bus) a task providing this service drives, if any.
+      def driven_device_model
+        return bus_model if bus_driver_service?
+
+        self if is_a?(DeviceModel)
+      end
+    end
+  end
+end

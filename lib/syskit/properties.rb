@@ -1,0 +1,104 @@
+# frozen_string_literal: true
+
+module Syskit
+  # The +properties+ of a task: one reader and writer per property of its
+  # model, checking values against the property's type.
+  class Properties
+    # The properties class of +task_model+, with a method per property.
+    def self.for(task_model)
+      klass = Class.new(self)
+      klass.instance_variable_set(:@task_model, task_model)
+      task_model.property_declarations.each_key do |name|
+        klass.define_method(name) { self[name] }
+        klass.define_method("#{name}=") { |value| self[name] = value }
+      end
+      klass
+    end
+
+    class << self
+      attr_reader :task_model
+    end
+
+    def initialize
+      @values = self.class.task_model.property_declarations.transform_values(&:initial_value)
+    end
+
+    def declarations
+      self.class.task_model.property_declarations
+    end
+
+    def [](name)
+      @values.fetch(check_name(name))
+    end
+
+    # Sets a property, converting +value+ to its type; raises a
+    # ConfigurationError pointing at the caller when it does not fit.
+    def []=(name, value)
+      name = check_name(name)
+      @values[name] = declarations.fetch(name).type.from_ruby(value)
+    rescue Types::ValueError, ArgumentError => e
+      raise ConfigurationError.new(
+        "property '#{name}' of #{self.class.task_model.name}: #{e.message}",
+        location: Location.of_caller, hint: "give it a value of type #{declarations[name]&.type}"
+      )
+    end
+
+    def key?(name)
+      @values.key?(name.to_s)
+    end
+
+    def names
+      @values.keys
+    end
+
+    # Values as plain data (hashes, arrays, numbers, strings), sorted by name.
+    def to_plain
+      @values.keys.sort.to_h { |k| [k, declarations[k].type.to_plain(@values[k])] }
+    end
+
+    def to_h
+      @values.dup
+    end
+
+    private
+
+    def check_name(name)
+      name = name.to_s
+      return name if @values.key?(name)
+
+      raise ConfigurationError.new(
+        "#{self.class.task_model.name} has no property '#{name}'#{Naming.did_you_mean(name, @values.keys)}",
+        location: Location.of_caller,
+        hint: "its properties are #{@values.keys.sort.join(', ').then { |s| s.empty? ? '(none)' : s }}"
+      )
+    end
+  end
+
+  # What a +stub do ... end+ block is evaluated on: the task's properties
+  # as methods, plus +create_input_port+ and +create_output_port+.
+  class StubContext
+    def self.for(task_model)
+      klass = Class.new(self)
+      task_model.property_declarations.each_key do |name|
+        klass.define_method(name) { @task.properties[name] }
+      end
+      klass
+    end
+
+    def initialize(task)
+      @task = task
+    end
+
+    def properties
+      @task.properties
+    end
+
+    def create_input_port(name, type)
+      @task.create_port(:input, name, type, location: Location.of_caller)
+    end
+
+    def create_output_port(name, type)
+      @task.create_port(:output, name, type, location: Location.of_caller)
+    end
+  end
+end

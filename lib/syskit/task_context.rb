@@ -1,0 +1,124 @@
+# frozen_string_literal: true
+
+require 'syskit/models/task_model'
+require 'syskit/properties'
+
+module Syskit
+  # A task of a network: an instance of a task model (a subclass of this
+  # class made for each task context of a loaded .orogen file).
+  #
+  # The generator creates one per driver and bus, sets the +<name>_dev+
+  # arguments, applies configuration sections, then calls {#configure}, which
+  # users override in extension files (calling +super+ first).
+  class TaskContext
+    extend Models::TaskModel
+
+    attr_reader :arguments, :properties, :created_ports
+    attr_accessor :conf, :deployed_task
+
+    def initialize(arguments = {})
+      @arguments = arguments
+      @properties = model.properties_class.new
+      @created_ports = {}
+      @children = []
+      @conf = ['default']
+    end
+
+    def model
+      self.class
+    end
+
+    # The deployed task name, which names the task in plans.
+    def name
+      deployed_task&.name
+    end
+
+    # Configuration hook: user extension files override it and call super.
+    def configure; end
+
+    # The devices this task drives, from its +<name>_dev+ arguments.
+    def devices
+      arguments.values.grep(Robot::Device).uniq
+    end
+
+    # The device this task drives, when it drives only one.
+    def robot_device
+      found = devices
+      return found.first if found.size == 1
+
+      raise ConfigurationError.new(
+        "#{model.name} drives #{found.size} devices (#{found.map(&:name).join(', ')}), robot_device needs exactly one",
+        location: Location.of_caller, hint: 'use the <name>_dev reader of the driver_for service instead'
+      )
+    end
+
+    # On a bus driver: every device declared on its bus, in declaration order.
+    def each_declared_attached_device(&block)
+      bus = devices.find(&:com_bus?)
+      unless bus
+        raise ConfigurationError.new("#{model.name} drives no communication bus",
+                                     location: Location.of_caller,
+                                     hint: 'each_declared_attached_device is for bus drivers')
+      end
+
+      bus.each_attached_device(&block)
+    end
+
+    # The tasks this one depends on (its bus drivers), as +[task, info]+ pairs.
+    def each_child(&block)
+      return enum_for(__method__) unless block
+
+      @children.each { |child, info| yield(child, info) }
+    end
+
+    def add_child(task, info = {})
+      @children << [task, info] unless @children.any? { |t, _| t.equal?(task) }
+    end
+
+    # Static ports and ports created at configure time, by name.
+    def ports
+      model.ports.merge(created_ports)
+    end
+
+    def find_port(name)
+      created_ports[name.to_s] || model.find_port(name)
+    end
+
+    # Creates a port the task model declares a dynamic pattern for.
+    def create_port(direction, name, type, location: nil)
+      name = name.to_s
+      type = Models.resolve_type(type, location)
+      if (existing = find_port(name))
+        return existing if existing.direction == direction && existing.type == type
+
+        raise NetworkError.new("#{self} already has an #{existing}, cannot create an #{direction} port " \
+                               "of type #{type} with the same name", location: location)
+      end
+
+      pattern = model.spec&.dynamic_port_for(direction, name, type)
+      raise no_dynamic_port(direction, name, type, location) unless pattern
+
+      created_ports[name] = pattern.instantiate(name)
+    end
+
+    def to_s
+      name ? "#{model.name} '#{name}'" : model.name.to_s
+    end
+
+    def inspect
+      "#<#{self}>"
+    end
+
+    private
+
+    def no_dynamic_port(direction, name, type, location)
+      patterns = model.dynamic_ports.select { |p| p.direction == direction }
+      known = patterns.empty? ? "it declares no dynamic #{direction} ports" : "its patterns are #{patterns.join(', ')}"
+      NetworkError.new(
+        "#{model.name} cannot create #{direction} port '#{name}' (#{type}): #{known}",
+        location: location,
+        hint: "declare a matching pattern in the .orogen file, e.g. dynamic_#{direction}_port(/^\\w+$/, '#{type}')"
+      )
+    end
+  end
+end

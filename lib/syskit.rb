@@ -1,0 +1,73 @@
+# frozen_string_literal: true
+
+require 'syskit/version'
+require 'syskit/errors'
+require 'syskit/naming'
+require 'syskit/can'
+require 'syskit/user_code'
+require 'syskit/namespace'
+require 'syskit/port'
+require 'syskit/types/registry'
+require 'syskit/types/typekit_loader'
+require 'syskit/models/data_service_model'
+require 'syskit/models/device_model'
+require 'syskit/models/com_bus_model'
+require 'syskit/models/task_model'
+require 'syskit/task_context'
+require 'syskit/orogen/property'
+require 'syskit/orogen/task_spec'
+require 'syskit/orogen/deployment_spec'
+require 'syskit/orogen/loader'
+require 'syskit/robot/device'
+require 'syskit/robot/definition'
+require 'syskit/robot/dsl'
+require 'syskit/robot/driver_index'
+require 'syskit/profile'
+require 'syskit/config/robot_config'
+require 'syskit/config/conf_file'
+require 'syskit/network/generator'
+require 'syskit/app'
+require 'syskit/dsl'
+
+# Syskit's model layer: devices, buses, drivers and the networks that run
+# them, without Roby or an Orocos runtime.
+module Syskit
+  # The root of all data service models.
+  DataService = Models::DataServiceModel.new(location: Location.new(__FILE__, __LINE__))
+  # The root of all device models: +Device.provides Syskit::Device+.
+  Device = Models::DeviceModel.new(location: Location.new(__FILE__, __LINE__))
+  Device.provides(DataService)
+  # The root of all communication bus models.
+  ComBus = Models::ComBusModel.new(location: Location.new(__FILE__, __LINE__))
+  ComBus.provides(Device)
+
+  class << self
+    # The app DSL statements act on (see App#activate).
+    attr_accessor :app
+
+    # Adds Syskit declarations (driver_for, provides, configure, stub) to a
+    # task model: +Syskit.extend_model OroGen.gps_ublox.Task do ... end+.
+    def extend_model(model, &block)
+      unless model.is_a?(Class) && model < TaskContext
+        raise DeclarationError.new("extend_model expects a task model such as OroGen.canbus.Task, got #{model.inspect}",
+                                   location: Location.of_caller)
+      end
+
+      model.class_eval(&block) if block
+      model
+    end
+
+    # The robot configuration being loaded (config/robots/NAME.rb).
+    def conf
+      config = app&.loading_robot_config
+      return config if config
+
+      raise Error.new('Syskit.conf is only available in robot configuration files',
+                      location: Location.of_caller,
+                      hint: 'declare deployments in config/robots/<robot>.rb')
+    end
+  end
+end
+
+Module.include(Syskit::DSL::ModuleStatements)
+TOPLEVEL_BINDING.receiver.extend(Syskit::DSL::TopLevelStatements)

@@ -1,0 +1,90 @@
+# frozen_string_literal: true
+
+module Syskit
+  # Statements available in any module body (and, for the ones that make
+  # sense there, at the top level of a file), as in the seed's snippets.
+  module DSL
+    # Model definitions. Included in Module, private, like +attr_reader+.
+    module ModuleStatements
+      private
+
+      # +data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+
+      def data_service_type(name, &block)
+        Models::DataServiceModel.define(self, name, location: Location.of_caller, root: Syskit::DataService, &block)
+      end
+
+      # +device_type 'F9' do provides ... end+; +parent:+ gives a device model
+      # whose class (a Syskit::Models::DeviceModel subclass) and API to use.
+      def device_type(name, parent: Syskit::Device, &block)
+        location = Location.of_caller
+        unless parent.is_a?(Models::DeviceModel) && !parent.is_a?(Models::ComBusModel)
+          raise DeclarationError.new("parent: expects a device model, got #{parent.inspect}",
+                                     location: location, hint: 'pass an instance of a Syskit::Models::DeviceModel subclass')
+        end
+
+        Models::DeviceModel.define(self, name, location: location, root: parent, model_class: parent.class, &block)
+      end
+
+      # +com_bus_type 'CAN', message_type: '/canbus/Message' do ... end+
+      def com_bus_type(name, message_type: nil, &block)
+        Models::ComBusModel.define(self, name, location: Location.of_caller, root: Syskit::ComBus,
+                                               message_type: message_type, &block)
+      end
+
+      # +profile 'Base' do robot do ... end end+ defines the constant Base.
+      def profile(name, &block)
+        location = Location.of_caller
+        mod = profile_module(name.to_s, location)
+        Profile.for_module(mod, location)
+        mod.module_eval(&block) if block
+        mod
+      end
+
+      # A robot block in a module makes the module a profile.
+      def robot(&block)
+        Profile.for_module(self, Location.of_caller).robot_block(&block)
+      end
+
+      def using_task_library(name)
+        DSL.app!.using_task_library(name.to_s, location: Location.of_caller)
+      end
+
+      def import_types_from(name)
+        DSL.app!.import_types(name.to_s, location: Location.of_caller)
+      end
+
+      def profile_module(name, location)
+        unless Naming.constant_name?(name)
+          raise DeclarationError.new("'#{name}' is not a valid profile name", location: location,
+                                                                             hint: "profile names are constant names, e.g. profile 'Base'")
+        end
+        return const_set(name, Module.new) unless const_defined?(name, false)
+
+        existing = const_get(name, false)
+        return existing if existing.instance_of?(Module)
+
+        raise DeclarationError.new("#{self}::#{name} is already defined and is not a profile", location: location,
+                                                                                                hint: 'give the profile another name')
+      end
+    end
+
+    # Statements of the top level of a file (+using_task_library+ above
+    # +module MyApp+, as in the seed).
+    module TopLevelStatements
+      private
+
+      def using_task_library(name)
+        DSL.app!.using_task_library(name.to_s, location: Location.of_caller)
+      end
+
+      def import_types_from(name)
+        DSL.app!.import_types(name.to_s, location: Location.of_caller)
+      end
+    end
+
+    def self.app!
+      Syskit.app || raise(Error.new('no Syskit app is loaded', location: Location.of_caller,
+                                                              hint: 'load the file through syskit (syskit check, syskit plan, rake test)'))
+    end
+  end
+end

@@ -1,0 +1,86 @@
+# frozen_string_literal: true
+
+module Syskit
+  # A profile: a module with a robot definition. Each device declared in its
+  # robot block gives the profile an action, +Base.gps_dev+, that stands for
+  # the device's driver in plans and tests.
+  #
+  # Both forms of the seed define one:
+  #
+  #   profile 'Base' do robot do ... end end
+  #   module Base; robot do ... end; end
+  class Profile
+    attr_reader :namespace, :robot, :declared_at
+
+    # The profile of +mod+, making it one if it is not yet.
+    def self.for_module(mod, location)
+      existing = mod.instance_variable_get(:@syskit_profile)
+      return existing if existing
+
+      profile = new(mod, location)
+      mod.instance_variable_set(:@syskit_profile, profile)
+      mod.extend(ModuleMethods)
+      Syskit.app&.register_profile(profile)
+      profile
+    end
+
+    def initialize(namespace, location)
+      @namespace = namespace
+      @declared_at = location
+      @robot = Robot::Definition.new(self)
+    end
+
+    def name
+      namespace.name
+    end
+
+    def to_s
+      name || 'anonymous profile'
+    end
+
+    # Evaluates a robot block.
+    def robot_block(&block)
+      Robot::DSL.new(robot).instance_eval(&block) if block
+      robot
+    end
+
+    # Defines +<device>_dev+ on the profile module.
+    def define_device_action(device)
+      requirement = Network::Requirement.new(device, self)
+      namespace.define_singleton_method("#{device.name}_dev") { requirement }
+    end
+
+    # Action names (+gps_dev+, ...), in declaration order.
+    def action_names
+      robot.device_names.map { |n| "#{n}_dev" }
+    end
+
+    # The requirement of action +name+ ('gps_dev' or 'gps').
+    def find_action(name)
+      device = robot.find_device(name.to_s.delete_suffix('_dev'))
+      Network::Requirement.new(device, self) if device
+    end
+
+    # The requirements of every device, for plans of the whole profile.
+    def all_requirements
+      robot.devices.map { |d| Network::Requirement.new(d, self) }
+    end
+
+    # Methods of profile modules.
+    module ModuleMethods
+      def robot(&block)
+        syskit_profile.robot_block(&block)
+      end
+
+      def syskit_profile
+        @syskit_profile
+      end
+
+      def explain_missing(name)
+        actions = syskit_profile.action_names
+        ["#{self} has no action '#{name}'#{Naming.did_you_mean(name, actions)}",
+         actions.empty? ? 'declare devices in its robot block' : "its actions are #{actions.join(', ')}"]
+      end
+    end
+  end
+end

@@ -1,0 +1,177 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Robot
+    # The devices and buses of a profile's robot, in declaration order.
+    class Definition
+      DEVICE_OPTIONS = %i[client_to_bus bus_to_client].freeze
+
+      attr_reader :profile
+
+      def initialize(profile)
+        @profile = profile
+        @devices = {}
+      end
+
+      def devices
+        @devices.values
+      end
+
+      def find_device(name)
+        @devices[name.to_s]
+      end
+
+      def device_names
+        @devices.keys
+      end
+
+      # Declares a device (+klass+ Device) or a bus (ComBus); +bus+ is the
+      # bus of the enclosing +through+ block, if any.
+      def add_device(klass, model, name, using:, options:, location:, bus: nil)
+        name = check_name(name, location)
+        check_model(klass, model, location)
+        check_using(using, location)
+        unknown = options.keys - DEVICE_OPTIONS
+        raise unknown_options(unknown, location) unless unknown.empty?
+        if !bus && !options.empty?
+          raise DeclarationError.new(
+            "#{options.keys.map { |k| "#{k}:" }.join(', ')} only applies to devices attached to a bus",
+            location: location, hint: "declare #{name} in a through 'bus_name' do ... end block"
+          )
+        end
+
+        device = klass.new(self, name, model, using: using, location: location)
+        @devices[name] = device
+        attach(device, bus, location: location, **options) if bus
+        profile&.define_device_action(device)
+        device
+      end
+
+      # Attaches +device+ to +bus+ (a ComBus or its name).
+      def attach(device, bus, location:, client_to_bus: true, bus_to_client: true)
+        bus = find_bus(bus, location)
+        if device.attached?
+          raise DeclarationError.new("#{device} is already attached to #{device.bus}", location: location,
+                                                                                   hint: 'a device is attached to one bus')
+        end
+        if !client_to_bus && !bus_to_client
+          raise DeclarationError.new(
+            "#{device} would neither read from nor write to #{bus} (client_to_bus: false, bus_to_client: false)",
+            location: location, hint: 'drop one of the two options, or do not attach the device'
+          )
+        end
+
+        check_cycle(device, bus, location)
+        device.attached(bus, client_to_bus, bus_to_client)
+        bus.add_attached_device(device)
+      end
+
+      # Resolves the model and driver of every device; returns the errors.
+      def resolve(index)
+        devices.filter_map do |device|
+          index.resolve(device)
+          nil
+        rescue Syskit::Error => e
+          e
+        end
+      end
+
+      # Bus models whose attached-device configuration defines +method_name+.
+      def app_bus_models_defining(method_name)
+        devices.grep(ComBus).map(&:model).uniq.select do |model|
+          model.attached_device_configuration_modules.any? { |m| m.method_defined?(method_name) }
+        end
+      end
+
+      def to_s
+        profile ? "robot of #{profile}" : 'robot'
+      end
+
+      private
+
+      def check_name(name, location)
+        if name.nil?
+          raise DeclarationError.new('a device needs a name', location: location,
+                                                              hint: "write device(Model, as: 'name')")
+        end
+        name = name.to_s
+        unless name.match?(/\A[a-z_][a-zA-Z0-9_]*\z/)
+          raise DeclarationError.new("'#{name}' is not a valid device name", location: location,
+                                                                            hint: "device names are lower-case identifiers, e.g. as: 'gps'")
+        end
+        if (other = @devices[name])
+          raise DeclarationError.new("a device named '#{name}' is already declared at #{other.declared_at}",
+                                     location: location, hint: 'give each device its own name')
+        end
+
+        name
+      end
+
+      def check_model(klass, model, location)
+        if klass <= ComBus
+          return if model.is_a?(Models::ComBusModel)
+
+          raise DeclarationError.new("com_bus expects a bus model (com_bus_type), got #{describe(model)}",
+                                     location: location, hint: 'declare other devices with device')
+        end
+        if model.is_a?(Models::ComBusModel)
+          raise DeclarationError.new("#{model} is a communication bus", location: location,
+                                                                        hint: "declare it with com_bus #{model}, as: 'name'")
+        end
+        return if model.is_a?(Models::DeviceModel) || (model.is_a?(Class) && model <= TaskContext && model.spec)
+
+        raise DeclarationError.new("device expects a device model (device_type) or its driver task model, " \
+                                   "got #{describe(model)}", location: location)
+      end
+
+      def check_using(using, location)
+        return if using.nil? || (using.is_a?(Class) && using <= TaskContext && using.spec)
+
+        raise DeclarationError.new("using: expects a driver task model, got #{describe(using)}",
+                                   location: location, hint: 'write using: OroGen.library.Task')
+      end
+
+      def describe(model)
+        case model
+        when Models::DataServiceModel then "#{model} (a #{model.kind})"
+        else model.inspect
+        end
+      end
+
+      def unknown_options(unknown, location)
+        DeclarationError.new(
+          "unknown option(s) #{unknown.map { |k| "#{k}:" }.join(', ')}#{Naming.did_you_mean(unknown.first, DEVICE_OPTIONS)}",
+          location: location,
+          hint: 'device takes as:, using:, and, on a bus, client_to_bus: and bus_to_client:; ' \
+                'configure the rest with chained calls (.with_conf, .period, ...)'
+        )
+      end
+
+      def find_bus(bus, location)
+        return bus if bus.is_a?(ComBus)
+
+        found = @devices[bus.to_s]
+        return found if found.is_a?(ComBus)
+
+        buses = devices.grep(ComBus).map(&:name)
+        what = found ? "#{found} is not a communication bus" : "no bus named '#{bus}'"
+        raise UnknownName.new("#{what}#{Naming.did_you_mean(bus, buses)}", location: location,
+                                                                          hint: buses.empty? ? "declare it first: com_bus Model, as: '#{bus}'" : "buses of this robot: #{buses.join(', ')}")
+      end
+
+      def check_cycle(device, bus, location)
+        chain = [device]
+        current = bus
+        while current
+          chain << current
+          if current.equal?(device)
+            raise NetworkError.new("attaching #{device} to #{bus} makes a cycle: #{chain.map(&:name).join(' -> ')}",
+                                   location: location, hint: 'a bus cannot be attached through itself')
+          end
+
+          current = current.bus
+        end
+      end
+    end
+  end
+end

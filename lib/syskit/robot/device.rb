@@ -1,0 +1,247 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Robot
+    # A device on a robot, declared in a profile's robot block:
+    #
+    #   device(Devices::GPS::Ublox::F9, as: 'gps')
+    #     .prefer_deployed_tasks(/gps/).with_conf('default', 'rtk').period(0.1)
+    #
+    # Chainable calls configure it; bus attributes (+can_id+) come from the
+    # modules of its device model and of the bus it is attached to.
+    class Device
+      attr_reader :name, :robot, :declared_at, :requested_model, :using, :bus,
+                  :deployment_hints, :dsl_attributes, :client_to_bus, :bus_to_client
+
+      def initialize(robot, name, requested_model, using: nil, location: nil)
+        @robot = robot
+        @name = name
+        @requested_model = requested_model
+        @using = using
+        @declared_at = location
+        @conf = ['default']
+        @deployment_hints = []
+        @dsl_attributes = {}
+        @settings = {}
+        @client_to_bus = true
+        @bus_to_client = true
+        model = requested_model.is_a?(Models::DeviceModel) ? requested_model : single_driven_model
+        assign_model(model) if model
+      end
+
+      def com_bus?
+        false
+      end
+
+      # The device model (resolved once the app is loaded when the device was
+      # declared with a driver task model).
+      def model
+        @model || raise(DriverError.new("the model of #{self} is not resolved yet", location: declared_at))
+      end
+
+      def model_resolved?
+        !@model.nil?
+      end
+
+      # The task model that drives this device, once resolved.
+      def driver_model
+        @driver_model || raise(DriverError.new("the driver of #{self} is not resolved yet", location: declared_at))
+      end
+
+      attr_writer :driver_model
+
+      def driver_resolved?
+        !@driver_model.nil?
+      end
+
+      def assign_model(model)
+        @model = model
+        model.device_configuration_modules.each { |mod| extend(mod) }
+      end
+
+      # The configuration sections applied to the driver, in order. As in
+      # Syskit, the list replaces ['default']: write with_conf('default', 'x').
+      def with_conf(*names)
+        names = names.flatten.map(&:to_s)
+        if names.empty?
+          raise DeclarationError.new('with_conf needs at least one section name', location: Location.of_caller,
+                                                                                   hint: "write with_conf('default', 'forward')")
+        end
+
+        @conf = names
+        @conf_location = Location.of_caller
+        self
+      end
+
+      # The sections, and where they were chosen.
+      attr_reader :conf, :conf_location
+
+      # Chooses among the deployed tasks that could run this device's driver:
+      # names matching a regexp or equal to a string.
+      def prefer_deployed_tasks(*hints)
+        hints.flatten.each do |hint|
+          next if hint.is_a?(Regexp) || hint.is_a?(String)
+
+          raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{hint.inspect}",
+                                     location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
+        end
+        @deployment_hints.concat(hints.flatten)
+        self
+      end
+
+      # Expected time between two messages of the device, in seconds.
+      def period(seconds = nil)
+        setting(:period, seconds) { |v| v.is_a?(Numeric) && v.positive? }
+      end
+
+      # How many messages the device may send at once.
+      def burst(count = nil)
+        setting(:burst, count) { |v| v.is_a?(Integer) && v.positive? }
+      end
+
+      # Size of one message, for drivers that size their buffers.
+      def sample_size(size = nil)
+        setting(:sample_size, size) { |v| v.is_a?(Integer) && v.positive? }
+      end
+
+      def doc(text = nil)
+        setting(:doc, text) { |v| v.is_a?(String) }
+      end
+
+      # Attaches the device to a bus (the same as declaring it in a
+      # +through+ block). +client_to_bus: false+ for read-only devices,
+      # +bus_to_client: false+ for write-only ones; a string names the
+      # driver's ClientSrv/ClientInSrv/ClientOutSrv service to use.
+      def attach_to(bus, client_to_bus: true, bus_to_client: true)
+        robot.attach(self, bus, client_to_bus: client_to_bus, bus_to_client: bus_to_client,
+                                location: Location.of_caller)
+        self
+      end
+
+      # Called by the robot once the attachment is checked.
+      def attached(bus, client_to_bus, bus_to_client)
+        @bus = bus
+        @client_to_bus = client_to_bus
+        @bus_to_client = bus_to_client
+        bus.model.attached_device_configuration_modules.each { |mod| extend(mod) }
+      end
+
+      def attached?
+        !bus.nil?
+      end
+
+      # Whether the driver writes to the bus / reads from the bus.
+      def client_to_bus?
+        client_to_bus != false
+      end
+
+      def bus_to_client?
+        bus_to_client != false
+      end
+
+      # Sets a dsl_attribute (see DeviceConfigurationModule#dsl_attribute).
+      def set_dsl_attribute(attr, args, filter_method)
+        value = filter_method ? send(filter_method, *args) : (args.size == 1 ? args.first : args)
+        dsl_attributes[attr] = value
+        self
+      rescue Syskit::Error
+        raise
+      rescue StandardError => e
+        raise invalid_attribute(attr, args, filter_method, e)
+      end
+
+      def explain_missing(method_name)
+        buses = robot.app_bus_models_defining(method_name)
+        hint =
+          if buses.any? && !attached?
+            "#{method_name} is for devices attached to a #{buses.join(' or ')} bus: " \
+              "declare #{name} in a through 'bus_name' do ... end block"
+          else
+            "chainable calls on devices: #{chainable_methods.join(', ')}"
+          end
+        ["#{self} has no '#{method_name}'#{Naming.did_you_mean(method_name, chainable_methods)}", hint]
+      end
+
+      def to_s
+        "device '#{name}'"
+      end
+
+      def inspect
+        "#<#{self.class.name} #{name}>"
+      end
+
+      private
+
+      def single_driven_model
+        return unless requested_model.is_a?(Class) && requested_model <= TaskContext
+
+        models = requested_model.driven_device_models
+        models.first if models.size == 1
+      end
+
+      def setting(key, value)
+        return @settings[key] if value.nil?
+
+        unless yield(value)
+          raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}", location: Location.of_caller,
+                                                                                     hint: "#{key} takes a positive number")
+        end
+
+        @settings[key] = value
+        self
+      end
+
+      def chainable_methods
+        (%w[with_conf prefer_deployed_tasks period burst sample_size doc attach_to] +
+          singleton_class.included_modules.grep(Models::DeviceConfigurationModule)
+                         .flat_map { |m| m.public_instance_methods(false).map(&:to_s) })
+          .reject { |m| m.start_with?('__') }.uniq
+      end
+
+      def invalid_attribute(attr, args, filter_method, error)
+        params = method(filter_method).parameters.map { |kind, n| kind == :opt ? "#{n} = ..." : n.to_s } if filter_method
+        DeclarationError.new(
+          "#{attr}(#{args.map(&:inspect).join(', ')}) on #{self}: #{error.message}",
+          location: Location.of_caller,
+          hint: params ? "#{attr} takes (#{params.join(', ')})" : "check the arguments of #{attr}"
+        )
+      end
+    end
+
+    # A communication bus on a robot (+com_bus CAN, as: 'can0'+). It is a
+    # device too: its driver is the bus driver task.
+    class ComBus < Device
+      def initialize(*args, **options)
+        super
+        @attached_devices = []
+      end
+
+      def com_bus?
+        true
+      end
+
+      def message_type
+        model.message_type
+      end
+
+      # Devices declared on this bus, in declaration order.
+      def each_attached_device(&block)
+        return enum_for(__method__) unless block
+
+        @attached_devices.each(&block)
+      end
+
+      def attached_devices
+        @attached_devices.dup
+      end
+
+      def add_attached_device(device)
+        @attached_devices << device
+      end
+
+      def to_s
+        "bus '#{name}'"
+      end
+    end
+  end
+end

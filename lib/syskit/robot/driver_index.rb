@@ -1,0 +1,101 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Robot
+    # Which loaded task models can drive which device model, built once
+    # when the app is loaded (so the load order of files does not matter).
+    class DriverIndex
+      def initialize(orogen, app = nil)
+        @orogen = orogen
+        @app = app
+        @drivers = Hash.new { |h, k| h[k] = [] }
+        orogen.each_task_model do |task_model|
+          next if task_model.abstract?
+
+          task_model.driver_services.each do |srv|
+            srv.driven_device_model.fullfilled_models.each { |m| @drivers[m] |= [task_model] }
+          end
+        end
+      end
+
+      # Task models that can drive devices of +device_model+, by name.
+      def drivers_for(device_model)
+        @drivers.fetch(device_model, []).sort_by(&:name)
+      end
+
+      # Sets the model and driver of +device+, or raises a DriverError.
+      def resolve(device)
+        device.assign_model(model_from_task(device)) unless device.model_resolved?
+        device.driver_model = device.using ? check_using(device) : single_driver(device)
+      end
+
+      private
+
+      def model_from_task(device)
+        task = device.requested_model
+        models = task.driven_device_models
+        return models.first if models.size == 1
+
+        raise DriverError.new(
+          models.empty? ? "#{task.name} drives no device" : "#{task.name} drives several devices: #{models.join(', ')}",
+          location: device.declared_at,
+          hint: models.empty? ? "declare driver_for DeviceModel, as: 'name' in the extension file of #{task.name}" : "pass the device model and choose the driver with using: #{task.name}"
+        )
+      end
+
+      def check_using(device)
+        using = device.using
+        return using unless using.driver_services_for(device.model).empty?
+
+        others = drivers_for(device.model).map(&:name)
+        raise DriverError.new(
+          "#{using.name} does not drive #{device.model} (#{device})", location: device.declared_at,
+          hint: others.empty? ? "declare driver_for #{device.model} in the extension file of #{using.name}" : "drivers of #{device.model}: #{others.join(', ')}"
+        )
+      end
+
+      def single_driver(device)
+        drivers = drivers_for(device.model)
+        return drivers.first if drivers.size == 1
+        raise no_driver(device) if drivers.empty?
+
+        example = "device(#{device.model}, as: '#{device.name}', using: OroGen.#{drivers.first.name.sub('::', '.')})"
+        raise DriverError.new(
+          "several drivers can drive #{device} (#{device.model}): #{drivers.map(&:name).join(', ')}",
+          location: device.declared_at, hint: "choose one with the using: option, e.g. #{example}"
+        )
+      end
+
+      def no_driver(device)
+        libraries = libraries_mentioning(device.model)
+        hint =
+          if libraries.any?
+            "add #{libraries.map { |l| "using_task_library '#{l}'" }.join(' or ')} " \
+              "(its extension file declares a driver for #{short_name(device.model)})"
+          else
+            'load the task library of its driver with using_task_library, and declare ' \
+              "driver_for #{device.model} in that library's extension file"
+          end
+        loaded = @orogen.loaded_library_names
+        DriverError.new("no driver is known for #{device} (#{device.model}); " \
+                        "loaded task libraries: #{loaded.empty? ? 'none' : loaded.join(', ')}",
+                        location: device.declared_at, hint: hint)
+      end
+
+      # Task libraries, not loaded yet, whose extension file has a
+      # driver_for naming the model.
+      def libraries_mentioning(model)
+        return [] unless @app && model.name
+
+        pattern = /driver_for\s*\(?\s*[\w:]*\b#{Regexp.escape(short_name(model))}\b/
+        (@orogen.available_library_names - @orogen.loaded_library_names).select do |lib|
+          @app.extension_files(lib, @orogen.spec_path(lib)).any? { |f| File.read(f).match?(pattern) }
+        end
+      end
+
+      def short_name(model)
+        model.name.to_s.split('::').last
+      end
+    end
+  end
+end

@@ -1,0 +1,58 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Robot
+    # The statements of a +robot do ... end+ block.
+    class DSL
+      def initialize(definition)
+        @definition = definition
+        @bus = nil
+      end
+
+      # Declares a device: +device(Devices::GPS::Ublox::F9, as: 'gps')+.
+      def device(model, as: nil, using: nil, **options)
+        @definition.add_device(Device, model, as, using: using, options: options,
+                                                  location: Location.of_caller, bus: @bus)
+      end
+
+      # Declares a communication bus: +com_bus Devices::Bus::CAN, as: 'can0'+.
+      # A block attaches the devices it declares, like +through+.
+      def com_bus(model, as: nil, using: nil, **options, &block)
+        bus = @definition.add_device(ComBus, model, as, using: using, options: options,
+                                                        location: Location.of_caller, bus: @bus)
+        through(bus, &block) if block
+        bus
+      end
+
+      # Attaches every device declared in the block to the bus +bus_name+.
+      def through(bus_name, &block)
+        location = Location.of_caller
+        bus = @definition.send(:find_bus, bus_name, location)
+        unless block
+          raise DeclarationError.new("through '#{bus.name}' needs a block", location: location,
+                                                                           hint: "write through '#{bus.name}' do device(...) end")
+        end
+
+        previous = @bus
+        @bus = bus
+        instance_eval(&block)
+        bus
+      ensure
+        @bus = previous
+      end
+
+      def explain_missing(name)
+        ["unknown statement '#{name}' in a robot block#{Naming.did_you_mean(name, %w[device com_bus through])}",
+         'robot blocks declare device, com_bus and through'].tap do |m|
+          m[1] = "#{name} is a chained call: write it after a device(...) declaration" if chained?(name)
+        end
+      end
+
+      private
+
+      def chained?(name)
+        Device.public_method_defined?(name)
+      end
+    end
+  end
+end

@@ -1,0 +1,138 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    # The ports that link an attached device's driver to its bus's driver.
+    #
+    # Bus side, per direction:
+    # - a service the bus driver provides (BusSrv, BusInSrv, BusOutSrv): its
+    #   single port serves every device;
+    # - else a dynamic port pattern: a port per device, '<device>' for the
+    #   frames the device receives, 'w<device>' for the ones it sends;
+    # - else the driver's single port of the bus message type.
+    # Device side: the ClientSrv/ClientInSrv/ClientOutSrv the driver
+    # provides (named by the bus_to_client:/client_to_bus: options when there
+    # are several), else its single port of the message type.
+    class BusPorts
+      # +expected+ collects the per-device ports the bus driver must create.
+      def initialize(device, bus_task, device_task, expected)
+        @expected = expected
+        @device = device
+        @bus = device.bus
+        @bus_model = @bus.model
+        @type = @bus_model.message_type
+        @bus_task = bus_task
+        @device_task = device_task
+      end
+
+      def link
+        link = Context::BusLink.new(device: @device, bus_task: @bus_task, device_task: @device_task)
+        if @device.bus_to_client?
+          link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', @device.name)
+          link.client_input = client_port(:input, @bus_model.client_in_srv, 'from_bus', :bus_to_client)
+        end
+        if @device.client_to_bus?
+          link.bus_input = bus_port(:input, @bus_model.bus_in_srv, 'to_bus', "w#{@device.name}")
+          link.client_output = client_port(:output, @bus_model.client_out_srv, 'to_bus', :client_to_bus)
+        end
+        link
+      end
+
+      private
+
+      def bus_port(direction, service_model, service_port, dynamic_name)
+        model = @bus_task.model
+        service = model.services.values.find { |srv| srv.fullfills?(service_model) }
+        return service.task_port_for(service_model, service_port).name if service
+
+        if model.spec&.dynamic_port_for(direction, dynamic_name, @type)
+          expected = Context::ExpectedPort.new(name: dynamic_name, direction: direction, type: @type, device: @device)
+          @expected << expected
+          return dynamic_name
+        end
+
+        single_port(model, direction) || raise(no_bus_port(direction, dynamic_name))
+      end
+
+      def client_port(direction, service_model, service_port, option)
+        model = @device_task.model
+        wanted = @device.public_send(option)
+        services = model.services.values.select { |srv| srv.fullfills?(service_model) }
+        if wanted.is_a?(String)
+          service = services.find { |srv| srv.name == wanted }
+          return service.task_port_for(service_model, service_port).name if service
+
+          raise unknown_client_service(option, wanted, services, service_model)
+        end
+        return services.first.task_port_for(service_model, service_port).name if services.size == 1
+        raise ambiguous_client_services(option, services) if services.size > 1
+
+        candidates = ports_of_type(model, direction)
+        return candidates.first.name if candidates.size == 1
+
+        raise candidates.empty? ? no_client_port(direction, option) : ambiguous_client_ports(direction, option, candidates, service_model)
+      end
+
+      def single_port(model, direction)
+        candidates = ports_of_type(model, direction)
+        candidates.first.name if candidates.size == 1
+      end
+
+      def ports_of_type(model, direction)
+        model.ports.values.select { |p| p.direction == direction && p.type == @type }.sort_by(&:name)
+      end
+
+      def no_bus_port(direction, dynamic_name)
+        what = direction == :output ? "send #{@device}'s frames to it" : "receive #{@device}'s frames"
+        NetworkError.new(
+          "#{@bus_task.model.name}, the driver of #{@bus}, has no way to #{what}: " \
+          "no #{direction == :output ? 'BusOutSrv/BusSrv' : 'BusInSrv/BusSrv'} service, no dynamic #{direction} " \
+          "port matching '#{dynamic_name}' and no single #{direction} port of type #{@type}",
+          location: @device.declared_at,
+          hint: "declare dynamic_#{direction}_port(/^\\w+$/, '#{@type}') in its .orogen file, or provide " \
+                "#{@bus_model}::#{direction == :output ? 'BusOutSrv' : 'BusInSrv'} in its extension"
+        )
+      end
+
+      def no_client_port(direction, option)
+        verb = direction == :input ? 'receive frames from' : 'send frames to'
+        NetworkError.new(
+          "#{@device_task.model.name}, the driver of #{@device}, has no #{direction} port of type #{@type} " \
+          "to #{verb} #{@bus}",
+          location: @device.declared_at,
+          hint: "add the port to the driver, or declare the device with #{option}: false if it does not #{verb} the bus"
+        )
+      end
+
+      def ambiguous_client_ports(direction, option, ports, service_model)
+        short = service_model.name.to_s.split('::').last
+        port_name = direction == :input ? 'from_bus' : 'to_bus'
+        NetworkError.new(
+          "#{@device_task.model.name}, the driver of #{@device}, has several #{direction} ports of type " \
+          "#{@type}: #{ports.map(&:name).join(', ')}",
+          location: @device.declared_at,
+          hint: "declare which one in its extension: provides #{service_model}, as: 'bus_client', " \
+                "'#{port_name}' => '#{ports.first.name}' (or a #{short.sub(/(In|Out)Srv\z/, 'Srv')} " \
+                "for both directions), and pass #{option}: 'bus_client' to device"
+        )
+      end
+
+      def ambiguous_client_services(option, services)
+        NetworkError.new(
+          "#{@device_task.model.name}, the driver of #{@device}, provides several bus client services: " \
+          "#{services.map(&:name).join(', ')}",
+          location: @device.declared_at, hint: "choose one with #{option}: '#{services.first.name}' in the device declaration"
+        )
+      end
+
+      def unknown_client_service(option, wanted, services, service_model)
+        NetworkError.new(
+          "#{option}: '#{wanted}' names no #{service_model} service of #{@device_task.model.name}" \
+          "#{Naming.did_you_mean(wanted, services.map(&:name))}",
+          location: @device.declared_at,
+          hint: services.empty? ? "provide it: provides #{service_model}, as: '#{wanted}'" : "its services of that kind: #{services.map(&:name).join(', ')}"
+        )
+      end
+    end
+  end
+end

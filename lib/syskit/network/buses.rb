@@ -1,0 +1,94 @@
+# frozen_string_literal: true
+
+require 'syskit/network/bus_ports'
+
+module Syskit
+  module Network
+    # Step 2: for every attached device in the network, its bus driver task
+    # (one per bus, itself attached to its own bus if any) becomes a
+    # dependency of the device's task, and the ports that link them are
+    # chosen (see BusPorts).
+    class Buses
+      def initialize(context)
+        @context = context
+        @drivers = Drivers.new(context)
+      end
+
+      def run
+        queue = @context.tasks.dup
+        until queue.empty?
+          task = queue.shift
+          device = @context.device_of(task)
+          next unless device.attached?
+
+          begin
+            check_cycle(device)
+            bus_task = bus_task_for(device.bus, queue)
+            task.add_child(bus_task, role: 'bus')
+            @context.bus_links << BusPorts.new(device, bus_task, task, @context.expected_ports[bus_task]).link
+          rescue Syskit::Error => e
+            @context.error(e)
+          end
+        end
+        check_port_names
+      end
+
+      private
+
+      def bus_task_for(bus, queue)
+        existing = @context.task_for(bus)
+        return existing if existing
+
+        task = @drivers.instantiate(Requirement.new(bus, @context.profile))
+        queue << task
+        task
+      end
+
+      def check_cycle(device)
+        seen = [device]
+        bus = device.bus
+        while bus
+          if seen.include?(bus)
+            raise NetworkError.new("#{bus} is attached through itself: #{(seen + [bus]).map(&:name).join(' -> ')}",
+                                   location: bus.declared_at, hint: 'a bus cannot be attached to itself, directly or not')
+          end
+
+          seen << bus
+          bus = bus.bus
+        end
+      end
+
+      # Per-device ports of one bus driver must not collide with each other
+      # (a device 'x' writes to 'wx', a device 'wx' reads from 'wx') nor with
+      # the driver's own ports.
+      def check_port_names
+        @context.expected_ports.each do |bus_task, ports|
+          ports.group_by(&:name).each do |name, same|
+            if same.size > 1
+              @context.error(port_clash(bus_task, name, same))
+            elsif (static = bus_task.model.find_port(name))
+              @context.error(static_clash(bus_task, same.first, static))
+            end
+          end
+        end
+      end
+
+      def port_clash(bus_task, name, ports)
+        first, second = ports.map(&:device)
+        NetworkError.new(
+          "#{first} and #{second} both need a port named '#{name}' on #{bus_task.model.name} " \
+          "(#{ports.map { |p| "#{p.direction} for #{p.device.name}" }.join(', ')}; " \
+          "#{first} is declared at #{first.declared_at})",
+          location: second.declared_at, hint: "rename one of them: per-device ports are '<name>' and 'w<name>'"
+        )
+      end
+
+      def static_clash(bus_task, port, static)
+        NetworkError.new(
+          "#{port.device}'s #{port.direction} port '#{port.name}' on #{bus_task.model.name} collides with its #{static}",
+          location: port.device.declared_at, hint: 'rename the device'
+        )
+      end
+    end
+  end
+end

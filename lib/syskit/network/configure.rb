@@ -1,0 +1,97 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    # Step 5: configures tasks in order: configuration file sections first,
+    # then the configure methods (which call super first), then the stub
+    # blocks, which stand for the ports the real component creates.
+    class Configure
+      def initialize(context)
+        @context = context
+      end
+
+      def run
+        @context.order.each do |step|
+          configure(step.task) if step.step == 'configure'
+        end
+      end
+
+      private
+
+      def configure(task)
+        device = @context.device_of(task)
+        apply_sections(task, device)
+        user_code(task, device, 'configure') { task.configure }
+        task.model.stub_blocks.each do |block|
+          context = task.model.stub_context_class.new(task)
+          user_code(task, device, 'stub') { context.instance_exec(&block) }
+        end
+        create_expected_ports(task)
+      rescue Syskit::Error => e
+        @context.error(e)
+      end
+
+      def apply_sections(task, device)
+        location = device.conf_location || device.declared_at
+        file = @context.app.conf_file(task.model)
+        unless file
+          return if task.conf == ['default']
+
+          raise ConfigurationError.new(
+            "#{device} asks for sections #{task.conf.join(', ')} but #{task.model.name} has no configuration file",
+            location: location, hint: "create config/orogen/#{task.model.name}.yml with a '--- name:#{task.conf.last}' section"
+          )
+        end
+
+        file.merged(task.conf, location: location).each do |key, value|
+          apply_value(task, file, key, value)
+        end
+      end
+
+      def apply_value(task, file, key, value)
+        location = file.location_of(key, task.conf)
+        unless task.properties.key?(key)
+          names = task.properties.names
+          raise ConfigurationError.new(
+            "#{task.model.name} has no property '#{key}'#{Naming.did_you_mean(key, names)}",
+            location: location, hint: "its properties are #{names.sort.join(', ')}"
+          )
+        end
+
+        task.properties[key] = value
+      rescue ConfigurationError => e
+        raise e.at(location)
+      end
+
+      def user_code(task, device, what)
+        yield
+      rescue Syskit::Error
+        raise
+      rescue ScriptError, StandardError => e
+        raise UserCode.translate(e, root: @context.app.root, error_class: ConfigureMethodError,
+                                    context: "in #{task.model.name}'s #{what} for #{device}")
+      end
+
+      # Per-device ports the bus driver must have: created by its stub blocks
+      # when it has some (checked here), else by the component (created here).
+      def create_expected_ports(task)
+        expected = @context.expected_ports.fetch(task, [])
+        return if expected.empty?
+
+        stubs = task.model.stub_blocks
+        expected.each do |port|
+          next task.create_port(port.direction, port.name, port.type) if stubs.empty?
+          next if task.created_ports.key?(port.name)
+
+          file, line = stubs.first.source_location
+          raise NetworkError.new(
+            "#{task.model.name}'s configure and stub did not create the #{port.direction} port '#{port.name}' " \
+            "that #{port.device} needs (created: #{task.created_ports.keys.sort.join(', ').then { |s| s.empty? ? 'none' : s }})",
+            location: Location.new(file, line),
+            hint: 'the stub must create a port per attached device, from the property the configure method sets'
+          )
+        end
+      end
+    end
+  end
+end

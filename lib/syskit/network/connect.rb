@@ -1,0 +1,67 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    # Step 6: connects each attached device's driver and its bus driver
+    # (bus '<device>' -> device, device -> bus input) with their policies,
+    # and refuses several writers on an input that does not multiplex.
+    class Connect
+      # A connection between two ports.
+      Connection = Struct.new(:from_task, :from_port, :to_task, :to_port, :policy, :device, keyword_init: true)
+
+      def initialize(context)
+        @context = context
+      end
+
+      def run
+        @context.bus_links.each do |link|
+          connect(link.bus_task, link.bus_output, link.device_task, link.client_input, link.device, false) if link.bus_output
+          connect(link.device_task, link.client_output, link.bus_task, link.bus_input, link.device, true) if link.bus_input
+        rescue Syskit::Error => e
+          @context.error(e)
+        end
+        check_multiplexing
+      end
+
+      private
+
+      def connect(from_task, from_name, to_task, to_name, device, into_bus)
+        from = port(from_task, from_name, :output, device)
+        to = port(to_task, to_name, :input, device)
+        unless from.type == to.type
+          raise NetworkError.new("cannot connect #{from_task}'s #{from} to #{to_task}'s #{to}: types differ",
+                                 location: device.declared_at, hint: 'both ports must have the bus message type')
+        end
+
+        @context.connections << Connection.new(
+          from_task: from_task, from_port: from, to_task: to_task, to_port: to, device: device,
+          policy: Policy.for(to, to_task, device, into_bus: into_bus)
+        )
+      end
+
+      def port(task, name, direction, device)
+        port = task.find_port(name)
+        return port if port&.direction == direction
+
+        raise NetworkError.new("#{task} has no #{direction} port '#{name}' for #{device}",
+                               location: device.declared_at, hint: 'the port should have been created at configure time')
+      end
+
+      def check_multiplexing
+        @context.connections.group_by { |c| [c.to_task.object_id, c.to_port.name] }.each_value do |into|
+          next if into.size == 1 || into.first.to_port.multiplexes?
+
+          sink = into.first
+          sources = into.map { |c| "#{c.from_task.name}.#{c.from_port.name} (#{c.device})" }
+          @context.error(NetworkError.new(
+                           "#{sink.to_task}'s input port '#{sink.to_port.name}' does not multiplex but " \
+                           "#{into.size} outputs write to it: #{sources.join(', ')}",
+                           location: into.last.device.declared_at,
+                           hint: "mark it .multiplexes in the .orogen file if the component accepts several writers, " \
+                                 'or give each device its own input port (dynamic_input_port)'
+                         ))
+        end
+      end
+    end
+  end
+end

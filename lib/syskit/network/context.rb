@@ -1,0 +1,67 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    # The network being generated, shared by the generator's steps: each
+    # step reads what the previous ones built and adds its part.
+    class Context
+      # How a device's driver talks to its bus's driver (see Buses).
+      BusLink = Struct.new(:device, :bus_task, :device_task,
+                           :bus_output, :bus_input, :client_input, :client_output, keyword_init: true)
+
+      # A port the bus driver must have for one device, created at configure time.
+      ExpectedPort = Struct.new(:name, :direction, :type, :device, keyword_init: true)
+
+      attr_reader :app, :profile, :robot_config, :requirements, :tasks, :bus_links,
+                  :expected_ports, :connections, :errors
+      attr_accessor :order, :stub_deployments
+
+      def initialize(app:, requirements:, profile: nil, robot_config: nil, stub_deployments: false)
+        @app = app
+        @profile = profile
+        @robot_config = robot_config
+        @requirements = requirements
+        @stub_deployments = stub_deployments
+        @tasks = []
+        @task_by_device = {}.compare_by_identity
+        @requirement_by_task = {}.compare_by_identity
+        @bus_links = []
+        @expected_ports = Hash.new { |h, k| h[k] = [] }.compare_by_identity
+        @connections = []
+        @errors = []
+      end
+
+      def add_task(task, device, requirement)
+        @tasks << task
+        @task_by_device[device] = task
+        @requirement_by_task[task] = requirement
+        task
+      end
+
+      def task_for(device)
+        @task_by_device[device]
+      end
+
+      def requirement_for(task)
+        @requirement_by_task[task]
+      end
+
+      # The device a task was created for.
+      def device_of(task)
+        requirement_for(task).device
+      end
+
+      # Collects an error; the step raises them all at its end.
+      def error(error)
+        @errors << error
+        nil
+      end
+
+      def raise_errors
+        errors = @errors
+        @errors = []
+        ErrorList.raise_if_any(errors)
+      end
+    end
+  end
+end

@@ -1,0 +1,72 @@
+# frozen_string_literal: true
+
+require 'syskit/network/requirement'
+require 'syskit/network/context'
+require 'syskit/network/drivers'
+require 'syskit/network/buses'
+require 'syskit/network/deploy'
+require 'syskit/network/order'
+require 'syskit/network/configure'
+require 'syskit/network/policy'
+require 'syskit/network/connect'
+require 'syskit/network/plan'
+
+module Syskit
+  module Network
+    # Turns requirements (a profile's device actions) into a network of
+    # configured tasks and its Plan. Each step is a class of its own, run in
+    # this order; a step's errors are all reported together.
+    class Generator
+      STEPS = [Drivers, Buses, Deploy, Order, Configure, Connect].freeze
+
+      # What generation gives: the plan, the configured tasks, and how long
+      # each step took (seconds, by step name).
+      Result = Struct.new(:plan, :context, :timings) do
+        def tasks
+          context.tasks
+        end
+
+        def task_for(device)
+          context.task_for(device.respond_to?(:device) ? device.device : device)
+        end
+      end
+
+      # The plan of +profile+ on +robot+: every device, or the given actions
+      # ('gps_dev', 'gps').
+      def self.plan_profile(app, profile, actions: [], robot: 'default')
+        requirements =
+          if actions.empty?
+            profile.all_requirements
+          else
+            actions.map { |a| profile.find_action(a) || raise(unknown_action(profile, a)) }
+          end
+        new(app, requirements, profile: profile, robot_config: app.robot_config(robot)).generate
+      end
+
+      def self.unknown_action(profile, name)
+        actions = profile.action_names
+        UnknownName.new("#{profile} has no action '#{name}'#{Naming.did_you_mean(name, actions)}",
+                        location: profile.declared_at, hint: "its actions are #{actions.join(', ')}")
+      end
+
+      def initialize(app, requirements, profile: nil, robot_config: nil, stub_deployments: false)
+        @context = Context.new(app: app, requirements: requirements, profile: profile,
+                               robot_config: robot_config, stub_deployments: stub_deployments)
+      end
+
+      def generate
+        timings = {}
+        STEPS.each do |step|
+          start = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+          step.new(@context).run
+          timings[Naming.underscore(step.name.split('::').last)] = Process.clock_gettime(Process::CLOCK_MONOTONIC) - start
+          @context.raise_errors
+        end
+        start = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+        plan = Plan.build(@context)
+        timings['plan'] = Process.clock_gettime(Process::CLOCK_MONOTONIC) - start
+        Result.new(plan, @context, timings)
+      end
+    end
+  end
+end

@@ -1,0 +1,40 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    # Step 4: the order in which tasks are configured and started. A task is
+    # configured once the buses it is attached through are started; tasks of
+    # the same rank are ordered by name, so the order is stable.
+    class Order
+      # One step of the order: 'configure' or 'start' a task.
+      Step = Struct.new(:step, :task, :rank)
+
+      def initialize(context)
+        @context = context
+        @ranks = {}.compare_by_identity
+      end
+
+      def run
+        steps = @context.tasks.flat_map do |task|
+          rank = configure_rank(task, [])
+          [Step.new('configure', task, rank), Step.new('start', task, rank + 1)]
+        end
+        @context.order = steps.sort_by { |s| [s.rank, s.task.name.to_s, s.step] }
+      end
+
+      private
+
+      # 0 for tasks without buses, else one more than the start of their buses.
+      def configure_rank(task, path)
+        return @ranks[task] if @ranks.key?(task)
+        if path.include?(task)
+          raise NetworkError.new("tasks depend on each other: #{(path + [task]).map(&:name).join(' -> ')}",
+                                 hint: 'a bus cannot be attached through itself')
+        end
+
+        children = task.each_child.map(&:first)
+        @ranks[task] = children.empty? ? 0 : children.map { |c| configure_rank(c, path + [task]) + 2 }.max
+      end
+    end
+  end
+end

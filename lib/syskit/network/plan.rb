@@ -1,0 +1,118 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    # The connection plan of a profile: which tasks run, deployed where,
+    # configured how, connected how, in which order. A frozen value, built
+    # from a generated network; renderers only read it.
+    class Plan
+      # A task of the plan, named after its deployed task.
+      Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on,
+                        keyword_init: true)
+      # A port of a task; dynamic ports are created at configure time.
+      Port = Struct.new(:name, :direction, :type, :dynamic, keyword_init: true)
+      # One end of a connection.
+      Endpoint = Struct.new(:task, :port, keyword_init: true)
+      # A connection and its policy ({'type' => 'buffer', 'size' => n} or {'type' => 'data'}).
+      Connection = Struct.new(:from, :to, :type, :policy, keyword_init: true)
+      # 'configure' or 'start' a task.
+      Step = Struct.new(:step, :task, keyword_init: true)
+
+      attr_reader :profile, :robot, :tasks, :connections, :order
+
+      def self.build(context)
+        new(
+          profile: context.profile&.name, robot: context.robot_config&.name,
+          tasks: context.tasks.map { |t| task_entry(t) }.sort_by(&:name),
+          connections: context.connections.map { |c| connection_entry(c) }.sort_by { |c| connection_key(c) },
+          order: context.order.map { |s| Step.new(step: s.step, task: s.task.name) }
+        )
+      end
+
+      def self.task_entry(task)
+        Task.new(
+          name: task.name, model: task.model.name, deployment: task.deployed_task.deployment.name,
+          devices: task.devices.map(&:name), conf: task.conf, properties: task.properties.to_plain,
+          ports: task.ports.values.map { |p| port_entry(p) }.sort_by(&:name),
+          depends_on: task.each_child.map { |child, _| child.name }.sort
+        )
+      end
+
+      def self.port_entry(port)
+        Port.new(name: port.name, direction: port.direction.to_s, type: port.type.name, dynamic: port.dynamic?)
+      end
+
+      def self.connection_entry(conn)
+        Connection.new(
+          from: Endpoint.new(task: conn.from_task.name, port: conn.from_port.name),
+          to: Endpoint.new(task: conn.to_task.name, port: conn.to_port.name),
+          type: conn.from_port.type.name, policy: conn.policy
+        )
+      end
+
+      def self.connection_key(conn)
+        [conn.from.task, conn.from.port, conn.to.task, conn.to.port]
+      end
+
+      def initialize(profile:, robot:, tasks:, connections:, order:)
+        @profile = profile
+        @robot = robot
+        @tasks = tasks
+        @connections = connections
+        @order = order
+        deep_freeze(self)
+      end
+
+      def find_task(name)
+        tasks.find { |t| t.name == name }
+      end
+
+      # Connections out of +task+ (and +port+ if given).
+      def connections_from(task, port = nil)
+        connections.select { |c| c.from.task == task && (port.nil? || c.from.port == port) }
+      end
+
+      # Connections into +task+ (and +port+ if given).
+      def connections_to(task, port = nil)
+        connections.select { |c| c.to.task == task && (port.nil? || c.to.port == port) }
+      end
+
+      # The plan as plain data, the JSON document's content.
+      def to_h
+        {
+          'profile' => profile, 'robot' => robot,
+          'tasks' => tasks.map { |t| task_hash(t) },
+          'connections' => connections.map { |c| connection_hash(c) },
+          'order' => order.map { |s| { 'step' => s.step, 'task' => s.task } }
+        }
+      end
+
+      private
+
+      def task_hash(task)
+        {
+          'name' => task.name, 'model' => task.model, 'deployment' => task.deployment,
+          'devices' => task.devices, 'conf' => task.conf, 'properties' => task.properties,
+          'ports' => task.ports.map { |p| p.to_h.transform_keys(&:to_s) },
+          'depends_on' => task.depends_on
+        }
+      end
+
+      def connection_hash(conn)
+        {
+          'from' => conn.from.to_h.transform_keys(&:to_s), 'to' => conn.to.to_h.transform_keys(&:to_s),
+          'type' => conn.type, 'policy' => conn.policy
+        }
+      end
+
+      def deep_freeze(value)
+        case value
+        when Plan then instance_variables.each { |v| deep_freeze(instance_variable_get(v)) }
+        when Hash then value.each_value { |v| deep_freeze(v) }
+        when Array, Struct then value.each { |v| deep_freeze(v) }
+        end
+        value.freeze
+      end
+    end
+  end
+end

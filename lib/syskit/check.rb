@@ -1,0 +1,105 @@
+# frozen_string_literal: true
+
+module Syskit
+  # `syskit check`: loads everything in an app, generates every profile on
+  # every robot configuration, and reports all the problems found, including
+  # the ones no generation error shows (overlapping CAN filters).
+  class Check
+    attr_reader :app, :problems
+
+    def initialize(app)
+      @app = app
+      @problems = []
+    end
+
+    def run
+      app.load(robots: :all, everything: true)
+      @problems.concat(app.problems)
+      app.profiles.values.sort_by(&:name).each do |profile|
+        @problems.concat(Checks::CanFilters.new(profile.robot).warnings)
+        app.robot_configs.each_key { |robot| generate(profile, robot) }
+      end
+      @problems = @problems.uniq { |p| [p.class, p.message, p.location.to_a] }
+      self
+    end
+
+    def errors
+      problems.reject { |p| p.is_a?(Warning) }
+    end
+
+    def warnings
+      problems.grep(Warning)
+    end
+
+    private
+
+    def generate(profile, robot)
+      Network::Generator.plan_profile(app, profile, robot: robot)
+    rescue ErrorList => e
+      @problems.concat(e.errors)
+    rescue Syskit::Error => e
+      @problems << e
+    end
+  end
+
+  module Checks
+    # Devices on one CAN bus whose filters overlap receive each other's
+    # frames. Filters are grouped by mask: within a mask, overlapping means
+    # equal ids (a hash lookup); across two masks, it means equal ids once
+    # both masks are applied, so no pair of filters is ever compared
+    # directly.
+    class CanFilters
+      def initialize(robot)
+        @robot = robot
+      end
+
+      def warnings
+        @robot.devices.grep(Robot::ComBus).flat_map { |bus| bus_warnings(bus) }
+      end
+
+      private
+
+      def bus_warnings(bus)
+        filtered = bus.each_attached_device.filter_map do |dev|
+          next unless dev.bus_to_client? && dev.respond_to?(:can_id) && dev.can_id
+
+          [dev, CAN::Filter.new(*dev.can_id)]
+        end
+        overlapping_pairs(filtered).map { |a, b| warning(bus, a, b) }
+      end
+
+      def overlapping_pairs(filtered)
+        by_mask = filtered.group_by { |_, f| f.mask }.to_a
+        pairs = []
+        by_mask.each_with_index do |(mask, group), i|
+          pairs.concat(pairs_in(group, group, mask, same: true))
+          by_mask.drop(i + 1).each { |other_mask, other| pairs.concat(pairs_in(group, other, mask & other_mask)) }
+        end
+        pairs.sort_by { |a, b| [a.declared_at.to_a, b.declared_at.to_a] }
+      end
+
+      def pairs_in(left, right, common, same: false)
+        index = left.group_by { |_, f| f.id & common }
+        pairs = []
+        right.each_with_index do |(dev, filter), j|
+          (index[filter.id & common] || []).each_with_index do |(other, _), i|
+            next if same && i >= j
+
+            pairs << [other, dev]
+          end
+        end
+        pairs
+      end
+
+      def warning(bus, first, second)
+        Warning.new(
+          "#{first} (#{CAN::Filter.new(*first.can_id)}) and #{second} (#{CAN::Filter.new(*second.can_id)}) " \
+          "on #{bus} have overlapping filters: both receive some of the same frames " \
+          "(#{first} is declared at #{first.declared_at})",
+          location: second.declared_at,
+          hint: 'narrow one of the masks so that no frame id passes both filters'
+        )
+      end
+    end
+  end
+end

@@ -82,6 +82,11 @@ module Syskit
       end
     rescue Syskit::Error => e
       report_error(e, app&.root)
+    rescue StandardError, ScriptError => e
+      # A bug of syskit itself: say so, without a backtrace unless asked.
+      report_error(Error.new("internal error: #{e.class}: #{e.message}",
+                             hint: 'this is a bug in syskit; run again with --trace and report the backtrace')
+                        .tap { |err| err.set_backtrace(e.backtrace) }, app&.root)
     end
 
     def app_root

@@ -17,8 +17,12 @@ module Syskit
         @deployed_tasks = {}
       end
 
-      def use_deployment(*specs, on: nil, **task_names)
+      # +on:+ (the host) is accepted and has no effect on plans.
+      def use_deployment(*specs, **options)
         location = Location.of_caller
+        options.delete(:on)
+        # Ruby passes a trailing `Model => 'name'` as keywords.
+        specs << options unless options.empty?
         specs.each do |spec|
           case spec
           when String, Symbol then add(named_deployment(spec.to_s, location), location)
@@ -26,8 +30,7 @@ module Syskit
           else raise usage_error(spec, location)
           end
         end
-        task_names.each { |name, _| raise usage_error(name, location) }
-        on
+        self
       end
 
       # Deployed tasks by name.

@@ -32,7 +32,7 @@ module Syskit
                                  hint: 'a bus cannot be attached through itself')
         end
 
-        children = task.each_child.map(&:first)
+        children = task.each_child.map { |child, _| child }
         @ranks[task] = children.empty? ? 0 : children.map { |c| configure_rank(c, path + [task]) + 2 }.max
       end
     end

@@ -1,0 +1,11 @@
+# What runs on the robot: one deployed task per device.
+Syskit.conf.use_deployment OroGen.gps_ublox.F9Task => 'gps'
+Syskit.conf.use_deployment 'cameras'
+Syskit.conf.use_deployment 'test_canbus'
+Syskit.conf.use_deployment OroGen.can_temperature_sensor.Task => 'temperature_sensor'
+Syskit.conf.use_deployment OroGen.can_temperature_sensor.Task => 'water_temperature'
+Syskit.conf.use_deployment OroGen.can_open.SyncTask => 'sync'
+Syskit.conf.use_deployment OroGen.nmea2000.CANTask => 'n2k'
+Syskit.conf.use_deployment OroGen.nmea2000.FluidLevelTask => 'fuel_level'
+Syskit.conf.use_deployment OroGen.simple_can.Task => 'can1'
+Syskit.conf.use_deployment 'motors'

@@ -1,0 +1,14 @@
+require 'models/services/position'
+
+module AwesomeRobot
+  module Devices
+    module GPS
+      module Ublox
+        # Ublox's 9th generation GNSS receivers (F9P, F9R).
+        device_type 'F9' do
+          provides Services::Position, 'position_samples' => 'pose_samples'
+        end
+      end
+    end
+  end
+end

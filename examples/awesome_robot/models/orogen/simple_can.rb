@@ -1,0 +1,3 @@
+Syskit.extend_model OroGen.simple_can.Task do
+  provides CommonModels::Devices::Bus::CAN::BusSrv, as: 'canbus'
+end

@@ -1,0 +1,65 @@
+using_task_library 'gps_ublox'
+using_task_library 'camera_gige'
+using_task_library 'canbus'
+using_task_library 'simple_can'
+using_task_library 'can_temperature_sensor'
+using_task_library 'can_open'
+using_task_library 'roboteq'
+using_task_library 'nmea2000'
+
+module AwesomeRobot
+  module Profiles
+    module Live
+      # The robot as it is in the field.
+      profile 'Base' do
+        robot do
+          device(Devices::GPS::Ublox::F9, as: 'gps')
+            .period(0.1)
+
+          device(Devices::Camera::GigE, as: 'forward_camera')
+            .prefer_deployed_tasks(/forward/)
+            .with_conf('default', 'forward')
+          device(Devices::Camera::GigE, as: 'aft_camera')
+            .prefer_deployed_tasks(/aft/)
+            .with_conf('default', 'aft')
+
+          # Two CAN drivers are loaded, so each bus names its own.
+          com_bus CommonModels::Devices::Bus::CAN, as: 'can0', using: OroGen.canbus.Task
+          through 'can0' do
+            device(OroGen.can_temperature_sensor.Task, as: 'temperature_sensor')
+              .can_id(0x1234, 0xffff) # CAN ID filter
+              .prefer_deployed_tasks('temperature_sensor')
+              .period(0.1)
+            device(Devices::Temperature::CANSensor, as: 'water_temperature', client_to_bus: false)
+              .can_id(0x300, 0x7f0)
+              .prefer_deployed_tasks('water_temperature')
+            device(OroGen.can_open.SyncTask, as: 'sync', bus_to_client: false)
+              .can_id(0x80, 0x7ff)
+              .period(0.01)
+              .burst(2)
+            # NMEA2000 frames (extended ids, PGN in bits 8..25) go to their
+            # own demultiplexer, a bus attached to this bus.
+            com_bus(Devices::N2k::Bus, as: 'n2k', client_to_bus: false)
+              .can_id(0x1F21100, 0x3FFFF00)
+          end
+          through 'n2k' do
+            device(Devices::N2k::FluidLevel, as: 'fuel_level', client_to_bus: false)
+              .period(1)
+          end
+
+          # A bus driver that does not demultiplex: the motor drivers filter
+          # the frames themselves, with their own can_id/can_mask.
+          com_bus CommonModels::Devices::Bus::CAN, as: 'can1', using: OroGen.simple_can.Task
+          through 'can1' do
+            device(Devices::Roboteq::CANOpen, as: 'left_motor')
+              .can_id(0x181, 0x7ff)
+              .prefer_deployed_tasks(/left/)
+            device(Devices::Roboteq::CANOpen, as: 'right_motor')
+              .can_id(0x182, 0x7ff)
+              .prefer_deployed_tasks(/right/)
+          end
+        end
+      end
+    end
+  end
+end

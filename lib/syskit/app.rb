@@ -67,7 +67,9 @@ module Syskit
       activate
       load_bundled_models
       each_model_file.each { |path| collect_problems { load_file(path) } }
-      robot_names(robots).each { |robot| collect_problems { robot_config(robot) } }
+      # A missing robot configuration is reported when a plan needs it.
+      robot_names(robots).select { |r| robot_config_names.include?(r) }
+                         .each { |robot| collect_problems { robot_config(robot) } }
       collect_problems { resolve_devices }
       load_everything if everything
       self

@@ -72,23 +72,21 @@ module Syskit
         by_mask = filtered.group_by { |_, f| f.mask }.to_a
         pairs = []
         by_mask.each_with_index do |(mask, group), i|
-          pairs.concat(pairs_in(group, group, mask, same: true))
-          by_mask.drop(i + 1).each { |other_mask, other| pairs.concat(pairs_in(group, other, mask & other_mask)) }
+          # Same mask: ids lie within the mask, so only equal ids overlap.
+          group.group_by { |_, f| f.id }.each_value do |same|
+            same.combination(2) { |(a, _), (b, _)| pairs << [a, b] }
+          end
+          by_mask.drop(i + 1).each { |other_mask, other| pairs.concat(cross_pairs(group, other, mask & other_mask)) }
         end
         pairs.sort_by { |a, b| [a.declared_at.to_a, b.declared_at.to_a] }
       end
 
-      def pairs_in(left, right, common, same: false)
+      # Pairs across two masks: equal ids once both masks are applied.
+      def cross_pairs(left, right, common)
         index = left.group_by { |_, f| f.id & common }
-        pairs = []
-        right.each_with_index do |(dev, filter), j|
-          (index[filter.id & common] || []).each_with_index do |(other, _), i|
-            next if same && i >= j
-
-            pairs << [other, dev]
-          end
+        right.flat_map do |dev, filter|
+          (index[filter.id & common] || []).map { |other, _| [other, dev] }
         end
-        pairs
       end
 
       def warning(bus, first, second)

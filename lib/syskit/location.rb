@@ -33,15 +33,16 @@ module Syskit
       new(loc.absolute_path || loc.path, loc.lineno) if loc
     end
 
-    # The path relative to +root+ when it is inside it.
-    def relative_path(root = nil)
+    # The path relative to +root+ (by default the loaded app's) when it is
+    # inside it.
+    def relative_path(root = Syskit.app&.root)
       return path unless root
 
       prefix = "#{File.expand_path(root)}/"
       path.start_with?(prefix) ? path.delete_prefix(prefix) : path
     end
 
-    def to_s(root = nil)
+    def to_s(root = Syskit.app&.root)
       "#{relative_path(root)}:#{lineno}"
     end
   end

@@ -128,11 +128,10 @@ module Syskit
         return
       end
 
-      report.problems.group_by { |p| p.location&.relative_path(app.root) || '(app)' }.sort.each do |file, problems|
-        puts file
-        problems.sort_by { |p| p.location&.lineno.to_i }.each do |p|
-          puts p.report(app.root).lines.map { |l| "  #{l}" }.join
-        end
+      groups = report.problems.group_by { |p| p.location&.relative_path(app.root).to_s }
+      groups.sort.each_with_index do |(_file, problems), i|
+        puts if i.positive?
+        problems.sort_by { |p| p.location&.lineno.to_i }.each { |p| puts p.report(app.root) }
       end
       puts "#{app.name}: #{report.errors.size} error(s), #{report.warnings.size} warning(s)"
     end

@@ -17,13 +17,18 @@ module Syskit
       Connection = Struct.new(:from, :to, :type, :policy, keyword_init: true)
       # 'configure' or 'start' a task.
       Step = Struct.new(:step, :task, keyword_init: true)
+      # A device of the network: its driver task, its bus and what it
+      # declared (attributes such as can_id, period, burst).
+      Device = Struct.new(:name, :model, :task, :bus, :bus_to_client, :client_to_bus, :attributes,
+                          :period, :burst, :sample_size, :declared_at, keyword_init: true)
 
-      attr_reader :profile, :robot, :tasks, :connections, :order
+      attr_reader :profile, :robot, :tasks, :devices, :connections, :order
 
       def self.build(context)
         new(
           profile: context.profile&.name, robot: context.robot_config&.name,
           tasks: context.tasks.map { |t| task_entry(t) }.sort_by(&:name),
+          devices: context.tasks.map { |t| device_entry(context.device_of(t), t) }.sort_by(&:name),
           connections: context.connections.map { |c| connection_entry(c) }.sort_by { |c| connection_key(c) },
           order: context.order.map { |s| Step.new(step: s.step, task: s.task.name) }
         )
@@ -35,6 +40,17 @@ module Syskit
           devices: task.devices.map(&:name), conf: task.conf, properties: task.properties.to_plain,
           ports: task.ports.values.map { |p| port_entry(p) }.sort_by(&:name),
           depends_on: task.each_child.map { |child, _| child.name }.sort
+        )
+      end
+
+      def self.device_entry(device, task)
+        Device.new(
+          name: device.name, model: device.model.name, task: task.name, bus: device.bus&.name,
+          bus_to_client: device.attached? ? device.bus_to_client? : nil,
+          client_to_bus: device.attached? ? device.client_to_bus? : nil,
+          attributes: device.dsl_attributes.to_h { |k, v| [k.to_s, v] }.sort.to_h,
+          period: device.period, burst: device.burst, sample_size: device.sample_size,
+          declared_at: device.declared_at&.to_s
         )
       end
 
@@ -54,10 +70,11 @@ module Syskit
         [conn.from.task, conn.from.port, conn.to.task, conn.to.port]
       end
 
-      def initialize(profile:, robot:, tasks:, connections:, order:)
+      def initialize(profile:, robot:, tasks:, devices:, connections:, order:)
         @profile = profile
         @robot = robot
         @tasks = tasks
+        @devices = devices
         @connections = connections
         @order = order
         deep_freeze(self)
@@ -65,6 +82,15 @@ module Syskit
 
       def find_task(name)
         tasks.find { |t| t.name == name }
+      end
+
+      def find_device(name)
+        devices.find { |d| d.name == name }
+      end
+
+      # The devices attached to bus +name+, by name.
+      def devices_on(bus_name)
+        devices.select { |d| d.bus == bus_name }
       end
 
       # Connections out of +task+ (and +port+ if given).
@@ -82,6 +108,7 @@ module Syskit
         {
           'profile' => profile, 'robot' => robot,
           'tasks' => tasks.map { |t| task_hash(t) },
+          'devices' => devices.map { |d| d.to_h.transform_keys(&:to_s) },
           'connections' => connections.map { |c| connection_hash(c) },
           'order' => order.map { |s| { 'step' => s.step, 'task' => s.task } }
         }

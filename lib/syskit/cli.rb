@@ -68,6 +68,25 @@ module Syskit
       end
     end
 
+    desc 'test [FILES...]', "run an app's tests (every test/**/test_*.rb by default)"
+    long_desc <<~TEXT
+      Runs the app's minitest files with the gem's test harness
+      (require 'syskit/test'), in the app's directory. Exits with a non-zero
+      status when a test fails.
+
+      Example: syskit test test/profiles/live/test_base.rb
+    TEXT
+    method_option :app, type: :string, desc: 'the app directory'
+    def test(*files)
+      root = app_root
+      files = files.map { |f| File.expand_path(f) }
+      files = Dir[File.join(root, 'test', '**', 'test_*.rb')].sort if files.empty?
+      loader = 'ARGV.each { |f| require f }'
+      ok = system({ 'SYSKIT_APP' => root }, RbConfig.ruby, '-I', File.expand_path('..', __dir__),
+                  '-e', loader, *files, chdir: root)
+      exit($?.exitstatus || 1) unless ok # rubocop:disable Style/SpecialGlobalVars
+    end
+
     private
 
     # Runs the block with the app of --app (loaded unless load: false),

@@ -54,18 +54,27 @@ module Syskit
                                robot_config: robot_config, stub_deployments: stub_deployments)
       end
 
-      def generate
+      # Runs the steps (all of them, or up to and including +through+) and
+      # builds the plan when all ran.
+      def generate(through: STEPS.last)
         timings = {}
-        STEPS.each do |step|
-          start = Process.clock_gettime(Process::CLOCK_MONOTONIC)
-          step.new(@context).run
-          timings[Naming.underscore(step.name.split('::').last)] = Process.clock_gettime(Process::CLOCK_MONOTONIC) - start
+        STEPS[0..STEPS.index(through)].each do |step|
+          timings[Naming.underscore(step.name.split('::').last)] = measure { step.new(@context).run }
           @context.raise_errors
         end
-        start = Process.clock_gettime(Process::CLOCK_MONOTONIC)
-        plan = Plan.build(@context)
-        timings['plan'] = Process.clock_gettime(Process::CLOCK_MONOTONIC) - start
+        return Result.new(nil, @context, timings) unless through == STEPS.last
+
+        plan = nil
+        timings['plan'] = measure { plan = Plan.build(@context) }
         Result.new(plan, @context, timings)
+      end
+
+      private
+
+      def measure
+        start = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+        yield
+        Process.clock_gettime(Process::CLOCK_MONOTONIC) - start
       end
     end
   end

@@ -1,0 +1,59 @@
+# frozen_string_literal: true
+
+require 'minitest/autorun'
+require 'minitest/spec'
+require 'syskit'
+require 'syskit/test/stubs'
+require 'syskit/test/profile_assertions'
+
+module Syskit
+  # Test support for apps: `require 'syskit/test'` at the top of a test
+  # file loads the app containing the current directory (once per run),
+  # and every `describe` block gets the stubs and profile assertions:
+  #
+  #   describe OroGen.roboteq.Task do
+  #     it 'configures its filter' do
+  #       bus = syskit_stub_com_bus(CommonModels::Devices::Bus::CAN)
+  #       dev = syskit_stub_attached_device(bus).can_id(10, 20)
+  #       task = syskit_stub_deploy_and_configure(dev)
+  #       assert_equal 10, task.properties.can_id
+  #     end
+  #   end
+  module Test
+    # The base class of `describe` blocks in app tests.
+    class Spec < Minitest::Spec
+      include Stubs
+      include ProfileAssertions
+    end
+
+    class << self
+      # The app under test: SYSKIT_APP, else the app containing the current
+      # directory. Loaded once, with every task library of the app.
+      def app
+        @app ||= load_app
+      end
+
+      # The robot configuration deployments come from: SYSKIT_ROBOT or 'default'.
+      def robot
+        ENV.fetch('SYSKIT_ROBOT', 'default')
+      end
+
+      private
+
+      def load_app
+        root = ENV['SYSKIT_APP'] || App.find_root(Dir.pwd)
+        abort "syskit/test: #{Dir.pwd} is not in a Syskit app (no models/ directory above it); set SYSKIT_APP" unless root
+
+        app = App.new(root)
+        app.load(robots: [robot], everything: true)
+        return app if app.problems.empty?
+
+        warn app.problems.map { |e| e.report(app.root) }.join("\n")
+        abort "syskit/test: #{app.name} has #{app.problems.size} problem(s), fix them first (see above)"
+      end
+    end
+  end
+end
+
+Syskit::Test.app
+Minitest::Spec.register_spec_type(Syskit::Test::Spec) { |_desc| true }

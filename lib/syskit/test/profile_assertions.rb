@@ -1,0 +1,85 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Test
+    # Assertions on the profile a test describes (+describe Base do ... end+):
+    #
+    #   it { is_self_contained }   # every device has a model and a single driver
+    #   it { can_instanciate }     # drivers, buses and their ports can be set up
+    #   it { can_deploy }          # ... and each task has a deployed task
+    #   it { can_configure }       # ... and configuration and configure methods apply
+    #
+    # Each takes optional actions (+Base.gps_dev+ or 'gps_dev') and checks
+    # them one at a time; the +_together+ forms check them in one network.
+    # Without actions, every device of the profile. Failures carry the
+    # generator's messages (file:line, hint), as `syskit plan` prints them.
+    module ProfileAssertions
+      def is_self_contained(*actions) # rubocop:disable Naming/PredicateName -- Syskit's name
+        syskit_check_each(actions, Network::Drivers)
+      end
+
+      def is_self_contained_together(*actions) # rubocop:disable Naming/PredicateName
+        syskit_check_together(actions, Network::Drivers)
+      end
+
+      def can_instanciate(*actions)
+        syskit_check_each(actions, Network::Buses)
+      end
+
+      def can_instanciate_together(*actions)
+        syskit_check_together(actions, Network::Buses)
+      end
+
+      def can_deploy(*actions)
+        syskit_check_each(actions, Network::Order)
+      end
+
+      def can_deploy_together(*actions)
+        syskit_check_together(actions, Network::Order)
+      end
+
+      def can_configure(*actions)
+        syskit_check_each(actions, Network::Connect)
+      end
+
+      def can_configure_together(*actions)
+        syskit_check_together(actions, Network::Connect)
+      end
+
+      private
+
+      def syskit_profile
+        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
+        profile = desc.respond_to?(:syskit_profile) ? desc.syskit_profile : nil
+        return profile if profile
+
+        flunk "profile assertions need `describe SomeProfile do ... end`, not #{desc.inspect}"
+      end
+
+      def syskit_requirements(actions)
+        profile = syskit_profile
+        return profile.all_requirements if actions.empty?
+
+        actions.map do |action|
+          next action if action.is_a?(Network::Requirement)
+
+          profile.find_action(action) || flunk(Network::Generator.unknown_action(profile, action).report(Test.app.root))
+        end
+      end
+
+      def syskit_check_each(actions, through)
+        syskit_requirements(actions).each { |req| syskit_check_together([req], through) }
+      end
+
+      def syskit_check_together(actions, through)
+        requirements = actions.all?(Network::Requirement) && !actions.empty? ? actions : syskit_requirements(actions)
+        app = Test.app
+        Network::Generator.new(app, requirements, profile: syskit_profile,
+                                                  robot_config: app.robot_config(Test.robot)).generate(through: through)
+        assert true
+      rescue Syskit::Error => e
+        flunk e.report(app.root)
+      end
+    end
+  end
+end

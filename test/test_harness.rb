@@ -1,0 +1,112 @@
+# frozen_string_literal: true
+
+require 'helper'
+require 'open3'
+require 'rbconfig'
+
+module Syskit
+  # `require 'syskit/test'`, `syskit test` and `rake test` in apps, run as
+  # users run them: in a separate process.
+  class TestHarness < Minitest::Test
+    LIB = File.join(GEM_ROOT, 'lib')
+
+    def syskit_test(app, *files)
+      Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'test', '--app', app, *files)
+    end
+
+    def test_the_seed_test_snippets_pass_as_written
+      %w[non_demux demux nmea2000/seabots].each do |app|
+        out, err, status = syskit_test(fixture('seed', app))
+        assert status.success?, "#{app}:\n#{out}\n#{err}"
+        assert_match(/0 failures, 0 errors/, out)
+      end
+    end
+
+    def test_rake_test_in_the_example_app
+      out, err, status = Open3.capture3(RbConfig.ruby, '-I', LIB, '-S', 'rake', 'test',
+                                        chdir: File.join(GEM_ROOT, 'examples', 'awesome_robot'))
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/\d+ runs, \d+ assertions, 0 failures, 0 errors/, out)
+    end
+
+    BROKEN_PROFILE = {
+      'config/syskit.yml' => "name: MyApp\n",
+      'models/devices/imu.rb' => "module MyApp\n  module Devices\n    device_type 'IMU'\n  end\nend\n",
+      'models/orogen/imu.orogen' => "name 'imu'\ntask_context 'Task' do\nend\n",
+      'models/orogen/imu.rb' => "Syskit.extend_model OroGen.imu.Task do\n  driver_for MyApp::Devices::IMU, as: 'imu'\nend\n",
+      'models/profiles/base.rb' => <<~RUBY,
+        using_task_library 'imu'
+
+        module MyApp
+          module Profiles
+            profile 'Base' do
+              robot do
+                device(Devices::IMU, as: 'imu')
+              end
+            end
+          end
+        end
+      RUBY
+      'config/robots/default.rb' => "# nothing deployed\n",
+      'test/profiles/test_base.rb' => <<~RUBY
+        require 'syskit/test'
+
+        module MyApp
+          module Profiles
+            describe Base do
+              it('is self contained') { is_self_contained }
+              it('can be deployed') { can_deploy }
+            end
+          end
+        end
+      RUBY
+    }.freeze
+
+    def test_a_profile_test_fails_with_the_generator_message
+      app = write_app(BROKEN_PROFILE, name: 'my_app')
+      out, _err, status = syskit_test(app)
+      refute status.success?
+      assert_match(/1 failures, 0 errors/, out)
+      assert_match(%r{models/profiles/base\.rb:7: no deployed task can run imu::Task, the driver of device 'imu'}, out)
+      assert_match(/hint: add to config\/robots\/default\.rb: Syskit\.conf\.use_deployment OroGen\.imu\.Task => 'imu'/, out)
+    end
+
+    def test_stubs_do_not_leak_from_one_test_to_the_next
+      files = BROKEN_PROFILE.merge(
+        'config/robots/default.rb' => "Syskit.conf.use_deployment OroGen.imu.Task => 'imu'\n",
+        'test/test_stubs.rb' => <<~RUBY
+          require 'syskit/test'
+
+          module MyApp
+            describe OroGen.imu.Task do
+              2.times do |i|
+                it "stubs the device 'imu' again (\#{i})" do
+                  dev = syskit_stub_device(Devices::IMU, as: 'imu')
+                  assert_same dev, syskit_stub_deploy_and_configure(dev).imu_dev
+                  assert_equal ['imu'], syskit_stub_plan.devices.map(&:name)
+                end
+              end
+
+              it 'refuses to deploy a task without a device' do
+                error = assert_raises(Syskit::NetworkError) { syskit_stub_deploy_and_configure(OroGen.imu.Task) }
+                assert_match(/a driver task without a device is refused/, error.message)
+              end
+            end
+          end
+        RUBY
+      )
+      app = write_app(files, name: 'my_app')
+      out, err, status = syskit_test(app, File.join(app, 'test', 'test_stubs.rb'))
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/3 runs, \d+ assertions, 0 failures, 0 errors/, out)
+    end
+
+    def test_an_app_with_problems_is_reported_before_its_tests_run
+      app = write_app(BROKEN_PROFILE.merge('models/devices/imu.rb' => "device_type 'imu'\n"), name: 'my_app')
+      _out, err, status = syskit_test(app)
+      refute status.success?
+      assert_match(%r{models/devices/imu\.rb:1: 'imu' is not a valid name for a device}, err)
+      assert_match(/has 2 problem\(s\), fix them first/, err)
+    end
+  end
+end

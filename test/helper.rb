@@ -40,6 +40,86 @@ module Syskit
       dir
     end
 
+    # A small app (named MyApp) with an IMU device model and its driver,
+    # a CAN temperature sensor and its driver, plus +files+.
+    BASE_APP = {
+      'config/syskit.yml' => "name: MyApp\nacronyms: [IMU, CAN]\n",
+      'models/devices/imu.rb' => <<~RUBY,
+        module MyApp
+          module Devices
+            device_type 'IMU' do
+              output_port 'samples', '/base/samples/IMUSensors'
+            end
+            device_type 'TemperatureSensor'
+          end
+        end
+      RUBY
+      'models/orogen/imu.orogen' => <<~RUBY,
+        name 'imu'
+        import_types_from 'base'
+        task_context 'Task' do
+          property 'device', '/std/string', '/dev/ttyUSB0'
+          property 'rate', 'int', 100
+          output_port 'samples', '/base/samples/IMUSensors'
+        end
+      RUBY
+      'models/orogen/imu.rb' => <<~RUBY,
+        require 'models/devices/imu'
+        Syskit.extend_model OroGen.imu.Task do
+          driver_for MyApp::Devices::IMU, as: 'imu'
+        end
+      RUBY
+      'models/orogen/temp.orogen' => <<~RUBY,
+        name 'temp'
+        import_types_from 'canbus'
+        task_context 'Task' do
+          input_port('can_in', '/canbus/Message').needs_reliable_connection
+          output_port 'can_out', '/canbus/Message'
+        end
+      RUBY
+      'models/orogen/temp.rb' => <<~RUBY,
+        require 'models/devices/imu'
+        Syskit.extend_model OroGen.temp.Task do
+          driver_for MyApp::Devices::TemperatureSensor, as: 'sensor'
+        end
+      RUBY
+      'config/robots/default.rb' => "using_task_library 'imu'\nSyskit.conf.use_deployment OroGen.imu.Task => 'imu'\n"
+    }.freeze
+
+    # BASE_APP with +files+, and a profile Base whose robot block is +robot+
+    # (in models/profiles/base.rb, the robot block's first line is line 9).
+    def my_app(robot = nil, files = {}, libraries: %w[imu temp canbus])
+      profile = robot && <<~RUBY
+        #{libraries.map { |l| "using_task_library '#{l}'" }.join("\n")}
+
+        module MyApp
+          module Profiles
+            profile 'Base' do
+              robot do
+        #{robot.lines.map { |l| "        #{l}" }.join.chomp}
+              end
+            end
+          end
+        end
+      RUBY
+      write_app(BASE_APP.merge(profile ? { 'models/profiles/base.rb' => profile } : {}).merge(files), name: 'my_app')
+    end
+
+    # The single problem of loading +root+.
+    def load_problem(root, **options)
+      app = load_app(root, problems: true, **options)
+      assert_equal 1, app.problems.size, app.problems.map { |e| e.report(root) }.join("\n")
+      app.problems.first
+    end
+
+    # Asserts +error+ says +message+, at +at+ (relative to +root+), with +hint+.
+    def assert_reported(error, message, at:, hint: nil, root: nil)
+      assert_match message, error.message
+      assert_equal at, error.location&.to_s(root)
+      assert_match hint, error.hint.to_s if hint
+      error
+    end
+
     # Runs bin/syskit in this process; returns [stdout, stderr, exit status].
     def run_cli(*args, chdir: GEM_ROOT)
       out = StringIO.new

@@ -1,0 +1,179 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # Declaration-time errors of robot blocks (SPEC 5 and 11): what is wrong,
+  # the user's line, and what to write instead.
+  class TestRobotDeclarations < Minitest::Test
+    # The robot block's first line in the profile written by my_app.
+    ROBOT = 'models/profiles/base.rb:9'
+
+    def problem(robot, **options)
+      root = my_app(robot, **options)
+      [load_problem(root), root]
+    end
+
+    def test_device_without_a_name
+      error, root = problem("device(Devices::IMU)\n")
+      assert_reported error, /a device needs a name/, at: ROBOT, hint: /device\(Model, as: 'name'\)/, root: root
+    end
+
+    def test_duplicate_device_name
+      error, root = problem("device(Devices::IMU, as: 'imu')\ndevice(Devices::IMU, as: 'imu')\n")
+      assert_reported error, %r{a device named 'imu' is already declared at models/profiles/base.rb:9},
+                      at: 'models/profiles/base.rb:10', hint: /its own name/, root: root
+    end
+
+    def test_invalid_device_name
+      error, root = problem("device(Devices::IMU, as: 'My IMU')\n")
+      assert_reported error, /'My IMU' is not a valid device name/, at: ROBOT, hint: /lower-case/, root: root
+    end
+
+    def test_a_data_service_is_not_a_device
+      root = my_app("device(Services::Pose, as: 'pose')\n",
+                    { 'models/services/pose.rb' => "module MyApp\n  module Services\n    data_service_type 'Pose'\n  end\nend\n" })
+      assert_reported load_problem(root), /device expects a device model.*got MyApp::Services::Pose \(a data service\)/,
+                      at: ROBOT, root: root
+    end
+
+    def test_a_bus_model_is_declared_with_com_bus
+      error, root = problem("device(CommonModels::Devices::Bus::CAN, as: 'can0')\n")
+      assert_reported error, /CommonModels::Devices::Bus::CAN is a communication bus/, at: ROBOT,
+                                                                                        hint: /com_bus CommonModels::Devices::Bus::CAN, as: 'name'/, root: root
+    end
+
+    def test_com_bus_needs_a_bus_model
+      error, root = problem("com_bus Devices::IMU, as: 'can0'\n")
+      assert_reported error, /com_bus expects a bus model \(com_bus_type\), got MyApp::Devices::IMU \(a device\)/,
+                      at: ROBOT, root: root
+    end
+
+    def test_unknown_device_option_is_rejected
+      error, root = problem("device(Devices::IMU, as: 'imu', period: 0.1)\n")
+      assert_reported error, /unknown option\(s\) period:/, at: ROBOT, hint: /chained calls \(.with_conf, .period/,
+                                                                       root: root
+    end
+
+    def test_client_to_bus_outside_a_bus
+      error, root = problem("device(Devices::IMU, as: 'imu', client_to_bus: false)\n")
+      assert_reported error, /client_to_bus: only applies to devices attached to a bus/, at: ROBOT,
+                                                                                          hint: /through 'bus_name' do/, root: root
+    end
+
+    def test_through_an_unknown_bus
+      error, root = problem("com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\nthrough 'can1' do\nend\n")
+      assert_reported error, /no bus named 'can1' \(did you mean 'can0'\?\)/, at: 'models/profiles/base.rb:10',
+                                                                               hint: /buses of this robot: can0/, root: root
+    end
+
+    def test_through_a_device_that_is_not_a_bus
+      error, root = problem("device(Devices::IMU, as: 'imu')\nthrough 'imu' do\nend\n")
+      assert_reported error, /device 'imu' is not a communication bus/, at: 'models/profiles/base.rb:10', root: root
+    end
+
+    def test_a_device_that_neither_reads_nor_writes
+      robot = <<~RUBY
+        com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+        through 'can0' do
+          device(Devices::TemperatureSensor, as: 't', client_to_bus: false, bus_to_client: false)
+        end
+      RUBY
+      error, root = problem(robot)
+      assert_reported error, /would neither read from nor write to bus 'can0'/, at: 'models/profiles/base.rb:11',
+                                                                                 hint: /drop one of the two options/, root: root
+    end
+
+    def test_a_bus_attached_through_itself
+      robot = <<~RUBY
+        com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+        com_bus CommonModels::Devices::Bus::CAN, as: 'can1'
+        through 'can0' do
+          device(Devices::TemperatureSensor, as: 't')
+        end
+        can0_dev = nil
+      RUBY
+      root = my_app(robot)
+      app = load_app(root, problems: true)
+      bus0, bus1 = MyApp::Profiles::Base.syskit_profile.robot.devices.first(2)
+      bus1.attach_to(bus0)
+      error = assert_raises(NetworkError) { bus0.attach_to(bus1) }
+      assert_match(/attaching bus 'can0' to bus 'can1' makes a cycle: can0 -> can1 -> can0/, error.message)
+      assert_equal File.expand_path(__FILE__), error.location.path
+      assert_empty app.problems.grep(NetworkError)
+    end
+
+    def test_can_id_that_can_never_match
+      robot = <<~RUBY
+        com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+        through 'can0' do
+          device(Devices::TemperatureSensor, as: 't')
+            .can_id(0x1234, 0x00ff)
+        end
+      RUBY
+      error, root = problem(robot)
+      assert_reported error, /can_id\(4660, 255\) on device 't': this filter can never match: id 0x1234 has bits outside mask 0xFF/,
+                      at: 'models/profiles/base.rb:12', hint: /can_id takes \(id, mask = \.\.\.\)/, root: root
+    end
+
+    def test_can_id_beyond_29_bits
+      robot = <<~RUBY
+        com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+        through 'can0' do
+          device(Devices::TemperatureSensor, as: 't').can_id(0x2000_0000)
+        end
+      RUBY
+      error, root = problem(robot)
+      assert_reported error, /the id 0x20000000 does not fit in 29 bits/, at: 'models/profiles/base.rb:11', root: root
+    end
+
+    def test_can_id_on_a_device_that_is_not_attached
+      robot = <<~RUBY
+        com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+        device(Devices::TemperatureSensor, as: 't').can_id(0x12)
+      RUBY
+      error, root = problem(robot)
+      assert_reported error, /device 't' has no 'can_id'/, at: 'models/profiles/base.rb:10',
+                                                          hint: /can_id is for devices attached to a CommonModels::Devices::Bus::CAN bus: declare t in a through 'bus_name' do \.\.\. end block/,
+                                                          root: root
+    end
+
+    def test_invalid_chained_values
+      { ".prefer_deployed_tasks(3)\n" => [/prefer_deployed_tasks expects regexps or names, got 3/, /prefer_deployed_tasks\(\/forward\/\)/],
+        ".with_conf\n" => [/with_conf needs at least one section name/, /with_conf\('default', 'forward'\)/],
+        ".period(-1)\n" => [/invalid period -1 for device 'imu'/, /positive number/] }.each do |call, (message, hint)|
+        error, root = problem("device(Devices::IMU, as: 'imu')\n  #{call}")
+        assert_reported error, message, at: 'models/profiles/base.rb:10', hint: hint, root: root
+        @loaded_apps.pop.unload
+      end
+    end
+
+    def test_unknown_statement_in_a_robot_block
+      error, root = problem("devise(Devices::IMU, as: 'imu')\n")
+      assert_reported error, /unknown statement 'devise' in a robot block \(did you mean 'device'\?\)/, at: ROBOT,
+                                                                                                        hint: /device, com_bus and through/, root: root
+    end
+
+    def test_com_bus_with_a_block_attaches_the_devices
+      root = my_app("com_bus(CommonModels::Devices::Bus::CAN, as: 'can0') do\n  device(Devices::TemperatureSensor, as: 't').can_id(1)\nend\n")
+      load_app(root)
+      assert_equal 'can0', MyApp::Profiles::Base.t_dev.device.bus.name
+    end
+
+    def test_attach_to_does_what_through_does
+      root = my_app("com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\ndevice(Devices::TemperatureSensor, as: 't').attach_to('can0', client_to_bus: false).can_id(1)\n")
+      load_app(root)
+      device = MyApp::Profiles::Base.t_dev.device
+      assert_equal ['can0', false, true], [device.bus.name, device.client_to_bus?, device.bus_to_client?]
+      assert_equal [1, 1], device.can_id
+    end
+
+    def test_chainable_settings_are_recorded
+      root = my_app("device(Devices::IMU, as: 'imu').period(0.01).burst(3).sample_size(64).doc('the IMU')\n  .with_conf('default', 'fast').prefer_deployed_tasks(/imu/, 'imu2')\n")
+      load_app(root)
+      device = MyApp::Profiles::Base.imu_dev.device
+      assert_equal [0.01, 3, 64, 'the IMU', %w[default fast], [/imu/, 'imu2']],
+                   [device.period, device.burst, device.sample_size, device.doc, device.conf, device.deployment_hints]
+    end
+  end
+end

@@ -88,7 +88,8 @@ module Syskit
 
     # BASE_APP with +files+, and a profile Base whose robot block is +robot+
     # (in models/profiles/base.rb, the robot block's first line is line 9).
-    def my_app(robot = nil, files = {}, libraries: %w[imu temp canbus])
+    def my_app(robot = nil, files = {}, libraries: %w[imu temp canbus], **more_files)
+      files = files.merge(more_files)
       profile = robot && <<~RUBY
         #{libraries.map { |l| "using_task_library '#{l}'" }.join("\n")}
 

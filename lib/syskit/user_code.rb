@@ -70,17 +70,38 @@ module Syskit
     end
 
     # The receiver's own explanation of a missing method or constant, or
-    # Ruby's message with its spelling suggestions.
+    # Ruby's message with spelling suggestions.
     def explain(exception)
       receiver = receiver_of(exception)
       if exception.name && receiver.respond_to?(:explain_missing)
         return receiver.explain_missing(exception.name.to_s)
       end
 
-      text = exception.message.lines.map(&:strip).reject(&:empty?)
-      suggestion = text.drop(1).join(' ')
-      hint = suggestion.empty? ? missing_hint(exception) : suggestion
-      [text.first.to_s.sub(/ for #<[^>]*>\z/, ''), hint]
+      message = original_message(exception).sub(/ for #<[^>]*>\z/, '')
+      [message, suggestion(exception, receiver) || missing_hint(exception)]
+    end
+
+    # Ruby's own message, without the code excerpt error_highlight adds.
+    def original_message(exception)
+      text = exception.respond_to?(:original_message) ? exception.original_message : exception.message
+      first_line(text)
+    end
+
+    def suggestion(exception, receiver)
+      candidates =
+        if !exception.is_a?(NoMethodError) && receiver.is_a?(Module)
+          receiver.constants.map { |c| receiver == Object ? c.to_s : "#{receiver.name}::#{c}" }
+        elsif exception.respond_to?(:corrections)
+          return corrections_hint(exception.corrections)
+        end
+      return unless candidates
+
+      prefix = receiver == Object ? '' : "#{receiver.name}::"
+      corrections_hint(Naming.suggest("#{prefix}#{exception.name}", candidates))
+    end
+
+    def corrections_hint(corrections)
+      "did you mean #{corrections.map { |c| "'#{c}'" }.join(' or ')}?" unless corrections.nil? || corrections.empty?
     end
 
     def missing_hint(exception)

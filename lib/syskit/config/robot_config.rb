@@ -76,7 +76,7 @@ module Syskit
         return found if found
 
         raise DeploymentError.new(
-          "no deployment named '#{name}'#{Naming.did_you_mean(name, @app.orogen.deployment_names)}",
+          "no deployment named '#{name}'#{Naming.did_you_mean(name, @app.orogen.all_deployment_names)}",
           location: location,
           hint: "deployments are declared in .orogen files (deployment '#{name}' do task('name', 'lib::Task') end), " \
                 "or made for one task with use_deployment OroGen.lib.Task => 'name'"

@@ -90,11 +90,23 @@ module Syskit
       # Task libraries on the search path whose .orogen file declares a
       # deployment called +name+, found without loading them.
       def libraries_declaring_deployment(name)
-        pattern = /^\s*deployment\s*\(?\s*["']#{Regexp.escape(name)}["']/
-        available_library_names.select { |lib| File.read(spec_path(lib)).match?(pattern) }
+        declared_deployments.select { |_, names| names.include?(name) }.keys
       end
 
+      # Deployment names of every task library on the search path, loaded or not.
+      def all_deployment_names
+        (deployment_names + declared_deployments.values.flatten).uniq.sort
+      end
+
+
       private
+
+      # Library name => deployment names, read from the .orogen files' text.
+      def declared_deployments
+        @declared_deployments ||= available_library_names.to_h do |lib|
+          [lib, File.read(spec_path(lib)).scan(/^\s*deployment\s*\(?\s*["']([^"']+)["']/).flatten]
+        end
+      end
 
       def unknown_library(name, location)
         searched = @app.orogen_search_dirs.map { |d| Location.new(d, 0).relative_path(@app.root) }

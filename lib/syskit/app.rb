@@ -45,6 +45,10 @@ module Syskit
       "app #{name} (#{root})"
     end
 
+    def inspect
+      "#<#{self.class.name} #{name} #{root}>"
+    end
+
     # Directories searched for NAME.orogen, in order.
     def orogen_search_dirs
       [File.join(root, 'models', 'orogen'), *@orogen_path, File.join(BUNDLED_MODELS, 'orogen')]

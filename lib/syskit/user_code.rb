@@ -11,11 +11,12 @@ module Syskit
   module UserCode
     module_function
 
-    # Evaluates the file at +path+ with +receiver+ as self.
-    def evaluate(path, receiver, root: nil)
+    # Evaluates the file at +path+ with +receiver+ as self; what it raises
+    # becomes an +error_class+ error at the file's line.
+    def evaluate(path, receiver, root: nil, error_class: FileLoadError)
       receiver.instance_eval(File.read(path), path, 1)
     rescue ScriptError, StandardError => e
-      raise translate(e, path: path, root: root)
+      raise translate(e, path: path, root: root, error_class: error_class)
     end
 
     # A Syskit::Error for +exception+. +path+ is the file being evaluated:

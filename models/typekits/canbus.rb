@@ -1,6 +1,5 @@
 # Types of the canbus driver.
 import_types_from 'base'
-accept_unknown_types
 
 # One CAN frame.
 struct 'Message' do

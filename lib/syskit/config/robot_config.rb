@@ -48,6 +48,10 @@ module Syskit
         "robot '#{name}'"
       end
 
+      def inspect
+        "#<#{self.class.name} #{name}: #{@deployed_tasks.keys.join(', ')}>"
+      end
+
       private
 
       def add(deployment, location)

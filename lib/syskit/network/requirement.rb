@@ -38,6 +38,7 @@ module Syskit
       def to_s
         profile ? "#{profile}.#{name}" : name
       end
+      alias inspect to_s
     end
   end
 end

@@ -16,7 +16,7 @@ module Syskit
       end
 
       def load
-        UserCode.evaluate(library.path, ProjectDSL.new(self), root: @app.root)
+        UserCode.evaluate(library.path, ProjectDSL.new(self), root: @app.root, error_class: SpecError)
         library
       end
 

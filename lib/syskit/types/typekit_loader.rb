@@ -80,7 +80,7 @@ module Syskit
       end
 
       def load(path)
-        UserCode.evaluate(path, DSL.new(self))
+        UserCode.evaluate(path, DSL.new(self), error_class: TypeError)
       end
 
       def define(relative)

@@ -8,9 +8,20 @@ module Syskit
     EXTENDED_ID_MAX = 0x1FFF_FFFF
 
     # A device's receive filter: it gets the frames with (frame_id & mask) == id.
+    #
+    # Standard (11-bit) and extended (29-bit) frames are kept apart: a filter
+    # whose id or mask does not fit in 11 bits can only mean extended frames,
+    # so it is an extended filter and matches extended frames only; any other
+    # filter matches standard frames only. {#match?} compares ids alone; the
+    # bus traffic tools (Syskit::Bus::Dispatcher) apply the frame kind too.
     Filter = Struct.new(:id, :mask) do
       def match?(frame_id)
         (frame_id & mask) == id
+      end
+
+      # Whether this filter is for extended (29-bit) frames.
+      def extended?
+        id > STANDARD_ID_MAX || mask > STANDARD_ID_MAX
       end
 
       # Whether some frame id passes both filters.

@@ -156,3 +156,4 @@ module Syskit
     end
   end
 end
+require 'syskit/cli/bus'

@@ -1,0 +1,118 @@
+# frozen_string_literal: true
+
+# Measures the bus traffic tools: dispatching frames through a 64-device bus
+# and replaying a 1,000,000-frame candump log end to end (parse, count,
+# report). Run as `ruby -Ilib bench/replay.rb [FRAMES]`; bench/run.rb calls
+# Syskit::Bench::Replay.run. Figures are measured on each run, never stored.
+
+require 'benchmark'
+require 'tmpdir'
+require 'syskit'
+require 'syskit/bus/dispatcher'
+require 'syskit/bus/replay'
+
+module Syskit
+  module Bench
+    # The replay benchmark: a synthetic bus and log, then timings.
+    module Replay
+      FRAMES = 1_000_000
+      DEVICES = 64
+      TARGETS = { dispatch: 500_000, end_to_end: 200_000 }.freeze
+
+      module_function
+
+      # Runs the benchmark and prints a table on +io+; returns the figures
+      # (frames per second by measure).
+      def run(io = $stdout, frames: FRAMES)
+        devices = bus_devices
+        dispatcher = Syskit::Bus::Dispatcher.new('can0', devices)
+        random = Random.new(42)
+        pool = id_pool(random)
+        keys = Array.new(frames) { pool[random.rand(pool.size)] }
+
+        results = {}
+        results[:dispatch] = rate(frames) { keys.each { |k| dispatcher.receivers(k) } }
+        results[:dispatch_uncached] = rate(frames) { keys.each { |k| dispatcher.lookup(k) } }
+        Dir.mktmpdir('syskit-bench') do |dir|
+          path = File.join(dir, 'can0.log')
+          write_log(path, keys, random)
+          results[:end_to_end] = rate(frames) do
+            Syskit::Bus::Replay.new(Syskit::Bus::Dispatcher.new('can0', devices), path, progress_out: nil).run
+          end
+          results[:log_mb] = File.size(path) / 1e6
+        end
+        print_table(io, frames, dispatcher, pool.size, results)
+        results
+      end
+
+      # Frames per second of the block over +frames+ frames.
+      def rate(frames)
+        GC.start
+        frames / Benchmark.realtime { yield }
+      end
+
+      # 64 devices as a plan lists them: standard and extended filters with
+      # a handful of distinct masks, as on a real robot, two write-only.
+      def bus_devices
+        filters = Array.new(24) { |i| [0x100 + (i * 0x10), 0x7F0] } +
+                  Array.new(8) { |i| [0x600 + i, 0x7FF] } +
+                  Array.new(6) { |i| [0x080 * i, 0x780] } +
+                  Array.new(16) { |i| [0xFEF000 + (i << 8), 0x3FFFF00] } +
+                  Array.new(8) { |i| [0x18FF0000 + i, 0x1FFFFFFF] }
+        devices = filters.each_with_index.map do |(id, mask), i|
+          plan_device("dev#{format('%02d', i)}", true, 'can_id' => [id, mask])
+        end
+        devices << plan_device('sync', false, 'can_id' => [0x080, 0x7FF])
+        devices << plan_device('heartbeat', false, {})
+        devices.first(DEVICES)
+      end
+
+      def plan_device(name, bus_to_client, attributes)
+        Network::Plan::Device.new(name: name, bus: 'can0', bus_to_client: bus_to_client, client_to_bus: true,
+                                  attributes: attributes)
+      end
+
+      # 600 distinct keys: 70 % standard, 30 % extended, some unclaimed.
+      def id_pool(random)
+        standard = Array.new(420) { random.rand(0x800) }
+        extended = Array.new(180) { (random.rand(4).zero? ? random.rand(0x2000_0000) : 0x18FE_F000 + random.rand(0x1_1000)) }
+        (standard + extended.map { |id| id | Syskit::Bus::Frame::EFF_FLAG }).uniq
+      end
+
+      def write_log(path, keys, random)
+        time = 1_436_509_053_000_000
+        File.open(path, 'w') do |f|
+          keys.each do |key|
+            time += 50 + random.rand(100)
+            f.write(format('(%<s>010d.%<us>06d) can0 %<frame>s', s: time / 1_000_000, us: time % 1_000_000,
+                                                                  frame: frame_text(key, random)), "\n")
+          end
+        end
+      end
+
+      def frame_text(key, random)
+        id = Syskit::Bus::Frame.key_to_s(key)
+        kind = random.rand(100)
+        return "#{id}#R" if kind.zero?
+        return "#{id}##1#{'AB' * 12}" if kind < 3
+
+        "#{id}##{'5A' * random.rand(9)}"
+      end
+
+      def print_table(io, frames, dispatcher, pool, results)
+        io.puts "bus replay: #{frames} frames, #{DEVICES} devices (#{dispatcher.mask_count} distinct masks), " \
+                "#{pool} distinct ids, log #{format('%.1f', results[:log_mb])} MB"
+        rows = [['dispatch (cached)', results[:dispatch], TARGETS[:dispatch]],
+                ['dispatch (per-mask lookup only)', results[:dispatch_uncached], TARGETS[:dispatch]],
+                ['end to end (parse + count + report)', results[:end_to_end], TARGETS[:end_to_end]]]
+        io.puts format('  %-38<what>s %12<rate>s  %10<target>s', what: 'measure', rate: 'frames/s', target: 'target')
+        rows.each do |what, value, target|
+          io.puts format('  %-38<what>s %12<rate>d  %10<target>d  %<ok>s', what: what, rate: value, target: target,
+                                                                              ok: value >= target ? 'ok' : 'BELOW TARGET')
+        end
+      end
+    end
+  end
+end
+
+Syskit::Bench::Replay.run($stdout, frames: Integer(ARGV.first || Syskit::Bench::Replay::FRAMES)) if $PROGRAM_NAME == __FILE__

@@ -1,0 +1,73 @@
+# frozen_string_literal: true
+
+require 'syskit/bus/errors'
+require 'syskit/bus/candump_log'
+require 'syskit/bus/traffic'
+require 'syskit/bus/report'
+require 'syskit/bus/progress'
+
+module Syskit
+  module Bus
+    # `syskit bus replay`: reads a candump log and reports what each device
+    # of a bus would have received.
+    class Replay
+      # Lines between two progress updates; a power of two keeps the check cheap.
+      PROGRESS_EVERY = 1 << 14
+
+      attr_reader :log
+
+      # +dispatcher+: the bus (Dispatcher); +path+: the candump log;
+      # +interface+: the log interface to read (default: the first seen);
+      # +source+: what the report says about the plan (profile, robot).
+      def initialize(dispatcher, path, interface: nil, source: {}, progress_out: $stderr)
+        @dispatcher = dispatcher
+        @path = path
+        @log = CandumpLog.new(path, interface: interface)
+        @source = source
+        @progress_out = progress_out
+      end
+
+      # Reads the whole log; returns the Report. With +strict+, a malformed
+      # line raises a LogError located at the first one.
+      def run(strict: false)
+        traffic = Traffic.new
+        File.open(@path, 'rb') do |io|
+          progress = Progress.for(io.size, out: @progress_out)
+          begin
+            log.each_frame(io) do |frame|
+              traffic.add(frame)
+              progress.update(io.pos, traffic.frames) if progress && (traffic.frames % PROGRESS_EVERY).zero?
+            end
+          ensure
+            progress&.finish
+          end
+        end
+        raise strict_error if strict && log.malformed_count.positive?
+
+        Report.new(@dispatcher, traffic, source: source_info)
+      rescue SystemCallError, IOError => e
+        raise LogError.new("cannot read #{@path}: #{e.message}", hint: 'give the path of a log written by candump -l')
+      end
+
+      private
+
+      def source_info
+        others = log.interfaces.reject { |name, _| name == log.interface }.sort.to_h
+        @source.merge(
+          'log' => @path, 'interface' => log.interface, 'other_interfaces' => others, 'lines' => log.lines,
+          'malformed' => { 'count' => log.malformed_count,
+                           'lines' => log.malformed.map { |m| { 'line' => m.lineno, 'message' => m.message, 'text' => m.text } } }
+        )
+      end
+
+      def strict_error
+        first = log.malformed.first
+        more = log.malformed_count - 1
+        LogError.new("malformed candump line: #{first.message}#{" (and #{more} more malformed #{more == 1 ? 'line' : 'lines'})" if more.positive?}",
+                     location: Location.new(File.expand_path(@path), first.lineno),
+                     hint: 'lines look like "(1436509053.249713) can0 123#DEADBEEF" (candump -l); ' \
+                           'without --strict, malformed lines are skipped and reported')
+      end
+    end
+  end
+end

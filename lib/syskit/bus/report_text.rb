@@ -1,0 +1,128 @@
+# frozen_string_literal: true
+
+require 'syskit/bus/report'
+
+module Syskit
+  module Bus
+    # Renders a Report for a terminal: a table per device, then the ids no
+    # device receives, the ids several devices receive and the malformed
+    # lines. Times are seconds after the first frame seen.
+    module ReportText
+      STATUS_NOTES = {
+        write_only: 'write-only (bus_to_client: false): receives nothing',
+        no_filter: 'no can_id filter: receives nothing by filter'
+      }.freeze
+      DEVICE_HEADER = ['Device', 'Filter', 'Frames', 'IDs', 'First (s)', 'Last (s)', 'Rate (/s)'].freeze
+      ID_HEADER = ['ID', 'Frames', 'First (s)', 'Last (s)'].freeze
+      # Columns aligned right (numbers), by header.
+      RIGHT = ['Frames', 'IDs', 'First (s)', 'Last (s)', 'Rate (/s)'].freeze
+
+      module_function
+
+      # The report as text; +recent+ (device name => frames/s) adds the
+      # monitor's "last interval" column.
+      def render(report, recent: nil)
+        [header(report), devices(report, recent), unclaimed(report), overlaps(report), malformed(report)]
+          .compact.join("\n")
+      end
+
+      def header(report)
+        src = report.source
+        t = report.traffic
+        lines = ["Bus #{report.bus}#{" of #{src['profile']}" if src['profile']}#{" (robot #{src['robot']})" if src['robot']}"]
+        from = [src['log'] && "log #{src['log']}", src['interface'] && "interface #{src['interface']}"].compact.join(', ')
+        span = report.duration ? format(' in %.3f s', report.duration) : ''
+        lines << "#{from}: #{t.frames} frames#{span}"
+        lines << "  standard #{t.standard}, extended #{t.extended}, CAN FD #{t.fd}, RTR #{t.rtr}, error frames #{t.errors}"
+        others = src['other_interfaces']
+        if others&.any?
+          lines << "  skipped frames of other interfaces: #{others.map { |i, n| "#{i} (#{n})" }.join(', ')} " \
+                   '(choose one with --interface)'
+        end
+        "#{lines.join("\n")}\n"
+      end
+
+      def devices(report, recent)
+        head = recent ? DEVICE_HEADER + ['Now (/s)'] : DEVICE_HEADER
+        rows = report.devices.map do |d|
+          note = STATUS_NOTES[d.status]
+          next [d.name, note] if note
+
+          row = [d.name, filter(d.filter), d.frames.to_s, d.keys.size.to_s,
+                 time(report, d.first), time(report, d.last), number(d.rate)]
+          recent ? row + [number(recent[d.name])] : row
+        end
+        table(head, rows)
+      end
+
+      def unclaimed(report)
+        rows = report.unclaimed
+        title = "Frames no device receives: #{count(rows)}"
+        return "#{title}\n" if rows.empty?
+
+        "#{title}\n#{table(ID_HEADER, rows.map { |r| id_cells(report, r) }, indent: '  ')}"
+      end
+
+      def overlaps(report)
+        rows = report.overlaps
+        title = "Frames several devices receive: #{count(rows)}"
+        return "#{title}\n" if rows.empty?
+
+        body = rows.map { |r| id_cells(report, r) + [r.devices.join(', ')] }
+        "#{title}\n#{table(ID_HEADER + ['Devices'], body, indent: '  ')}"
+      end
+
+      def malformed(report)
+        info = report.source['malformed']
+        return unless info && info['count'].positive?
+
+        shown = info['lines'].map { |l| "  #{report.source['log']}:#{l['line']}: #{l['message']}\n    #{l['text']}" }
+        more = info['count'] - shown.size
+        shown << "  ... and #{more} more" if more.positive?
+        "Malformed lines: #{info['count']}\n#{shown.join("\n")}\n"
+      end
+
+      def count(rows)
+        return 'none' if rows.empty?
+
+        "#{rows.size} #{rows.size == 1 ? 'id' : 'ids'}, #{rows.sum(&:frames)} frames"
+      end
+
+      def id_cells(report, row)
+        [Frame.key_to_s(row.key), row.frames.to_s, time(report, row.first), time(report, row.last)]
+      end
+
+      def filter(filter)
+        return format('%<id>03X/%<mask>03X', id: filter.id, mask: filter.mask) unless filter.extended?
+
+        format('%<id>08X/%<mask>08X ext', id: filter.id, mask: filter.mask)
+      end
+
+      def time(report, value)
+        value ? format('%.3f', Report.seconds(value - report.traffic.first_time)) : '-'
+      end
+
+      def number(value)
+        value ? format('%.1f', value) : '-'
+      end
+
+      # Rows of cells in aligned columns; a row shorter than the header ends
+      # with a note that spans the remaining columns.
+      def table(head, rows, indent: '')
+        widths = head.map(&:size)
+        rows.each do |row|
+          # A note spans columns: only the name before it counts for widths.
+          row.first(row.size == head.size ? row.size : 1).each_with_index { |c, i| widths[i] = [widths[i], c.size].max }
+        end
+        [head, *rows].map do |row|
+          cells = row.each_with_index.map do |cell, i|
+            next cell if row.size < head.size && i == row.size - 1
+
+            RIGHT.include?(head[i]) ? cell.rjust(widths[i]) : cell.ljust(widths[i])
+          end
+          "#{indent}#{cells.join('  ').rstrip}\n"
+        end.join
+      end
+    end
+  end
+end

@@ -1,0 +1,145 @@
+# frozen_string_literal: true
+
+require 'json'
+require 'syskit/bus/dispatcher'
+require 'syskit/bus/replay'
+require 'syskit/bus/report_text'
+
+module Syskit
+  class CLI < Thor
+    # `syskit bus replay|monitor`: bus traffic seen through a profile's plan,
+    # from a candump log or live from a SocketCAN interface.
+    class Bus < Thor
+      def self.exit_on_failure?
+        true
+      end
+
+      class_option :trace, type: :boolean, default: false, desc: 'show the backtrace of errors'
+      class_option :app, type: :string, desc: 'the app directory'
+      class_option :robot, type: :string, default: 'default', desc: 'the robot configuration (config/robots/NAME.rb)'
+      class_option :bus, type: :string, desc: 'the bus device of the plan (default: the only bus with devices)'
+
+      desc 'replay PROFILE LOGFILE', 'what each device of a bus receives from a candump log'
+      long_desc <<~TEXT
+        Reads a candump log (candump -l or -L) and reports, per device attached
+        to the bus in PROFILE's plan: the frames it receives by its can_id filter,
+        the distinct ids, the first and last time and the mean rate; then the
+        frames no device receives and those several devices receive.
+
+        A filter whose id or mask exceeds 0x7FF is extended: it only matches
+        extended (8-digit) ids; other filters only match standard (3-digit) ids.
+
+        Malformed lines are counted and reported; --strict makes them an error.
+
+        Example: syskit bus replay Live::Base --bus can0 logs/can0.log
+      TEXT
+      method_option :interface, type: :string, desc: 'the interface of the log to read (default: the first one in the log)'
+      method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
+      method_option :strict, type: :boolean, default: false, desc: 'fail on malformed lines'
+      def replay(profile_name, log_path)
+        with_plan(profile_name) do |dispatcher, source|
+          replay = ::Syskit::Bus::Replay.new(dispatcher, log_path, interface: options[:interface], source: source)
+          print_report(replay.run(strict: options[:strict]))
+        end
+      end
+
+      desc 'monitor PROFILE --interface IFACE', 'watch a live SocketCAN bus through the devices of a plan'
+      long_desc <<~TEXT
+        Opens the SocketCAN interface IFACE (Linux, classic and CAN FD frames)
+        and shows the replay table of the bus, refreshed every --interval
+        seconds, until Ctrl-C (or --duration seconds). The "Now" column is the
+        rate during the last interval.
+
+        A virtual bus to try it:
+          sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set up vcan0
+
+        Example: syskit bus monitor Live::Base --bus can0 --interface vcan0
+      TEXT
+      method_option :interface, type: :string, required: true, desc: 'the SocketCAN interface (can0, vcan0...)'
+      method_option :interval, type: :numeric, default: 1.0, desc: 'seconds between two refreshes'
+      method_option :duration, type: :numeric, desc: 'stop after this many seconds'
+      method_option :format, type: :string, default: 'text', enum: %w[text json],
+                             desc: 'json prints the final report only'
+      def monitor(profile_name)
+        require 'syskit/bus/monitor'
+        with_plan(profile_name) do |dispatcher, source|
+          io = ::Syskit::Bus::SocketCAN.open(options[:interface])
+          monitor = ::Syskit::Bus::Monitor.new(dispatcher, io, source: source.merge('interface' => options[:interface]),
+                                                               out: $stdout, interval: options[:interval],
+                                                               live: options[:format] == 'text')
+          print_report(monitor.run(duration: options[:duration]))
+        ensure
+          io&.close
+        end
+      end
+
+      private
+
+      # Loads the app, generates PROFILE's plan and yields the dispatcher of
+      # --bus with what the report says about its source; errors are
+      # printed as by the main CLI (file:line: message, hint).
+      def with_plan(profile_name)
+        app = App.new(app_root)
+        begin
+          app.load!(robots: [options[:robot]])
+          profile = find_profile(app, profile_name)
+          plan = Network::Generator.plan_profile(app, profile, robot: options[:robot]).plan
+          bus = options[:bus] || only_bus(plan)
+          yield ::Syskit::Bus::Dispatcher.from_plan(plan, bus), { 'profile' => plan.profile, 'robot' => plan.robot }
+        ensure
+          app.unload
+        end
+      rescue Syskit::Error => e
+        report_error(e, app&.root)
+      rescue StandardError, ScriptError => e
+        # A bug of syskit itself: say so, without a backtrace unless asked.
+        report_error(Error.new("internal error: #{e.class}: #{e.message}",
+                               hint: 'this is a bug in syskit; run again with --trace and report the backtrace')
+                          .tap { |err| err.set_backtrace(e.backtrace) }, app&.root)
+      end
+
+      def print_report(report)
+        if options[:format] == 'json'
+          puts ::JSON.pretty_generate(report.to_h)
+        else
+          $stdout.write(::Syskit::Bus::ReportText.render(report))
+        end
+      end
+
+      def only_bus(plan)
+        buses = plan.devices.filter_map(&:bus).uniq.sort
+        return buses.first if buses.size == 1
+
+        raise UnknownName.new("the plan of #{plan.profile} has #{buses.empty? ? 'no bus with devices' : 'several buses'}",
+                              hint: buses.empty? ? 'attach devices to a bus with through' : "choose one with --bus (#{buses.join(', ')})")
+      end
+
+      def app_root
+        return File.expand_path(options[:app]) if options[:app]
+
+        found = App.find_root(Dir.pwd)
+        found && found != CLI::GEM_ROOT ? found : CLI::EXAMPLE_APP
+      end
+
+      def find_profile(app, name)
+        profiles = app.profiles.values.sort_by(&:name)
+        matches = profiles.select { |p| p.name == name || p.name.end_with?("::#{name}") }
+        return matches.first if matches.size == 1
+
+        names = profiles.map(&:name)
+        raise UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, names)}", hint: "profiles: #{names.join(', ')}") if matches.empty?
+
+        raise UnknownName.new("'#{name}' names several profiles: #{matches.map(&:name).join(', ')}", hint: 'give more of the name')
+      end
+
+      def report_error(error, root)
+        warn error.report(root)
+        warn (error.backtrace || []).map { |l| "    #{l}" }.join("\n") if options[:trace]
+        exit(1)
+      end
+    end
+
+    desc 'bus SUBCOMMAND', 'bus traffic through a plan: replay a candump log, monitor a live SocketCAN bus'
+    subcommand 'bus', Bus
+  end
+end

@@ -47,6 +47,13 @@ module Syskit
       @values.key?(name.to_s)
     end
 
+    # Why properties.+name+ does not exist, for typos in configure methods.
+    def explain_missing(name)
+      name = name.delete_suffix('=')
+      ["#{self.class.task_model.name} has no property '#{name}'#{Naming.did_you_mean(name, names)}",
+       "its properties are #{names.sort.join(', ').then { |s| s.empty? ? '(none)' : s }}"]
+    end
+
     def names
       @values.keys
     end

@@ -97,16 +97,18 @@ module Syskit
         raise ConfigurationError.new('a configuration section must map property names to values',
                                      location: Location.new(path, header_line + 1), hint: 'write property: value lines')
       rescue Psych::DisallowedClass, Psych::BadAlias => e
-        raise ConfigurationError.new("refused: #{e.message}", location: yaml_location(e, header_line),
+        marker = e.is_a?(Psych::BadAlias) ? /[&*]\w/ : /!/
+        raise ConfigurationError.new("refused: #{e.message}", location: line_of(marker, text, header_line),
                                                                hint: 'configuration files hold plain data: no tags, no aliases')
       rescue Psych::SyntaxError => e
         raise ConfigurationError.new("invalid YAML: #{e.problem}", location: Location.new(path, e.line),
                                                                     hint: 'fix the YAML syntax at this line')
       end
 
-      def yaml_location(error, header_line)
-        line = error.message[/line (\d+)/, 1]
-        Location.new(path, line ? Integer(line) : header_line)
+      # The first line of a section's +text+ matching +marker+.
+      def line_of(marker, text, header_line)
+        offset = text.lines.index { |l| l.match?(marker) }
+        Location.new(path, offset ? header_line + 1 + offset : header_line)
       end
 
       def unknown_section(name, location)

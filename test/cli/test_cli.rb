@@ -1,0 +1,120 @@
+# frozen_string_literal: true
+
+require 'helper'
+require 'json'
+require 'open3'
+require 'rbconfig'
+
+module Syskit
+  # bin/syskit as users run it (SPEC 10).
+  class TestCLI < Minitest::Test
+    EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
+    BACKTRACE = /\.rb:\d+:in `/.freeze
+
+    def test_version_and_help
+      out, = run_cli('version')
+      assert_equal "syskit #{VERSION}\n", out
+      out, = run_cli('help', 'plan')
+      assert_match(/Example: syskit plan Live::Base temperature_sensor_dev --format json/, out)
+    end
+
+    def test_plan_defaults_to_the_example_app_outside_an_app
+      out, err, status = run_cli('plan', chdir: Dir.tmpdir)
+      assert_equal 0, status, err
+      assert_match(/^Plan of AwesomeRobot::Profiles::Live::Base/, out)
+    end
+
+    def test_plan_uses_the_app_of_the_current_directory
+      out, err, status = run_cli('plan', chdir: fixture('seed', 'can_bus', 'models'))
+      assert_equal 0, status, err
+      assert_match(/^Plan of MyApp::Profiles::Base/, out)
+    end
+
+    def test_plan_of_a_profile_by_short_name_and_actions
+      out, err, status = run_cli('plan', 'Live::Base', 'gps_dev', 'can0', '--app', EXAMPLE, '--format', 'json')
+      assert_equal 0, status, err
+      assert_equal %w[can0 gps], JSON.parse(out)['tasks'].map { |t| t['name'] }
+    end
+
+    def test_unknown_profile
+      _, err, status = run_cli('plan', 'Bsae', '--app', EXAMPLE)
+      assert_equal 1, status
+      assert_equal "no profile named 'Bsae'\n  hint: profiles: AwesomeRobot::Profiles::Live::Base\n", err
+    end
+
+    def test_errors_are_one_located_message_with_a_hint_and_no_backtrace
+      root = my_app("device(Devices::IMU, as: 'imu')\n", 'config/robots/default.rb' => "# nothing\n")
+      out, err, status = run_cli('plan', '--app', root)
+      assert_equal 1, status
+      assert_empty out
+      lines = err.lines
+      assert_equal "models/profiles/base.rb:9: no deployed task can run imu::Task, the driver of device 'imu', " \
+                   "on robot 'default'\n", lines[0]
+      assert_match(/\A  hint: add to config/, lines[1])
+      refute_match BACKTRACE, err
+      _, err, = run_cli('plan', '--app', root, '--trace')
+      assert_match BACKTRACE, err
+    end
+
+    def test_an_unknown_robot_configuration
+      _, err, status = run_cli('plan', '--app', EXAMPLE, '--robot', 'sim')
+      assert_equal 1, status
+      assert_match(%r{\Aconfig/robots/sim.rb:0: no configuration for robot 'sim'}, err)
+    end
+
+    def test_check_passes_on_the_example_app
+      out, err, status = run_cli('check', '--app', EXAMPLE)
+      assert_equal 0, status, "#{out}#{err}"
+      assert_equal "AwesomeRobot: 0 error(s), 0 warning(s)\n", out
+    end
+
+    OVERLAP = <<~RUBY
+      com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+      through 'can0' do
+        device(Devices::TemperatureSensor, as: 'a').can_id(0x100, 0x700)
+        device(Devices::TemperatureSensor, as: 'b').can_id(0x120, 0x7f0)
+        device(Devices::TemperatureSensor, as: 'c').can_id(0x200, 0x7ff)
+      end
+    RUBY
+
+    def overlap_app
+      my_app(OVERLAP + "device(Devices::IMU, as: 'imu', using: OroGen.temp.Task)\n",
+             'config/robots/default.rb' => "Syskit.conf.use_deployment 'test_canbus'\n",
+             'config/robots/sim.rb' => "Syskit.conf.use_deployment 'test_canbus'\n")
+    end
+
+    def test_check_reports_every_problem_grouped_by_file_with_a_count
+      out, _, status = run_cli('check', '--app', overlap_app)
+      assert_equal 1, status
+      lines = out.lines
+      assert_match(%r{\Amodels/profiles/base.rb:12: warning: device 'a' \(id 0x100 mask 0x700\) and device 'b' \(id 0x120 mask 0x7F0\) on bus 'can0' have overlapping filters}, lines[0])
+      assert_match(/^  hint: narrow one of the masks/, lines[1])
+      assert_match(%r{^models/profiles/base.rb:15: temp::Task does not drive MyApp::Devices::IMU}, out)
+      assert_equal "MyApp: 1 error(s), 1 warning(s)\n", lines.last
+      refute_match BACKTRACE, out
+    end
+
+    def test_check_json_and_strict
+      robot = OVERLAP.gsub(/as: '(\w)'\)(.*)$/) { "as: '#{$1}')#{$2}.prefer_deployed_tasks('#{$1}')" }
+      root = my_app(robot, 'config/robots/default.rb' => "using_task_library 'temp'\nSyskit.conf.use_deployment 'test_canbus'\n" \
+                                                         "%w[a b c].each { |n| Syskit.conf.use_deployment OroGen.temp.Task => n }\n")
+      out, err, status = run_cli('check', '--app', root)
+      assert_equal 0, status, "#{out}#{err}"
+      assert_match(/0 error\(s\), 1 warning\(s\)/, out)
+      _, _, status = run_cli('check', '--app', root, '--strict')
+      assert_equal 1, status
+      out, = run_cli('check', '--app', root, '--format', 'json')
+      doc = JSON.parse(out)
+      assert_equal [0, 1], doc.values_at('errors', 'warnings')
+      assert_equal({ 'file' => 'models/profiles/base.rb', 'line' => 12, 'severity' => 'warning' },
+                   doc['problems'].first.slice('file', 'line', 'severity'))
+    end
+
+    def test_exit_status_of_the_real_executable
+      _, err, status = Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'plan', 'Nope',
+                                      '--app', EXAMPLE)
+      assert_equal 1, status.exitstatus
+      assert_match(/no profile named 'Nope'/, err)
+    end
+  end
+end

@@ -1,0 +1,68 @@
+# frozen_string_literal: true
+
+require 'helper'
+require 'json'
+require 'open3'
+
+module Syskit
+  # The plan as text, JSON and DOT (SPEC 9).
+  class TestRender < Minitest::Test
+    EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
+
+    def example_plan
+      app = load_app(EXAMPLE)
+      Network::Generator.plan_profile(app, AwesomeRobot::Profiles::Live::Base.syskit_profile).plan
+    end
+
+    def test_json_has_the_keys_of_the_spec
+      doc = JSON.parse(Render::JSON.render(example_plan))
+      assert_equal %w[profile robot tasks devices connections order], doc.keys
+      assert_equal 'AwesomeRobot::Profiles::Live::Base', doc['profile']
+      assert_equal 'default', doc['robot']
+      can0 = doc['tasks'].find { |t| t['name'] == 'can0' }
+      assert_equal %w[name model deployment devices conf properties ports depends_on], can0.keys
+      assert_equal ['canbus::Task', 'test_canbus', ['can0'], ['default']],
+                   can0.values_at('model', 'deployment', 'devices', 'conf')
+      assert_includes can0['ports'], { 'name' => 'temperature_sensor', 'direction' => 'output',
+                                       'type' => '/canbus/Message', 'dynamic' => true }
+      assert_includes doc['connections'], { 'from' => { 'task' => 'can0', 'port' => 'temperature_sensor' },
+                                            'to' => { 'task' => 'temperature_sensor', 'port' => 'can_in' },
+                                            'type' => '/canbus/Message', 'policy' => { 'type' => 'buffer', 'size' => 2 } }
+      assert_equal({ 'step' => 'configure', 'task' => 'aft_camera' }, doc['order'].first)
+    end
+
+    def test_generating_twice_gives_byte_identical_json
+      first, = run_cli('plan', '--app', EXAMPLE, '--format', 'json')
+      second, = run_cli('plan', '--app', EXAMPLE, '--format', 'json')
+      refute_empty first
+      assert_equal first, second
+    end
+
+    def test_the_plan_is_a_frozen_value
+      plan = example_plan
+      assert plan.frozen?
+      assert plan.tasks.first.frozen?
+      assert plan.tasks.first.properties.frozen?
+      assert_raises(FrozenError) { plan.tasks << nil }
+    end
+
+    def test_dot_is_accepted_by_graphviz
+      dot = Render::Dot.render(example_plan)
+      assert_match(/\Adigraph "AwesomeRobot::Profiles::Live::Base" \{/, dot)
+      assert_match(/"can0" -> "temperature_sensor" \[label="temperature_sensor -> can_in\\nbuffer 2"\];/, dot)
+      skip 'graphviz (dot) is not installed' unless system('command -v dot >/dev/null 2>&1')
+
+      svg, err, status = Open3.capture3('dot', '-Tsvg', stdin_data: dot)
+      assert status.success?, err
+      assert_match(/<svg/, svg)
+    end
+
+    def test_text_lists_tasks_connections_and_order
+      text = Render::Text.render(example_plan)
+      assert_match(/^Plan of AwesomeRobot::Profiles::Live::Base on robot 'default'$/, text)
+      assert_match(/^  can0  canbus::Task  \(deployment test_canbus, conf default\)$/, text)
+      assert_match(%r{^  can0\.temperature_sensor +-> temperature_sensor\.can_in +/canbus/Message  buffer 2$}, text)
+      assert_match(/^   2\. configure can0$/, text)
+    end
+  end
+end

@@ -123,9 +123,10 @@ module Syskit
         model
       end
 
-      # A driver for +model+ with no ports.
+      # A driver for +model+, with the ports of the model.
       def device_driver(model)
-        task_model("stub_driver_for_#{model_slug(model)}") do |task|
+        ports = model.ports.values.map { |p| Syskit::Port.new(p.name, p.direction, p.type) }
+        task_model("stub_driver_for_#{model_slug(model)}", ports: ports) do |task|
           task.driver_for(model, as: 'dev')
         end
       end

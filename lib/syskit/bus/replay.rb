@@ -34,9 +34,8 @@ module Syskit
         File.open(@path, 'rb') do |io|
           progress = Progress.for(io.size, out: @progress_out)
           begin
-            log.each_frame(io) do |frame|
-              traffic.add(frame)
-              progress.update(io.pos, traffic.frames) if progress && (traffic.frames % PROGRESS_EVERY).zero?
+            log.read(io, traffic) do
+              progress.update(io.pos, traffic.frames) if progress && (log.lines % PROGRESS_EVERY).zero?
             end
           ensure
             progress&.finish
@@ -52,7 +51,7 @@ module Syskit
       private
 
       def source_info
-        others = log.interfaces.reject { |name, _| name == log.interface }.sort.to_h
+        others = log.other_interfaces.sort.to_h
         @source.merge(
           'log' => @path, 'interface' => log.interface, 'other_interfaces' => others, 'lines' => log.lines,
           'malformed' => { 'count' => log.malformed_count,

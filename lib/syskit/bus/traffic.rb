@@ -4,12 +4,13 @@ require 'syskit/bus/frame'
 
 module Syskit
   module Bus
-    # Counts of the frames seen on a bus, per frame key (id + extended flag).
+    # Counts of the frames seen on a bus, per frame key (Frame.key: id +
+    # extended flag).
     #
     # Frames are counted per key and dispatched once per distinct key when
     # the report is built, not once per frame: every figure of the report
     # (per device frames, ids, first/last time; unclaimed and overlapping
-    # ids) is a sum, min or max over keys.
+    # ids) is a sum, min or max over keys. Times are in microseconds.
     class Traffic
       # Frames of one key: how many, and the time of the first and last.
       IdStats = Struct.new(:count, :first, :last)
@@ -29,30 +30,39 @@ module Syskit
 
       # Counts +frame+ (a Frame).
       def add(frame)
-        @frames += 1
-        time = frame.time
-        if time
-          @first_time = time if @first_time.nil? || time < @first_time
-          @last_time = time if @last_time.nil? || time > @last_time
-        end
-        return @errors += 1 if frame.error?
+        return count_error(frame.time) if frame.error?
 
-        @extended += 1 if frame.extended?
-        @fd += 1 if frame.fd?
-        @rtr += 1 if frame.rtr?
-        add_key(frame.key, time)
+        count(frame.key, frame.time, frame.extended?, frame.fd?, frame.rtr?)
       end
 
-      # Counts one frame of +key+ at +time+.
-      def add_key(key, time)
+      # Counts one frame of +key+ received at +time+ (microseconds, or nil).
+      def count(key, time, extended, fd, rtr)
+        @frames += 1
+        @extended += 1 if extended
+        @fd += 1 if fd
+        @rtr += 1 if rtr
         stats = @ids[key]
         if stats
           stats.count += 1
-          stats.first = time if time && (stats.first.nil? || time < stats.first)
-          stats.last = time if time && (stats.last.nil? || time > stats.last)
+          return unless time
+
+          # Logs are in time order: the last frame is the latest, except in
+          # logs merged from several sources.
+          if stats.last.nil? then stats.first = stats.last = time
+          elsif time >= stats.last then stats.last = time
+          elsif time < stats.first then stats.first = time
+          end
         else
           @ids[key] = IdStats.new(1, time, time)
         end
+        span(time) if time
+      end
+
+      # Counts an error frame: in the totals, never dispatched.
+      def count_error(time)
+        @frames += 1
+        @errors += 1
+        span(time) if time
       end
 
       # Frames that are not error frames.
@@ -62,6 +72,15 @@ module Syskit
 
       def standard
         data_frames - @extended
+      end
+
+      private
+
+      def span(time)
+        if @last_time.nil? then @first_time = @last_time = time
+        elsif time >= @last_time then @last_time = time
+        elsif time < @first_time then @first_time = time
+        end
       end
     end
   end

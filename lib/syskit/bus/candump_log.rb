@@ -115,8 +115,11 @@ module Syskit
       def parse(line)
         CandumpLine.parse(line)
       rescue CandumpLine::Malformed => e
+        # Only the last line of a file can lack its end of line: a log cut
+        # short while candump was writing it.
+        message = line.end_with?("\n") ? e.message : "last line cut short (no end of line): #{e.message}"
         @malformed_count += 1
-        @malformed << Malformed.new(@lines, e.message, line.chomp) if @malformed.size < KEEP_MALFORMED
+        @malformed << Malformed.new(@lines, message, line.chomp) if @malformed.size < KEEP_MALFORMED
         nil
       end
 

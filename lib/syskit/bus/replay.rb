@@ -63,7 +63,7 @@ module Syskit
         first = log.malformed.first
         more = log.malformed_count - 1
         LogError.new("malformed candump line: #{first.message}#{" (and #{more} more malformed #{more == 1 ? 'line' : 'lines'})" if more.positive?}",
-                     location: Location.new(File.expand_path(@path), first.lineno),
+                     location: Location.new(@path, first.lineno),
                      hint: 'lines look like "(1436509053.249713) can0 123#DEADBEEF" (candump -l); ' \
                            'without --strict, malformed lines are skipped and reported')
       end

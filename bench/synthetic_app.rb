@@ -1,0 +1,162 @@
+# frozen_string_literal: true
+
+require 'fileutils'
+
+module Syskit
+  module Bench
+    # Writes a real app with +devices+ devices spread over CAN buses of 32
+    # devices each, for the benchmark:
+    # - even buses use the bundled demultiplexing canbus::Task (configure +
+    #   stub), odd buses a driver that does not demultiplex (BusSrv);
+    # - four device models and drivers: bidirectional (two of them), read-only
+    #   and write-only;
+    # - every device told apart from the others of its model by
+    #   prefer_deployed_tasks and given its own configuration sections;
+    # - a robot configuration that deploys everything.
+    class SyntheticApp
+      PER_BUS = 32
+      KINDS = [
+        { model: 'Thermometer', task: 'ThermometerTask', options: '' },
+        { model: 'Pressure', task: 'PressureTask', options: ', client_to_bus: false' },
+        { model: 'Motor', task: 'MotorTask', options: '' },
+        { model: 'Sync', task: 'SyncTask', options: ', bus_to_client: false' }
+      ].freeze
+
+      def self.write(dir, devices)
+        new(dir, devices).write
+      end
+
+      def initialize(dir, devices)
+        @dir = dir
+        @devices = devices
+        @buses = (devices + PER_BUS - 1) / PER_BUS
+      end
+
+      def write
+        file('config/syskit.yml', "name: Bench\nacronyms: [CAN]\n")
+        file('models/devices/sensors.rb', devices_file)
+        file('models/orogen/bench.orogen', spec_file)
+        file('models/orogen/bench.rb', extension_file)
+        file('config/orogen/bench::MotorTask.yml', conf_file('gain'))
+        file('config/orogen/bench::ThermometerTask.yml', conf_file('threshold'))
+        file('config/orogen/canbus::Task.yml', "--- name:default\ndeviceType: SOCKET\n")
+        file('models/profiles/base.rb', profile_file)
+        file('config/robots/default.rb', robot_file)
+        @dir
+      end
+
+      private
+
+      def file(path, content)
+        full = File.join(@dir, path)
+        FileUtils.mkdir_p(File.dirname(full))
+        File.write(full, content)
+      end
+
+      def devices_file
+        models = KINDS.map { |k| "    device_type '#{k[:model]}'" }.join("\n")
+        "module Bench\n  module Devices\n#{models}\n  end\nend\n"
+      end
+
+      def spec_file
+        <<~RUBY
+          name 'bench'
+          import_types_from 'canbus'
+
+          task_context 'ThermometerTask' do
+            property 'threshold', 'double', 1.0
+            input_port('can_in', '/canbus/Message').needs_reliable_connection
+            output_port 'can_out', '/canbus/Message'
+            output_port 'temperature', '/double'
+          end
+
+          task_context 'PressureTask' do
+            input_port 'can_in', '/canbus/Message'
+            output_port 'pressure', '/double'
+          end
+
+          task_context 'MotorTask' do
+            property 'can_id', 'int'
+            property 'can_mask', 'int'
+            property 'gain', 'double', 1.0
+            input_port('can_in', '/canbus/Message').needs_reliable_connection
+            output_port 'can_out', '/canbus/Message'
+          end
+
+          task_context 'SyncTask' do
+            output_port 'can_out', '/canbus/Message'
+          end
+
+          # A bus driver that does not demultiplex.
+          task_context 'BusTask' do
+            input_port('can_in', '/canbus/Message').multiplexes.needs_reliable_connection
+            output_port 'can_out', '/canbus/Message'
+          end
+        RUBY
+      end
+
+      def extension_file
+        drivers = KINDS.map do |k|
+          "Syskit.extend_model OroGen.bench.#{k[:task]} do\n  driver_for Bench::Devices::#{k[:model]}, as: 'dev'\nend\n"
+        end
+        <<~RUBY
+          require 'models/devices/sensors'
+
+          #{drivers.join("\n")}
+          Syskit.extend_model OroGen.bench.MotorTask do
+            def configure
+              super
+              properties.can_id, properties.can_mask = dev_dev.can_id
+            end
+          end
+
+          Syskit.extend_model OroGen.bench.BusTask do
+            provides CommonModels::Devices::Bus::CAN::BusSrv, as: 'bus'
+          end
+        RUBY
+      end
+
+      # A default section and eight more (gain for motors, threshold for
+      # thermometers; the other property is unknown to the other model, so
+      # each file only sets its own).
+      def conf_file(property)
+        sections = (0...8).map { |s| "--- name:s#{s}\n#{property}: #{s + 1}.5\n" }
+        "--- name:default\n#{property}: 1.0\n#{sections.join}"
+      end
+
+      def profile_file
+        out = +"using_task_library 'canbus'\nusing_task_library 'bench'\n\nmodule Bench\n  module Profiles\n" \
+               "    profile 'Base' do\n      robot do\n"
+        @buses.times do |b|
+          driver = b.even? ? 'OroGen.canbus.Task' : 'OroGen.bench.BusTask'
+          out << "        com_bus(CommonModels::Devices::Bus::CAN, as: 'can#{b}', using: #{driver})" \
+                 ".prefer_deployed_tasks('can#{b}')\n"
+          out << "        through 'can#{b}' do\n"
+          (b * PER_BUS...[(b + 1) * PER_BUS, @devices].min).each { |i| out << device_line(i) }
+          out << "        end\n"
+        end
+        out << "      end\n    end\n  end\nend\n"
+      end
+
+      def device_line(index)
+        kind = KINDS[index % KINDS.size]
+        conf = kind[:model] == 'Motor' || kind[:model] == 'Thermometer' ? ".with_conf('default', 's#{index % 8}')" : ''
+        "          device(Devices::#{kind[:model]}, as: 'dev#{index}'#{kind[:options]})" \
+          ".can_id(0x#{(0x100 + (index % PER_BUS)).to_s(16)}, 0x7ff)" \
+          ".prefer_deployed_tasks('dev#{index}')#{conf}.period(0.01)\n"
+      end
+
+      def robot_file
+        out = +"using_task_library 'bench'\n"
+        @buses.times do |b|
+          task = b.even? ? 'OroGen.canbus.Task' : 'OroGen.bench.BusTask'
+          out << "Syskit.conf.use_deployment #{task} => 'can#{b}'\n"
+        end
+        @devices.times do |i|
+          out << "Syskit.conf.use_deployment OroGen.bench.#{KINDS[i % KINDS.size][:task]} => 'dev#{i}'\n"
+        end
+        out
+      end
+    end
+  end
+end

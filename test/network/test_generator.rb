@@ -230,7 +230,7 @@ module Syskit
     def test_several_deployments_without_preference
       errors = generation_error(on_can0.sub(".prefer_deployed_tasks('a')", ''))
       assert_reported errors.first, /several deployed tasks can run device 'a''s driver sensor::Task: a \(sensor::Task, deployment a\), b \(sensor::Task, deployment b\)/,
-                      at: 'models/profiles/base.rb:11', hint: %r{\.prefer_deployed_tasks\(/a/\)}, root: @root
+                      at: 'models/profiles/base.rb:11', hint: /\.prefer_deployed_tasks\('a'\)/, root: @root
     end
 
     def test_preference_matching_nothing

@@ -38,10 +38,22 @@ module Syskit
         @deployed_tasks.values
       end
 
-      # Deployed tasks whose model is +model+ or a subclass of it.
+      # The deployed tasks that can run a task of +model+ (their model is it
+      # or a subclass of it), computed once per model: sorted by name, and
+      # indexed by name for prefer_deployed_tasks('name').
+      Candidates = Struct.new(:list, :by_name)
+
+      def candidates_for(model)
+        @candidates ||= {}
+        @candidates[model] ||= begin
+          list = deployed_tasks.select { |t| t.model <= model }.sort_by(&:name)
+          Candidates.new(list, list.to_h { |t| [t.name, t] })
+        end
+      end
+
+      # Deployed tasks whose model is +model+ or a subclass of it, by name.
       def deployed_tasks_for(model)
-        (@by_model ||= deployed_tasks.group_by(&:model))
-        @by_model.select { |m, _| m <= model }.values.flatten
+        candidates_for(model).list
       end
 
       def to_s
@@ -55,7 +67,7 @@ module Syskit
       private
 
       def add(deployment, location)
-        @by_model = nil
+        @candidates = nil
         @deployments << deployment
         deployment.tasks.each do |task|
           if (other = @deployed_tasks[task.name])

@@ -33,12 +33,18 @@ module Syskit
 
       def choose(task)
         requirement = @context.requirement_for(task)
-        candidates = @context.robot_config.deployed_tasks_for(task.model).sort_by(&:name)
+        index = @context.robot_config.candidates_for(task.model)
+        candidates = index.list
         return @context.error(none(task, requirement)) if candidates.empty?
 
         hints = requirement.deployment_hints
+        # The common case, a deployed task named after the device: a lookup.
+        if hints.size == 1 && hints.first.is_a?(String)
+          return index.by_name[hints.first] || @context.error(no_preferred(task, requirement, candidates))
+        end
+
         unless hints.empty?
-          preferred = candidates.select { |c| hints.any? { |h| h.is_a?(Regexp) ? h.match?(c.name) : h == c.name } }
+          preferred = preferred(index, hints)
           return @context.error(no_preferred(task, requirement, candidates)) if preferred.empty?
 
           candidates = preferred
@@ -46,6 +52,15 @@ module Syskit
         return candidates.first if candidates.size == 1
 
         @context.error(several(task, requirement, candidates))
+      end
+
+      # Candidates matching the hints: names are looked up, only regexps
+      # are matched against every candidate of the model.
+      def preferred(index, hints)
+        found = hints.flat_map do |hint|
+          hint.is_a?(Regexp) ? index.list.select { |c| hint.match?(c.name) } : [index.by_name[hint]].compact
+        end
+        found.size > 1 ? found.uniq.sort_by(&:name) : found
       end
 
       def device_location(requirement)
@@ -77,11 +92,13 @@ module Syskit
       end
 
       def several(task, requirement, candidates)
+        name = requirement.device.name
+        example = candidates.any? { |c| c.name == name } ? "'#{name}'" : "/#{candidates.first.name}/"
         DeploymentError.new(
           "several deployed tasks can run #{requirement.device}'s driver #{task.model.name}: " \
           "#{candidates.map(&:to_s).join(', ')}",
           location: device_location(requirement),
-          hint: "choose one with .prefer_deployed_tasks(/#{candidates.first.name}/) on the device declaration"
+          hint: "choose one with .prefer_deployed_tasks(#{example}) on the device declaration"
         )
       end
 

@@ -11,7 +11,16 @@ module Syskit
     # The first frame of the current call stack that is outside the gem's
     # library code, i.e. the user's DSL call that led here.
     def self.of_caller
-      from(caller_locations.find { |loc| user_frame?(loc) })
+      # The user's frame is usually a few frames up: look at the stack a
+      # batch at a time instead of materializing all of it on every call.
+      start = 1
+      while (batch = caller_locations(start, 8)) && !batch.empty?
+        found = batch.find { |loc| user_frame?(loc) }
+        return from(found) if found
+
+        start += batch.size
+      end
+      nil
     end
 
     # The first frame of an exception's backtrace that is outside the gem.
@@ -38,7 +47,7 @@ module Syskit
     def relative_path(root = Syskit.app&.root)
       return path unless root
 
-      prefix = "#{File.expand_path(root)}/"
+      prefix = "#{root.start_with?('/') ? root : File.expand_path(root)}/"
       path.start_with?(prefix) ? path.delete_prefix(prefix) : path
     end
 

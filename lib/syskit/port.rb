@@ -5,6 +5,7 @@ module Syskit
   # ports and dynamic port patterns (a created port inherits its pattern's).
   module ConnectionNeeds
     NEEDS = %i[doc multiplexes reliable buffer_size period burst sample_size].freeze
+    SETTERS = NEEDS.to_h { |attr| [attr, :"#{attr}="] }.freeze
 
     attr_accessor(*NEEDS)
 
@@ -26,7 +27,7 @@ module Syskit
     end
 
     def copy_needs_from(other)
-      NEEDS.each { |attr| public_send("#{attr}=", other.public_send(attr)) }
+      SETTERS.each { |attr, setter| public_send(setter, other.public_send(attr)) }
       self
     end
   end

@@ -17,6 +17,10 @@ module Syskit
 
     class << self
       attr_reader :task_model
+
+      def sorted_names
+        @sorted_names ||= task_model.property_declarations.keys.sort.freeze
+      end
     end
 
     def initialize
@@ -60,7 +64,7 @@ module Syskit
 
     # Values as plain data (hashes, arrays, numbers, strings), sorted by name.
     def to_plain
-      @values.keys.sort.to_h { |k| [k, declarations[k].type.to_plain(@values[k])] }
+      self.class.sorted_names.to_h { |k| [k, declarations[k].type.to_plain(@values[k])] }
     end
 
     def to_h
@@ -101,11 +105,20 @@ module Syskit
     end
 
     def create_input_port(name, type)
-      @task.create_port(:input, name, type, location: Location.of_caller)
+      create_port(:input, name, type)
     end
 
     def create_output_port(name, type)
-      @task.create_port(:output, name, type, location: Location.of_caller)
+      create_port(:output, name, type)
+    end
+
+    private
+
+    # The caller's location is only looked up when there is an error.
+    def create_port(direction, name, type)
+      @task.create_port(direction, name, type)
+    rescue Syskit::Error => e
+      raise e.location ? e : e.at(Location.of_caller)
     end
   end
 end

@@ -21,6 +21,7 @@ module Syskit
       @properties = model.properties_class.new
       @created_ports = {}
       @children = []
+      @child_tasks = []
       @conf = ['default']
     end
 
@@ -38,7 +39,9 @@ module Syskit
 
     # The devices this task drives, from its +<name>_dev+ arguments.
     def devices
-      arguments.values.grep(Robot::Device).uniq
+      @devices ||= arguments.each_value.with_object([]) do |value, found|
+        found << value if value.is_a?(Robot::Device) && !found.include?(value)
+      end.freeze
     end
 
     # The device this task drives, when it drives only one.
@@ -71,8 +74,16 @@ module Syskit
       @children.each { |child, info| yield(child, info) }
     end
 
+    # The tasks this one depends on.
+    def children
+      @child_tasks
+    end
+
     def add_child(task, info = {})
-      @children << [task, info] unless @children.any? { |t, _| t.equal?(task) }
+      return if @child_tasks.any? { |t| t.equal?(task) }
+
+      @children << [task, info]
+      @child_tasks << task
     end
 
     # Static ports and ports created at configure time, by name.

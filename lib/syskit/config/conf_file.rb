@@ -34,6 +34,10 @@ module Syskit
       # The values of +names+ merged left to right: later sections override
       # earlier ones, hashes are merged key by key. 'default' may be missing.
       def merged(names, location:)
+        (@merged ||= {})[names] ||= merge_sections(names, location).freeze
+      end
+
+      def merge_sections(names, location)
         names.reduce({}) do |values, name|
           section = sections[name]
           next values if section.nil? && name == 'default'

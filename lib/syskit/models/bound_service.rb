@@ -23,7 +23,7 @@ module Syskit
 
       # The task argument holding the device (+f9_dev+ for +as: 'f9'+).
       def argument_name
-        :"#{name}_dev"
+        @argument_name ||= :"#{name}_dev"
       end
 
       def fullfills?(other)

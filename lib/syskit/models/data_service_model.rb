@@ -113,6 +113,7 @@ module Syskit
           [port.name, adopt_port(port, renames.fetch(port.name, port.name), model, location)]
         end
         @fullfilled = nil
+        @identity_mappings = nil
         self
       end
 
@@ -129,7 +130,7 @@ module Syskit
 
       # For a model this one provides, its port names mapped to ours.
       def port_mappings_for(model)
-        return ports.keys.to_h { |n| [n, n] } if model.equal?(self)
+        return (@identity_mappings ||= ports.keys.to_h { |n| [n, n] }.freeze) if model.equal?(self)
 
         parents.each do |parent, mapping|
           next unless parent.fullfills?(model)

@@ -13,6 +13,19 @@ module Syskit
     module TaskModel
       attr_reader :spec
 
+      class << self
+        # Bumped whenever a task model gains a service or a stub: the cached
+        # views below (which merge a model's declarations with its parents')
+        # are then computed again.
+        def declarations_version
+          @declarations_version ||= 0
+        end
+
+        def declarations_changed
+          @declarations_version = declarations_version + 1
+        end
+      end
+
       # A new task model for +spec+, subclassing this one.
       def new_model(spec)
         model = Class.new(self)
@@ -45,6 +58,13 @@ module Syskit
         ports[name.to_s]
       end
 
+      # Static ports of +direction+ and +type+, sorted by name.
+      def static_ports_of(direction, type)
+        cached(direction, type) do
+          ports.values.select { |p| p.direction == direction && p.type == type }.sort_by(&:name).freeze
+        end
+      end
+
       def dynamic_ports
         spec ? spec.all_dynamic_ports : []
       end
@@ -56,8 +76,15 @@ module Syskit
 
       # Services by name, inherited ones included.
       def services
-        inherited = superclass.respond_to?(:services) ? superclass.services : {}
-        inherited.merge(@services || {})
+        cached(:services) do
+          inherited = superclass.respond_to?(:services) ? superclass.services : {}
+          inherited.merge(@services || {}).freeze
+        end
+      end
+
+      # Services whose model is or provides +service_model+, in declaration order.
+      def services_fulfilling(service_model)
+        cached(:fulfilling, service_model) { services.values.select { |srv| srv.fullfills?(service_model) }.freeze }
       end
 
       def find_service(name)
@@ -101,12 +128,15 @@ module Syskit
       # from the property the configure method just set).
       def stub(&block)
         (@stub_blocks ||= []) << block
+        TaskModel.declarations_changed
         block
       end
 
       def stub_blocks
-        inherited = superclass.respond_to?(:stub_blocks) ? superclass.stub_blocks : []
-        inherited + (@stub_blocks || [])
+        cached(:stub_blocks) do
+          inherited = superclass.respond_to?(:stub_blocks) ? superclass.stub_blocks : []
+          (inherited + (@stub_blocks || [])).freeze
+        end
       end
 
       # Timing statement of real bundles; recorded, used to size buffers.
@@ -118,13 +148,15 @@ module Syskit
 
       # Services through which this task drives a device or a bus.
       def driver_services
-        services.values.select(&:driven_device_model)
+        cached(:driver_services) { services.values.select(&:driven_device_model).freeze }
       end
 
       # Those of {#driver_services} that can drive a device of +device_model+:
       # the service's device model must be it or provide it.
       def driver_services_for(device_model)
-        driver_services.select { |srv| srv.driven_device_model.fullfills?(device_model) }
+        cached(:driver_services_for, device_model) do
+          driver_services.select { |srv| srv.driven_device_model.fullfills?(device_model) }.freeze
+        end
       end
 
       def driven_device_models
@@ -142,6 +174,18 @@ module Syskit
       end
 
       private
+
+      # A view computed once per +key+ (and +subkey+), until declarations change.
+      def cached(key, subkey = nil)
+        version = TaskModel.declarations_version
+        if @cache_version != version
+          @cache = {}
+          @cache_version = version
+        end
+        table = subkey.nil? ? @cache : (@cache[key] ||= {}.compare_by_identity)
+        slot = subkey.nil? ? key : subkey
+        table.fetch(slot) { table[slot] = yield }
+      end
 
       def setup_model(spec)
         @spec = spec
@@ -161,6 +205,7 @@ module Syskit
         port_mappings = PortMapper.new(self, model, mappings, location).map
         srv = BoundService.new(self, name, model, port_mappings, location)
         (@services ||= {})[name] = srv
+        TaskModel.declarations_changed
         argument = srv.argument_name
         define_method(argument) { arguments[argument] } if srv.driven_device_model
         srv

@@ -26,7 +26,7 @@ module Syskit
       end
 
       def link
-        link = Context::BusLink.new(device: @device, bus_task: @bus_task, device_task: @device_task)
+        link = Context::BusLink.new(@device, @bus_task, @device_task)
         if @device.bus_to_client?
           link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', @device.name)
           link.client_input = client_port(:input, @bus_model.client_in_srv, 'from_bus', :bus_to_client)
@@ -42,11 +42,11 @@ module Syskit
 
       def bus_port(direction, service_model, service_port, dynamic_name)
         model = @bus_task.model
-        service = model.services.values.find { |srv| srv.fullfills?(service_model) }
+        service = model.services_fulfilling(service_model).first
         return service.task_port_for(service_model, service_port).name if service
 
         if model.spec&.dynamic_port_for(direction, dynamic_name, @type)
-          expected = Context::ExpectedPort.new(name: dynamic_name, direction: direction, type: @type, device: @device)
+          expected = Context::ExpectedPort.new(dynamic_name, direction, @type, @device)
           @expected << expected
           return dynamic_name
         end
@@ -57,7 +57,7 @@ module Syskit
       def client_port(direction, service_model, service_port, option)
         model = @device_task.model
         wanted = @device.public_send(option)
-        services = model.services.values.select { |srv| srv.fullfills?(service_model) }
+        services = model.services_fulfilling(service_model)
         if wanted.is_a?(String)
           service = services.find { |srv| srv.name == wanted }
           return service.task_port_for(service_model, service_port).name if service
@@ -79,7 +79,7 @@ module Syskit
       end
 
       def ports_of_type(model, direction)
-        model.ports.values.select { |p| p.direction == direction && p.type == @type }.sort_by(&:name)
+        model.static_ports_of(direction, @type)
       end
 
       def no_bus_port(direction, dynamic_name)

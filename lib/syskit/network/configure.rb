@@ -48,19 +48,19 @@ module Syskit
         end
       end
 
+      # Locations of keys are only looked up for errors.
       def apply_value(task, file, key, value)
-        location = file.location_of(key, task.conf)
         unless task.properties.key?(key)
           names = task.properties.names
           raise ConfigurationError.new(
             "#{task.model.name} has no property '#{key}'#{Naming.did_you_mean(key, names)}",
-            location: location, hint: "its properties are #{names.sort.join(', ')}"
+            location: file.location_of(key, task.conf), hint: "its properties are #{names.sort.join(', ')}"
           )
         end
 
         task.properties[key] = value
       rescue ConfigurationError => e
-        raise e.at(location)
+        raise e.at(file.location_of(key, task.conf))
       end
 
       def user_code(task, device, what)

@@ -7,7 +7,7 @@ module Syskit
     # and refuses several writers on an input that does not multiplex.
     class Connect
       # A connection between two ports.
-      Connection = Struct.new(:from_task, :from_port, :to_task, :to_port, :policy, :device, keyword_init: true)
+      Connection = Struct.new(:from_task, :from_port, :to_task, :to_port, :policy, :device)
 
       def initialize(context)
         @context = context
@@ -33,10 +33,8 @@ module Syskit
                                  location: device.declared_at, hint: 'both ports must have the bus message type')
         end
 
-        @context.connections << Connection.new(
-          from_task: from_task, from_port: from, to_task: to_task, to_port: to, device: device,
-          policy: Policy.for(to, to_task, device, into_bus: into_bus)
-        )
+        policy = Policy.for(to, to_task, device, into_bus: into_bus)
+        @context.connections << Connection.new(from_task, from, to_task, to, policy, device)
       end
 
       def port(task, name, direction, device)
@@ -48,7 +46,9 @@ module Syskit
       end
 
       def check_multiplexing
-        @context.connections.group_by { |c| [c.to_task.object_id, c.to_port.name] }.each_value do |into|
+        by_sink = Hash.new { |h, task| h[task] = Hash.new { |ports, name| ports[name] = [] } }.compare_by_identity
+        @context.connections.each { |c| by_sink[c.to_task][c.to_port.name] << c }
+        by_sink.each_value.flat_map(&:values).each do |into|
           next if into.size == 1 || into.first.to_port.multiplexes?
 
           sink = into.first

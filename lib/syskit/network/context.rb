@@ -6,11 +6,10 @@ module Syskit
     # step reads what the previous ones built and adds its part.
     class Context
       # How a device's driver talks to its bus's driver (see Buses).
-      BusLink = Struct.new(:device, :bus_task, :device_task,
-                           :bus_output, :bus_input, :client_input, :client_output, keyword_init: true)
+      BusLink = Struct.new(:device, :bus_task, :device_task, :bus_output, :bus_input, :client_input, :client_output)
 
       # A port the bus driver must have for one device, created at configure time.
-      ExpectedPort = Struct.new(:name, :direction, :type, :device, keyword_init: true)
+      ExpectedPort = Struct.new(:name, :direction, :type, :device)
 
       attr_reader :app, :profile, :robot_config, :requirements, :tasks, :bus_links,
                   :expected_ports, :connections, :errors

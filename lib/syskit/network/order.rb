@@ -12,11 +12,12 @@ module Syskit
       def initialize(context)
         @context = context
         @ranks = {}.compare_by_identity
+        @visiting = {}.compare_by_identity
       end
 
       def run
         steps = @context.tasks.flat_map do |task|
-          rank = configure_rank(task, [])
+          rank = configure_rank(task)
           [Step.new('configure', task, rank), Step.new('start', task, rank + 1)]
         end
         @context.order = steps.sort_by { |s| [s.rank, s.task.name.to_s, s.step] }
@@ -25,15 +26,18 @@ module Syskit
       private
 
       # 0 for tasks without buses, else one more than the start of their buses.
-      def configure_rank(task, path)
+      def configure_rank(task)
         return @ranks[task] if @ranks.key?(task)
-        if path.include?(task)
-          raise NetworkError.new("tasks depend on each other: #{(path + [task]).map(&:name).join(' -> ')}",
+        if @visiting.key?(task)
+          raise NetworkError.new("tasks depend on each other: #{(@visiting.keys + [task]).map(&:name).join(' -> ')}",
                                  hint: 'a bus cannot be attached through itself')
         end
 
-        children = task.each_child.map { |child, _| child }
-        @ranks[task] = children.empty? ? 0 : children.map { |c| configure_rank(c, path + [task]) + 2 }.max
+        @visiting[task] = true
+        rank = 0
+        task.children.each { |child| rank = [rank, configure_rank(child) + 2].max }
+        @visiting.delete(task)
+        @ranks[task] = rank
       end
     end
   end

@@ -12,11 +12,11 @@ module Syskit
       # A port of a task; dynamic ports are created at configure time.
       Port = Struct.new(:name, :direction, :type, :dynamic, keyword_init: true)
       # One end of a connection.
-      Endpoint = Struct.new(:task, :port, keyword_init: true)
+      Endpoint = Struct.new(:task, :port)
       # A connection and its policy ({'type' => 'buffer', 'size' => n} or {'type' => 'data'}).
-      Connection = Struct.new(:from, :to, :type, :policy, keyword_init: true)
+      Connection = Struct.new(:from, :to, :type, :policy)
       # 'configure' or 'start' a task.
-      Step = Struct.new(:step, :task, keyword_init: true)
+      Step = Struct.new(:step, :task)
       # A device of the network: its driver task, its bus and what it
       # declared (attributes such as can_id, period, burst).
       Device = Struct.new(:name, :model, :task, :bus, :bus_to_client, :client_to_bus, :attributes,
@@ -24,46 +24,77 @@ module Syskit
 
       attr_reader :profile, :robot, :tasks, :devices, :connections, :order
 
+      NO_ATTRIBUTES = {}.freeze
+
       def self.build(context)
+        # The plan entries of a model's static ports are shared by its tasks.
+        static_ports = {}
         new(
           profile: context.profile&.name, robot: context.robot_config&.name,
-          tasks: context.tasks.map { |t| task_entry(t) }.sort_by(&:name),
+          tasks: context.tasks.map { |t| task_entry(t, static_ports) }.sort_by(&:name),
           devices: context.tasks.map { |t| device_entry(context.device_of(t), t) }.sort_by(&:name),
           connections: context.connections.map { |c| connection_entry(c) }.sort_by { |c| connection_key(c) },
-          order: context.order.map { |s| Step.new(step: s.step, task: s.task.name) }
+          order: context.order.map { |s| Step.new(s.step, s.task.name).freeze }
         )
       end
 
-      def self.task_entry(task)
+      # Entries are frozen as they are built, so the plan is a frozen value
+      # without walking it again.
+      def self.task_entry(task, static_ports)
+        ports = static_ports[task.model] ||= task.model.ports.each_value.map { |p| port_entry(p) }.sort_by!(&:name).freeze
+        unless task.created_ports.empty?
+          ports = (ports + task.created_ports.each_value.map { |p| port_entry(p) }).sort_by!(&:name).freeze
+        end
         Task.new(
           name: task.name, model: task.model.name, deployment: task.deployed_task.deployment.name,
-          devices: task.devices.map(&:name), conf: task.conf, properties: task.properties.to_plain,
-          ports: task.ports.values.map { |p| port_entry(p) }.sort_by(&:name),
-          depends_on: task.each_child.map { |child, _| child.name }.sort
-        )
+          devices: task.devices.map(&:name).freeze, conf: task.conf.dup.freeze,
+          properties: freeze_plain(task.properties.to_plain), ports: ports,
+          depends_on: task.children.map(&:name).sort!.freeze
+        ).freeze
       end
 
       def self.device_entry(device, task)
+        attributes = device.dsl_attributes
+        attributes = attributes.empty? ? NO_ATTRIBUTES : plain_attributes(attributes)
         Device.new(
           name: device.name, model: device.model.name, task: task.name, bus: device.bus&.name,
           bus_to_client: device.attached? ? device.bus_to_client? : nil,
-          client_to_bus: device.attached? ? device.client_to_bus? : nil,
-          attributes: device.dsl_attributes.to_h { |k, v| [k.to_s, v] }.sort.to_h,
+          client_to_bus: device.attached? ? device.client_to_bus? : nil, attributes: attributes,
           period: device.period, burst: device.burst, sample_size: device.sample_size,
           declared_at: device.declared_at&.to_s
-        )
+        ).freeze
       end
 
+      DIRECTIONS = { input: 'input', output: 'output' }.freeze
+
       def self.port_entry(port)
-        Port.new(name: port.name, direction: port.direction.to_s, type: port.type.name, dynamic: port.dynamic?)
+        Port.new(name: port.name, direction: DIRECTIONS.fetch(port.direction), type: port.type.name,
+                 dynamic: port.dynamic?).freeze
       end
 
       def self.connection_entry(conn)
         Connection.new(
-          from: Endpoint.new(task: conn.from_task.name, port: conn.from_port.name),
-          to: Endpoint.new(task: conn.to_task.name, port: conn.to_port.name),
-          type: conn.from_port.type.name, policy: conn.policy
-        )
+          Endpoint.new(conn.from_task.name, conn.from_port.name).freeze, # from
+          Endpoint.new(conn.to_task.name, conn.to_port.name).freeze,     # to
+          conn.from_port.type.name, conn.policy                          # type, policy (frozen)
+        ).freeze
+      end
+
+      # DSL attributes by name, sorted.
+      def self.plain_attributes(attributes)
+        plain = {}
+        attributes.keys.sort!.each { |k| plain[k.to_s] = attributes[k] }
+        freeze_plain(plain)
+      end
+
+      # Freezes plain data (hashes, arrays, strings) all the way down.
+      def self.freeze_plain(value)
+        if value.is_a?(Hash)
+          value.each_value { |v| freeze_plain(v) }
+        elsif value.is_a?(Array)
+          value.each { |v| freeze_plain(v) }
+        end
+        value.freeze
       end
 
       def self.connection_key(conn)
@@ -71,13 +102,13 @@ module Syskit
       end
 
       def initialize(profile:, robot:, tasks:, devices:, connections:, order:)
-        @profile = profile
-        @robot = robot
-        @tasks = tasks
-        @devices = devices
-        @connections = connections
-        @order = order
-        deep_freeze(self)
+        @profile = profile.freeze
+        @robot = robot.freeze
+        @tasks = tasks.freeze
+        @devices = devices.freeze
+        @connections = connections.freeze
+        @order = order.freeze
+        freeze
       end
 
       def find_task(name)
@@ -130,15 +161,6 @@ module Syskit
           'from' => conn.from.to_h.transform_keys(&:to_s), 'to' => conn.to.to_h.transform_keys(&:to_s),
           'type' => conn.type, 'policy' => conn.policy
         }
-      end
-
-      def deep_freeze(value)
-        case value
-        when Plan then instance_variables.each { |v| deep_freeze(instance_variable_get(v)) }
-        when Hash then value.each_value { |v| deep_freeze(v) }
-        when Array, Struct then value.each { |v| deep_freeze(v) }
-        end
-        value.freeze
       end
     end
   end

@@ -20,12 +20,19 @@ module Syskit
 
       module_function
 
+      DATA = { 'type' => 'data' }.freeze
+
       def for(sink_port, sink_task, writer_device, into_bus:)
-        return { 'type' => 'data' } unless into_bus || sink_port.reliable? || sink_port.buffer_size
+        return DATA unless into_bus || sink_port.reliable? || sink_port.buffer_size
 
         size = buffer_size(writer_device, sink_task.model.worstcase_processing_time)
         size = [size, sink_port.buffer_size].max if sink_port.buffer_size
-        { 'type' => 'buffer', 'size' => size }
+        buffer(size)
+      end
+
+      # Policies are values: one frozen hash per size.
+      def buffer(size)
+        (@buffers ||= {})[size] ||= { 'type' => 'buffer', 'size' => size }.freeze
       end
 
       def buffer_size(device, latency)

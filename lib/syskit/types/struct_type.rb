@@ -22,8 +22,8 @@ module Syskit
         @value_class = StructValue.for(self)
       end
 
-      def new(*args, **kwargs)
-        value_class.new(*args, **kwargs)
+      def new(...)
+        value_class.new(...)
       end
 
       def field_names
@@ -98,7 +98,8 @@ module Syskit
         end
 
         @values = fields.transform_values(&:zero)
-        fields.keys.zip(args).first(args.size).each { |fname, v| self[fname] = v }
+        names = fields.keys
+        args.each_with_index { |v, i| self[names[i]] = v }
         kwargs.each { |k, v| self[k] = v }
       end
 

@@ -1,0 +1,79 @@
+# frozen_string_literal: true
+
+require 'syskit/generators/base'
+require 'syskit/generators/profile_generator'
+require 'syskit/version'
+
+module Syskit
+  module Generators
+    # `syskit gen app awesome_robot`: a new app directory with the layout of
+    # SPEC section 1, a Base profile and its test, ready for `rake test`.
+    class AppGenerator
+      GEM_ROOT = Base::GEM_ROOT
+      # Acronyms most robots need; the app's config lists them, to edit.
+      ACRONYMS = %w[GPS CAN IMU].freeze
+      # Directories that start empty, kept by git through a .gitkeep.
+      EMPTY_DIRS = %w[models/devices models/orogen models/typekits config/orogen].freeze
+
+      attr_reader :root, :app_name
+
+      # +dir+: the app's directory, relative to +pwd+; its basename, camelized,
+      # is the app's name.
+      def initialize(dir, pwd: Dir.pwd, force: false, dry_run: false)
+        dir = dir.to_s.chomp('/')
+        check_dir(dir)
+        @root = File.expand_path(dir, pwd)
+        @app_name = Name.parse(File.basename(dir), what: 'app', acronyms: ACRONYMS,
+                                                        examples: 'e.g. awesome_robot').to_s
+        @force = force
+        @dry_run = dry_run
+      end
+
+      # Writes the app's files (or only checks them on a dry run) and returns
+      # what was, or would be, written.
+      def run
+        FileWriter.new(root, allowed: ['.'], force: @force, dry_run: @dry_run).write(files)
+      end
+
+      # Relative path => content of the files to write.
+      def files
+        locals = { app_name: app_name, dir_name: File.basename(root), acronyms: ACRONYMS,
+                   syskit_gem: syskit_gem_line }
+        files = {
+          'README.md' => Template.render('app_readme', **locals),
+          'Gemfile' => Template.render('app_gemfile', **locals),
+          'Rakefile' => Template.render('app_rakefile', **locals),
+          'config/syskit.yml' => Template.render('app_syskit_yml', **locals),
+          'config/robots/default.rb' => Template.render('app_robot', **locals)
+        }
+        EMPTY_DIRS.each { |d| files["#{d}/.gitkeep"] = '' }
+        files.merge(ProfileGenerator.files(app_name, Name.new(['Base']))).sort.to_h
+      end
+
+      private
+
+      def check_dir(dir)
+        if dir.empty? || dir.start_with?('/', '~') || dir.split('/').include?('..')
+          raise GeneratorError.new("'#{dir}' is not a directory name relative to the current directory",
+                                   hint: 'run syskit gen app from the directory the app goes in, ' \
+                                         'e.g. syskit gen app awesome_robot')
+        end
+      end
+
+      # The Gemfile's line for this gem: the checkout it runs from, or the
+      # installed version.
+      def syskit_gem_line
+        return "gem 'syskit', '~> #{Syskit::VERSION}'" unless checkout?
+
+        path = GEM_ROOT.match?(/['\\]/) ? GEM_ROOT.inspect : "'#{GEM_ROOT}'"
+        "gem 'syskit', path: #{path}"
+      end
+
+      # Installed gems do not ship their gemspec, checkouts do.
+      def checkout?
+        File.file?(File.join(GEM_ROOT, 'syskit.gemspec')) &&
+          Gem.path.none? { |dir| GEM_ROOT.start_with?(File.join(File.expand_path(dir), 'gems', '')) }
+      end
+    end
+  end
+end

@@ -1,0 +1,70 @@
+# frozen_string_literal: true
+
+require 'syskit/generators/name'
+require 'syskit/generators/template'
+require 'syskit/generators/file_writer'
+
+module Syskit
+  module Generators
+    # What the generators of files in an existing app share: finding the
+    # app, its name and acronyms, and writing under models/ and test/ only.
+    #
+    # A subclass defines #files, the relative paths and contents it writes.
+    class Base
+      GEM_ROOT = File.expand_path('../../..', __dir__)
+      # Where generated model and test files may land, relative to the app.
+      ALLOWED = %w[models test].freeze
+
+      attr_reader :root, :app_name, :acronyms
+
+      # The root of the app to generate into: +app_dir+ (--app) when given,
+      # else the app containing +pwd+. Never the gem itself, whose models/
+      # directory holds the bundled models.
+      def self.find_app(app_dir, pwd: Dir.pwd)
+        root = app_dir ? File.expand_path(app_dir, pwd) : Syskit::App.find_root(pwd)
+        where = app_dir ? "'#{app_dir}'" : pwd
+        return root if root && root != GEM_ROOT && app?(root)
+
+        what = root == GEM_ROOT ? 'is in the syskit gem itself, not' : 'is not'
+        raise GeneratorError.new(
+          "#{where} #{what} in a Syskit app (an app has a models/ directory or a config/syskit.yml)",
+          hint: 'run the command inside an app, pass --app DIR, or create an app with: syskit gen app NAME'
+        )
+      end
+
+      def self.app?(root)
+        File.directory?(File.join(root, 'models')) || File.file?(File.join(root, Syskit::App::CONFIG_FILE))
+      end
+
+      def initialize(root, force: false, dry_run: false)
+        @root = File.expand_path(root)
+        config = Syskit::App.new(root) # reads config/syskit.yml, loads nothing
+        @app_name = config.name
+        @acronyms = config.acronyms
+        @force = force
+        @dry_run = dry_run
+        check_app_name
+      end
+
+      # Writes the generated files (or only checks them on a dry run) and
+      # returns what was, or would be, written.
+      def run
+        FileWriter.new(root, allowed: ALLOWED, force: @force, dry_run: @dry_run).write(files)
+      end
+
+      private
+
+      def check_app_name
+        return if app_name.split('::').all? { |c| Naming.constant_name?(c) }
+
+        raise GeneratorError.new("the app's name '#{app_name}' is not a Ruby constant name",
+                                 hint: "set a name such as AwesomeRobot in #{Syskit::App::CONFIG_FILE} (name: AwesomeRobot)")
+      end
+
+      # The nested modules a model file of +kind+ (Devices, Profiles) opens.
+      def modules_for(kind, name)
+        Template::Modules.new([*app_name.split('::'), kind, *name.namespace])
+      end
+    end
+  end
+end

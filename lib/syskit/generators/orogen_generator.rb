@@ -1,0 +1,113 @@
+# frozen_string_literal: true
+
+require 'syskit/generators/base'
+
+module Syskit
+  module Generators
+    # `syskit gen orogen gps_ublox`: the Syskit extension file of a task
+    # library (models/orogen/gps_ublox.rb), one extend_model block per task
+    # context of its .orogen file, and its test.
+    class OrogenGenerator < Base
+      LIBRARY_NAME = /\A[A-Za-z_][A-Za-z0-9_]*\z/.freeze
+
+      # What the template says of one task context.
+      TaskInfo = Struct.new(:name, :accessor, :doc, :device_name, :property, :output_port, :dynamic_type,
+                            keyword_init: true)
+
+      attr_reader :library
+
+      def initialize(root, library, **options)
+        super(root, **options)
+        @library = library.to_s
+        return if LIBRARY_NAME.match?(@library)
+
+        Name.refuse_path(@library, 'task library', 'e.g. gps_ublox')
+        raise GeneratorError.new("'#{@library}' is not a task library name",
+                                 hint: 'give the name of an .orogen file without its extension, e.g. gps_ublox')
+      end
+
+      # Relative path => content of the files to write. Loads the app to
+      # read the task library's specification.
+      def files
+        spec_path, tasks = read_library
+        locals = { app_name: app_name, library: library, spec_path: spec_path, tasks: tasks,
+                   modules: Template::Modules.new(app_name.split('::')) }
+        {
+          "models/orogen/#{library}.rb" => Template.render('orogen', **locals),
+          "test/orogen/test_#{library}.rb" => Template.render('orogen_test', **locals)
+        }
+      end
+
+      private
+
+      # Where the .orogen file is, for the file's header, and its tasks.
+      def read_library
+        app = Syskit::App.new(root)
+        # Extension files of the libraries this one uses may need the app's
+        # device models: load the app as syskit check would, but leave its
+        # problems to syskit check, only this library's matter here.
+        app.load
+        path = app.orogen.spec_path(library) || raise(unknown_library(app))
+        loaded = app.orogen.library(library) || app.orogen.load_library(library, Location.new(path, 1))
+        [spec_description(path), task_infos(loaded, path)]
+      ensure
+        app&.unload
+      end
+
+      # The path of the .orogen file inside the app, no machine-specific
+      # path otherwise.
+      def spec_description(path)
+        return path.delete_prefix("#{root}/") if path.start_with?("#{root}/")
+        return "#{library}.orogen, bundled with syskit" if path.start_with?("#{Syskit::App::BUNDLED_MODELS}/")
+
+        "#{library}.orogen, found on SYSKIT_OROGEN_PATH"
+      end
+
+      def task_infos(loaded, path)
+        tasks = loaded.tasks.values.sort_by(&:name)
+        if tasks.empty?
+          raise GeneratorError.new("task library '#{library}' declares no task context, there is nothing to extend",
+                                   location: Location.new(path, 1),
+                                   hint: "declare one in #{File.basename(path)}: task_context 'Task' do ... end")
+        end
+
+        tasks.map { |model| task_info(model) }
+      end
+
+      def task_info(model)
+        relative = model.name.delete_prefix("#{library}::")
+        outputs = model.ports.values.select(&:output?).sort_by(&:name)
+        dynamic = model.dynamic_ports.find { |p| p.direction == :output }
+        TaskInfo.new(
+          name: model.name, accessor: "OroGen.#{library}.#{relative.split('::').join('.')}",
+          doc: model.spec.doc, device_name: device_name(relative),
+          property: (model.spec.properties.keys + model.property_declarations.keys).first,
+          output_port: outputs.first&.name,
+          dynamic_type: dynamic && type_expression(dynamic.type)
+        )
+      end
+
+      # F9Task -> f9, Task -> the library's name: the 'as' of the examples.
+      def device_name(relative)
+        base = Naming.underscore(relative.split('::').last.delete_suffix('Task'))
+        base.empty? ? library : base
+      end
+
+      # Types.canbus.Message for /canbus/Message, the name as a string for
+      # names that are not Ruby method chains (containers, plain types).
+      def type_expression(type)
+        name = type.respond_to?(:name) ? type.name : type.to_s
+        name.match?(%r{\A(/[A-Za-z_]\w*)+\z}) ? "Types#{name.tr('/', '.')}" : "'#{name}'"
+      end
+
+      def unknown_library(app)
+        searched = app.orogen_search_dirs.map { |d| Location.new(d, 0).relative_path(root) }
+        GeneratorError.new(
+          "no task library '#{library}'#{Naming.did_you_mean(library, app.orogen.available_library_names)}",
+          hint: "looked for #{library}.orogen in #{searched.join(', ')}; create models/orogen/#{library}.orogen " \
+                'or add its directory to SYSKIT_OROGEN_PATH'
+        )
+      end
+    end
+  end
+end

@@ -157,3 +157,4 @@ module Syskit
   end
 end
 require 'syskit/cli/bus'
+require 'syskit/cli/gen'

@@ -1,0 +1,155 @@
+# frozen_string_literal: true
+
+require 'syskit/generators/app_generator'
+require 'syskit/generators/device_generator'
+require 'syskit/generators/bus_generator'
+require 'syskit/generators/orogen_generator'
+require 'syskit/generators/profile_generator'
+
+module Syskit
+  class CLI < Thor
+    # `syskit gen app|dev|bus|orogen|profile`: files that follow the app's
+    # conventions, each model with its test. Nothing is ever overwritten
+    # without --force, and a refused command writes nothing.
+    class Gen < Thor
+      EXAMPLES = <<~TEXT
+        Examples:
+          syskit gen app awesome_robot      # a new app in ./awesome_robot
+          syskit gen dev gps/ublox/f9       # models/devices/gps/ublox/f9.rb, Devices::GPS::Ublox::F9
+          syskit gen bus can                # models/devices/bus/can.rb, Devices::Bus::CAN
+          syskit gen orogen gps_ublox       # models/orogen/gps_ublox.rb, from gps_ublox.orogen
+          syskit gen profile live/base      # models/profiles/live/base.rb, Profiles::Live::Base
+
+        Names are given in path form (gps/ublox/f9) or constant form (GPS::Ublox::F9);
+        the acronyms of config/syskit.yml are kept (GPS, not Gps).
+      TEXT
+
+      def self.exit_on_failure?
+        true
+      end
+
+      # `syskit gen --help`: the commands, then examples of each.
+      def self.help(shell, subcommand = false) # rubocop:disable Style/OptionalBooleanParameter -- Thor's signature
+        super
+        shell.say
+        shell.say EXAMPLES
+      end
+
+      class_option :trace, type: :boolean, default: false, desc: 'show the backtrace of errors'
+      class_option :force, type: :boolean, default: false, desc: 'overwrite files that exist'
+      class_option :dry_run, type: :boolean, default: false, desc: 'list the files that would be written, write nothing'
+
+      desc 'app NAME', 'create a new app in the directory NAME'
+      long_desc <<~TEXT
+        Creates the directory NAME (relative to the current directory) with an
+        app's layout: models/{devices,orogen,profiles,typekits}, config/orogen,
+        config/robots/default.rb, config/syskit.yml, test/, a Rakefile, a
+        Gemfile, a README and a first profile, Profiles::Base, with its test.
+        The app's name is NAME's basename, camelized (awesome_robot ->
+        AwesomeRobot). `rake test` passes in the new app.
+
+        Example: syskit gen app awesome_robot
+      TEXT
+      def app(name)
+        generate { |opts| Generators::AppGenerator.new(name, **opts) }
+      end
+
+      desc 'dev TYPE/MANUFACTURER/MODEL', 'create a device model and its test'
+      long_desc <<~TEXT
+        Creates models/devices/TYPE/MANUFACTURER/MODEL.rb, defining
+        AppName::Devices::Type::Manufacturer::Model with device_type, and its
+        test in test/devices/TYPE/MANUFACTURER/test_MODEL.rb.
+
+        Example: syskit gen dev gps/ublox/f9 (or GPS::Ublox::F9)
+      TEXT
+      method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
+      def dev(name)
+        generate { |opts| Generators::DeviceGenerator.new(app_root, name, **opts) }
+      end
+
+      desc 'bus NAME', 'create a communication bus model and its test'
+      long_desc <<~TEXT
+        Creates models/devices/bus/NAME.rb, defining AppName::Devices::Bus::NAME
+        with com_bus_type (message type /canbus/Message, to adapt) and an
+        attribute of the devices attached to it, and its test in
+        test/devices/bus/test_NAME.rb. NAME may be given with its namespace
+        (bus/can) or without (can).
+
+        Example: syskit gen bus can
+      TEXT
+      method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
+      def bus(name)
+        generate { |opts| Generators::BusGenerator.new(app_root, name, **opts) }
+      end
+
+      desc 'orogen LIB', "create the Syskit extension file of a task library and its test"
+      long_desc <<~TEXT
+        Creates models/orogen/LIB.rb with one Syskit.extend_model block per
+        task context of LIB.orogen, where driver_for, provides, configure and
+        stub go, and its test in test/orogen/test_LIB.rb. LIB.orogen is
+        looked for as using_task_library does: in the app's models/orogen/,
+        SYSKIT_OROGEN_PATH, then the libraries bundled with syskit.
+
+        Example: syskit gen orogen gps_ublox
+      TEXT
+      method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
+      def orogen(library)
+        generate { |opts| Generators::OrogenGenerator.new(app_root, library, **opts) }
+      end
+
+      desc 'profile PATH/NAME', 'create a profile with an empty robot block and its test'
+      long_desc <<~TEXT
+        Creates models/profiles/PATH/NAME.rb, defining AppName::Profiles::Path::Name
+        with profile 'Name' do robot do ... end end, and its test in
+        test/profiles/PATH/test_NAME.rb (is_self_contained, can_instanciate,
+        can_deploy, can_configure).
+
+        Example: syskit gen profile live/base
+      TEXT
+      method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
+      def profile(name)
+        generate { |opts| Generators::ProfileGenerator.new(app_root, name, **opts) }
+      end
+
+      private
+
+      # Runs the generator the block makes and lists what it wrote; errors
+      # print as in the rest of the CLI (file:line: message, then the hint).
+      def generate
+        generator = yield(force: options[:force], dry_run: options[:dry_run])
+        print_entries(generator, generator.run)
+      rescue Syskit::Error => e
+        report_error(e, generator&.root)
+      rescue StandardError, ScriptError => e
+        # A bug of syskit itself: say so, without a backtrace unless asked.
+        report_error(Error.new("internal error: #{e.class}: #{e.message}",
+                               hint: 'this is a bug in syskit; run again with --trace and report the backtrace')
+                          .tap { |err| err.set_backtrace(e.backtrace) }, generator&.root)
+      end
+
+      def print_entries(generator, entries)
+        prefix = options[:dry_run] ? 'would ' : ''
+        entries.each { |e| puts "#{prefix}#{e.overwrite ? 'overwrite' : 'create'} #{e.path}" }
+        if options[:dry_run]
+          puts 'dry run: nothing was written'
+        elsif generator.is_a?(Generators::AppGenerator)
+          dir = generator.root.delete_prefix("#{Dir.pwd}/")
+          puts "#{generator.app_name} is in #{dir}/; next: cd #{dir} && rake test"
+        end
+      end
+
+      def app_root
+        Generators::Base.find_app(options[:app])
+      end
+
+      def report_error(error, root)
+        warn error.report(root)
+        warn (error.backtrace || []).map { |l| "    #{l}" }.join("\n") if options[:trace]
+        exit(1)
+      end
+    end
+
+    desc 'gen SUBCOMMAND', 'generate an app, a device, a bus, a task library extension or a profile, with tests'
+    subcommand 'gen', Gen
+  end
+end

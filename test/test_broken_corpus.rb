@@ -235,7 +235,9 @@ module Syskit
       failed = TestBrokenCorpus::FAILED.sort_by { |o| o.kase.name }
       total = TestBrokenCorpus.case_dirs.size
       puts "\n#{'=' * 78}\nBroken corpus: #{failed.size} of #{total} cases fail\n#{'=' * 78}"
-      failed.group_by { |o| o.problems.first.first }.sort.each do |kind, outcomes|
+      severity = %i[internal_error backtrace exit_status nothing_printed location message hint stream files_changed]
+      failed.group_by { |o| o.problems.map(&:first).min_by { |k| severity.index(k) || severity.size } }
+            .sort_by { |kind, _| severity.index(kind) || severity.size }.each do |kind, outcomes|
         puts "\n## #{kind} (#{outcomes.size})"
         outcomes.each do |o|
           puts "- #{o.kase.name}  [#{o.problems.map(&:first).uniq.join(', ')}]"

@@ -38,8 +38,9 @@ module Syskit
       !path.start_with?(GEM_LIB, '<internal:')
     end
 
+    # Paths are deduplicated: thousands of declarations share a few files.
     def self.from(loc)
-      new(loc.absolute_path || loc.path, loc.lineno) if loc
+      new(-(loc.absolute_path || loc.path), loc.lineno) if loc
     end
 
     # The path relative to +root+ (by default the loaded app's) when it is

@@ -44,10 +44,12 @@ module Syskit
       robot
     end
 
-    # Defines +<device>_dev+ on the profile module.
+    # Defines +<device>_dev+ on the profile module: an alias of one shared
+    # method, which finds the device from the name it is called by.
     def define_device_action(device)
-      requirement = Network::Requirement.new(device, self)
-      namespace.define_singleton_method("#{device.name}_dev") { requirement }
+      action = "#{device.name}_dev"
+      namespace.singleton_class.send(:alias_method, action, :syskit_device_action)
+      namespace.singleton_class.send(:public, action)
     end
 
     # Action names (+gps_dev+, ...), in declaration order.
@@ -55,15 +57,16 @@ module Syskit
       robot.device_names.map { |n| "#{n}_dev" }
     end
 
-    # The requirement of action +name+ ('gps_dev' or 'gps').
+    # The requirement of action +name+ ('gps_dev' or 'gps'), the same object
+    # every time.
     def find_action(name)
       device = robot.find_device(name.to_s.delete_suffix('_dev'))
-      Network::Requirement.new(device, self) if device
+      (@requirements ||= {})[device] ||= Network::Requirement.new(device, self) if device
     end
 
     # The requirements of every device, for plans of the whole profile.
     def all_requirements
-      robot.devices.map { |d| Network::Requirement.new(d, self) }
+      robot.devices.map { |d| find_action(d.name) }
     end
 
     # Methods of profile modules.
@@ -75,6 +78,12 @@ module Syskit
       def syskit_profile
         @syskit_profile
       end
+
+      # What every +<device>_dev+ method is an alias of.
+      def syskit_device_action
+        @syskit_profile.find_action(__callee__)
+      end
+      private :syskit_device_action
 
       def explain_missing(name)
         actions = syskit_profile.action_names

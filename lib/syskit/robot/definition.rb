@@ -40,7 +40,7 @@ module Syskit
           )
         end
 
-        device = klass.new(self, name, model, using: using, location: location)
+        device = device_class(klass, model, bus).new(self, name, model, using: using, location: location)
         @devices[name] = device
         attach(device, bus, location: location, **options) if bus
         profile&.define_device_action(device)
@@ -88,6 +88,16 @@ module Syskit
       end
 
       private
+
+      # The class for a device of +model+ on +bus+: one that already includes
+      # the configuration modules they add, when they are known now.
+      def device_class(klass, model, bus)
+        return klass unless model.is_a?(Models::DeviceModel)
+
+        modules = model.device_configuration_modules
+        modules += bus.model.attached_device_configuration_modules if bus
+        klass.including(modules)
+      end
 
       def check_name(name, location)
         if name.nil?

@@ -56,7 +56,7 @@ module Syskit
 
       def assign_model(model)
         @model = model
-        model.device_configuration_modules.each { |mod| extend(mod) }
+        configure_with(model.device_configuration_modules)
       end
 
       # The configuration sections applied to the driver, in order. As in
@@ -123,7 +123,19 @@ module Syskit
         @bus = bus
         @client_to_bus = client_to_bus
         @bus_to_client = bus_to_client
-        bus.model.attached_device_configuration_modules.each { |mod| extend(mod) }
+        configure_with(bus.model.attached_device_configuration_modules)
+      end
+
+      # A Device subclass that includes +modules+ (configuration methods of
+      # device and bus models), made once per combination and kept by the
+      # first module: devices declared with known model and bus get their
+      # methods without a singleton class each.
+      def self.including(modules)
+        return self if modules.empty?
+
+        classes = modules.first.instance_variable_get(:@device_classes) ||
+                  modules.first.instance_variable_set(:@device_classes, {})
+        classes[[self, *modules.drop(1)]] ||= Class.new(self) { modules.each { |mod| include mod } }
       end
 
       def attached?
@@ -167,10 +179,15 @@ module Syskit
       end
 
       def inspect
-        "#<#{self.class.name} #{name}>"
+        "#<#{com_bus? ? 'Syskit::Robot::ComBus' : 'Syskit::Robot::Device'} #{name}>"
       end
 
       private
+
+      # Adds the methods of +modules+ that the device's class does not have.
+      def configure_with(modules)
+        modules.each { |mod| extend(mod) unless is_a?(mod) }
+      end
 
       def single_driven_model
         return unless requested_model.is_a?(Class) && requested_model <= TaskContext
@@ -193,7 +210,7 @@ module Syskit
 
       def chainable_methods
         (%w[with_conf prefer_deployed_tasks period burst sample_size doc attach_to] +
-          singleton_class.included_modules.grep(Models::DeviceConfigurationModule)
+          singleton_class.ancestors.grep(Models::DeviceConfigurationModule)
                          .flat_map { |m| m.public_instance_methods(false).map(&:to_s) })
           .reject { |m| m.start_with?('__') }.uniq
       end

@@ -154,6 +154,34 @@ module Syskit
       $configure_order = nil # rubocop:disable Style/GlobalVars
     end
 
+    def test_a_file_without_header_starts_with_the_default_section
+      plan = generate(on_can0, 'config/orogen/sensor::Task.yml' => "threshold: 7.5\n--- name:hot\nthreshold: 40.0\n").plan
+      assert_equal 7.5, plan.find_task('a').properties['threshold']
+    end
+
+    def test_robot_device_and_requirements_with_another_configuration
+      files = {
+        'config/orogen/sensor::Task.yml' => "--- name:default\n--- name:hot\nthreshold: 40.0\n",
+        'models/orogen/sensor.rb' => <<~RUBY
+          require 'models/devices/imu'
+          Syskit.extend_model OroGen.sensor.Task do
+            driver_for MyApp::Devices::TemperatureSensor, as: 'sensor'
+            def configure
+              super
+              raise 'robot_device is not the sensor' unless robot_device.equal?(sensor_dev)
+            end
+          end
+        RUBY
+      }
+      root = my_app(on_can0, FILES.merge(files), libraries: LIBS)
+      app = load_app(root)
+      hot = MyApp::Profiles::Base.a_dev.with_conf('default', 'hot')
+      result = Network::Generator.new(app, [hot], robot_config: app.robot_config).generate
+      assert_equal 40.0, result.plan.find_task('a').properties['threshold']
+      assert_equal ['default'], MyApp::Profiles::Base.a_dev.conf, 'with_conf on an action returns a copy'
+      assert_same MyApp::Profiles::Base.a_dev, MyApp::Profiles::Base.a_dev
+    end
+
     def test_a_subset_of_actions
       plan = generate(on_can0 + "device(Devices::IMU, as: 'imu')\n", actions: ['a_dev']).plan
       assert_equal %w[a can0], plan.tasks.map(&:name)

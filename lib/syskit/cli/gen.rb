@@ -35,7 +35,9 @@ module Syskit
         shell.say EXAMPLES
       end
 
-      class_option :trace, type: :boolean, default: false, desc: 'show the backtrace of errors'
+      # No default: the main command parses --trace first, and a default here
+      # would override what it found.
+      class_option :trace, type: :boolean, desc: 'show the backtrace of errors'
       class_option :force, type: :boolean, default: false, desc: 'overwrite files that exist'
       class_option :dry_run, type: :boolean, default: false, desc: 'list the files that would be written, write nothing'
 

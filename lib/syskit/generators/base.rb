@@ -58,7 +58,7 @@ module Syskit
         return if app_name.split('::').all? { |c| Naming.constant_name?(c) }
 
         raise GeneratorError.new("the app's name '#{app_name}' is not a Ruby constant name",
-                                 hint: "set a name such as AwesomeRobot in #{Syskit::App::CONFIG_FILE} (name: AwesomeRobot)")
+                                 hint: "set one in #{Syskit::App::CONFIG_FILE}, e.g. name: AwesomeRobot")
       end
 
       # The nested modules a model file of +kind+ (Devices, Profiles) opens.

@@ -81,12 +81,25 @@ module Syskit
       end
 
       def check_target(path, full)
+        check_parent(path, full)
         if File.symlink?(full)
           raise GeneratorError.new("#{path} is a symlink, generators do not write through symlinks",
                                    hint: 'remove the symlink, or generate under another name')
         elsif File.directory?(full)
-          raise GeneratorError.new("#{path} is a directory", hint: 'remove or rename it, or generate under another name')
+          raise GeneratorError.new("#{path} is a directory",
+                                   hint: 'remove or rename it, or generate under another name')
         end
+      end
+
+      # The closest existing parent must be a directory, not a file a
+      # directory of +path+ would have to replace.
+      def check_parent(path, full)
+        parent = File.dirname(full)
+        parent = File.dirname(parent) until File.exist?(parent)
+        return if File.directory?(parent)
+
+        raise GeneratorError.new("#{path} cannot be written: #{parent.delete_prefix("#{root}/")} is a file",
+                                 hint: 'remove or rename that file, or generate under another name')
       end
 
       def allowed_description

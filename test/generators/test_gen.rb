@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'helper'
+require 'minitest/mock'
 require 'open3'
 require 'rbconfig'
 
@@ -193,6 +194,21 @@ module Syskit
       assert_match BACKTRACE, err
     end
 
+    def test_errors_of_a_task_library_point_at_its_file
+      app, = new_app
+      File.write(File.join(app, 'models', 'orogen', 'broken.orogen'), "name 'broken'\ntask_contxt 'Task' do\nend\n")
+      error = refused('orogen', 'broken', chdir: app)
+      assert_match(%r{\Amodels/orogen/broken\.orogen:2: .*task_contxt}, error)
+      refute File.exist?(File.join(app, 'models', 'orogen', 'broken.rb'))
+    end
+
+    def test_the_gemfile_of_an_installed_syskit_asks_for_its_version
+      generator = Generators::AppGenerator.new('awesome_robot', pwd: tmpdir)
+      gemfile = generator.stub(:checkout?, false) { generator.files['Gemfile'] }
+      assert_includes gemfile, "gem 'syskit', '~> #{VERSION}'\n"
+      refute_includes gemfile, 'path:'
+    end
+
     def test_generators_run_in_an_app_only
       out_of_app = tmpdir
       assert_match(/\A#{Regexp.escape(out_of_app)} is not in a Syskit app/,
@@ -245,7 +261,7 @@ module Syskit
 
     def test_help_shows_examples
       out, = run_cli('gen', '--help')
-      assert_match(%r{ gen dev TYPE/MANUFACTURER/MODEL  # create a device model}, out)
+      assert_match(%r{ gen dev TYPE/MANUFACTURER/MODEL +# create a device}, out)
       assert_match(%r{^Examples:\n  syskit gen app awesome_robot}, out)
       { 'app' => 'syskit gen app awesome_robot', 'dev' => 'syskit gen dev gps/ublox/f9', 'bus' => 'syskit gen bus can',
         'orogen' => 'syskit gen orogen gps_ublox', 'profile' => 'syskit gen profile live/base' }.each do |cmd, example|

@@ -32,10 +32,12 @@ module Syskit
         )
       end
 
+      # Whether +root+ looks like an app, as App.find_root decides.
       def self.app?(root)
         File.directory?(File.join(root, 'models')) || File.file?(File.join(root, Syskit::App::CONFIG_FILE))
       end
 
+      # +force+ overwrites existing files, +dry_run+ writes nothing.
       def initialize(root, force: false, dry_run: false)
         @root = File.expand_path(root)
         config = Syskit::App.new(root) # reads config/syskit.yml, loads nothing

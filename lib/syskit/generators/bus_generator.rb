@@ -9,6 +9,7 @@ module Syskit
     class BusGenerator < Base
       attr_reader :name
 
+      # +name+: path or constant form; +options+: force:, dry_run:.
       def initialize(root, name, **options)
         super(root, **options)
         # Bus models live in Devices::Bus by convention; the seed writes the

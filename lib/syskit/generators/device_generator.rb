@@ -9,6 +9,7 @@ module Syskit
     class DeviceGenerator < Base
       attr_reader :name
 
+      # +name+: path or constant form; +options+: force:, dry_run:.
       def initialize(root, name, **options)
         super(root, **options)
         @name = Name.parse(name, what: 'device', acronyms: acronyms)

@@ -79,7 +79,7 @@ module Syskit
         path_segments.join('/')
       end
 
-      # models/KIND/gps/ublox/f9.rb
+      # The model file: models/KIND/gps/ublox/f9.rb.
       def model_path(kind)
         File.join('models', kind, "#{path}.rb")
       end

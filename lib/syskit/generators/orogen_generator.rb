@@ -16,6 +16,7 @@ module Syskit
 
       attr_reader :library
 
+      # +library+: the name of an .orogen file; +options+: force:, dry_run:.
       def initialize(root, library, **options)
         super(root, **options)
         @library = library.to_s

@@ -126,13 +126,12 @@ module Syskit
       path = File.realpath(path)
       return false if $LOADED_FEATURES.include?(path)
 
+      # Marked as loaded first, so that a file that fails is reported once
+      # rather than evaluated again by a later `require` of it.
+      $LOADED_FEATURES << path
       source = File.read(path)
-      if source.match?(/^(module|class)\s+[A-Z]/)
-        require_user_file(path)
-      else
-        $LOADED_FEATURES << path
-        eval_in_namespace(source, path)
-      end
+      modules = source.match?(/^(module|class)\s+[A-Z]/) ? [] : namespace_for(path)
+      eval_in_namespace(source, path, modules)
       true
     end
 
@@ -275,25 +274,18 @@ module Syskit
 
       @loading_robot_config = config
       begin
-        eval_in_namespace(File.read(path), path)
+        eval_in_namespace(File.read(path), path, namespace_for(path))
       ensure
         @loading_robot_config = nil
       end
       config
     end
 
-    def eval_in_namespace(source, path)
-      modules = namespace_for(path)
+    def eval_in_namespace(source, path, modules)
       prefix = modules.map { |m| "module #{m};" }.join(' ')
       suffix = "\nend" * modules.size
       # The prefix shares the first line with the file, so line numbers hold.
-      TOPLEVEL_BINDING.eval("#{prefix} #{source}#{suffix}", path, 1)
-    rescue ScriptError, StandardError => e
-      raise UserCode.translate(e, path: path, root: root)
-    end
-
-    def require_user_file(path)
-      require path
+      TOPLEVEL_BINDING.eval(modules.empty? ? source : "#{prefix} #{source}#{suffix}", path, 1)
     rescue ScriptError, StandardError => e
       raise UserCode.translate(e, path: path, root: root)
     end

@@ -12,11 +12,17 @@ module Syskit
       @problems = []
     end
 
+    # Problems are kept in the order they are found: loading first, then
+    # each profile. A profile whose own files failed to load is not
+    # generated: that would only repeat the loading problems.
     def run
       app.load(robots: :all, everything: true)
       @problems.concat(app.problems)
+      failed_files = app.problems.filter_map { |p| p.location&.path }.uniq
       app.profiles.values.sort_by(&:name).each do |profile|
         @problems.concat(Checks::CanFilters.new(profile.robot).warnings)
+        next if (profile_files(profile) & failed_files).any?
+
         app.robot_configs.each_key { |robot| generate(profile, robot) }
       end
       @problems = @problems.uniq { |p| [p.class, p.message, p.location.to_a] }
@@ -32,6 +38,10 @@ module Syskit
     end
 
     private
+
+    def profile_files(profile)
+      ([profile.declared_at] + profile.robot.devices.map(&:declared_at)).compact.map(&:path).uniq
+    end
 
     def generate(profile, robot)
       Network::Generator.plan_profile(app, profile, robot: robot)

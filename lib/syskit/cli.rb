@@ -147,10 +147,15 @@ module Syskit
         return
       end
 
+      # Files in the order their first problem was found, which puts the
+      # cause before what follows from it; lines in order within a file.
       groups = report.problems.group_by { |p| p.location&.relative_path(app.root).to_s }
-      groups.sort.each_with_index do |(_file, problems), i|
+      groups.each_with_index do |(_file, problems), i|
         puts if i.positive?
-        problems.sort_by { |p| p.location&.lineno.to_i }.each { |p| puts p.report(app.root) }
+        problems.sort_by { |p| p.location&.lineno.to_i }.each do |p|
+          puts p.report(app.root)
+          puts (p.backtrace || []).map { |l| "    #{l}" } if options[:trace]
+        end
       end
       puts "#{app.name}: #{report.errors.size} error(s), #{report.warnings.size} warning(s)"
     end

@@ -50,7 +50,9 @@ module Syskit
     def extend_model(model, &block)
       unless model.is_a?(Class) && model < TaskContext
         raise DeclarationError.new("extend_model expects a task model such as OroGen.canbus.Task, got #{model.inspect}",
-                                   location: Location.of_caller)
+                                   location: Location.of_caller,
+                                   hint: 'extend the driver task model (OroGen.library.Task); device and service ' \
+                                         'models are extended in their own device_type/data_service_type block')
       end
 
       model.class_eval(&block) if block

@@ -16,9 +16,18 @@ module Syskit
 
     # The error for a terminal: "file:line: message" then an indented hint.
     def report(root = nil)
-      first = location ? "#{location.to_s(root)}: #{message}" : message
-      hint ? "#{first}\n  hint: #{hint}" : first
+      first = location ? "#{location.to_s(root)}: #{one_line(message)}" : one_line(message)
+      hint ? "#{first}\n  hint: #{one_line(hint)}" : first
     end
+
+    private
+
+    # Names from user files may hold newlines; a report keeps one line each.
+    def one_line(text)
+      text.to_s.gsub("\n", '\n')
+    end
+
+    public
 
     # The error as plain data, for `--format json`.
     def to_h(root = nil)

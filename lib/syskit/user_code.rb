@@ -60,7 +60,7 @@ module Syskit
         text = first_line(exception.message)
         location = path && Location.new(path, 0)
       end
-      FileLoadError.new("syntax error: #{text.strip}", location: location,
+      FileLoadError.new("syntax error: #{text.strip.delete_prefix('syntax error, ')}", location: location,
                                                        hint: 'fix the Ruby syntax at this line')
     end
 
@@ -89,6 +89,19 @@ module Syskit
     end
 
     def suggestion(exception, receiver)
+      return super_hint if exception.message.start_with?('super')
+
+      spelling_suggestion(exception, receiver)
+    rescue StandardError
+      # did_you_mean cannot always compute corrections (e.g. for super)
+      nil
+    end
+
+    def super_hint
+      'super only works inside a method that overrides another (configure does; stub blocks do not)'
+    end
+
+    def spelling_suggestion(exception, receiver)
       candidates =
         if !exception.is_a?(NoMethodError) && receiver.is_a?(Module)
           receiver.constants.map { |c| receiver == Object ? c.to_s : "#{receiver.name}::#{c}" }

@@ -149,7 +149,8 @@ module Syskit
 
     def test_subclass_of_a_library_that_is_not_loaded
       error = spec_error("name 'broken'\ntask_context 'Task', subclasses: 'iodrivers_base::Task' do\nend\n")
-      assert_reported error, /unknown task model 'iodrivers_base::Task'/, at: 'models/orogen/broken.orogen:2',
+      assert_reported error, /iodrivers_base::Task is unknown: task library 'iodrivers_base' is not loaded/,
+                      at: 'models/orogen/broken.orogen:2',
                                                                             hint: /add using_task_library 'iodrivers_base' before this line/, root: Syskit.app.root
     end
 

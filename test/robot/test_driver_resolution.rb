@@ -19,7 +19,7 @@ module Syskit
     def test_no_driver_names_the_library_to_load
       root = my_app("device(Devices::IMU, as: 'imu')\n", libraries: %w[temp])
       error = load_problem(root, robots: [])
-      assert_reported error, /no driver is known for device 'imu' \(MyApp::Devices::IMU\); loaded task libraries: temp/,
+      assert_reported error, /no driver is known for device 'imu' \(MyApp::Devices::IMU\): task library imu has one but is not loaded \(loaded task libraries: temp\)/,
                       at: 'models/profiles/base.rb:7', hint: /add using_task_library 'imu' \(its extension file declares a driver for IMU\)/,
                       root: root
     end

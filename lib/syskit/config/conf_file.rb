@@ -54,7 +54,7 @@ module Syskit
           section = sections[name]
           next unless section&.values&.key?(key)
 
-          offset = section.text.lines.index { |l| l.match?(/^#{Regexp.escape(key)}\s*:/) }
+          offset = section.text.lines.index { |l| l.match?(/^#{Regexp.escape(key.to_s)}\s*:/) }
           return Location.new(path, section.line + 1 + offset.to_i)
         end
         Location.new(path, 1)
@@ -96,17 +96,46 @@ module Syskit
       def load_yaml(text, header_line)
         # Blank lines keep Psych's line numbers those of the file.
         values = Psych.safe_load("\n" * header_line + text, filename: path, aliases: false) || {}
-        return values if values.is_a?(Hash)
+        unless values.is_a?(Hash)
+          raise ConfigurationError.new('a configuration section must map property names to values',
+                                       location: Location.new(path, header_line + 1), hint: 'write property: value lines')
+        end
 
-        raise ConfigurationError.new('a configuration section must map property names to values',
-                                     location: Location.new(path, header_line + 1), hint: 'write property: value lines')
-      rescue Psych::DisallowedClass, Psych::BadAlias => e
-        marker = e.is_a?(Psych::BadAlias) ? /[&*]\w/ : /!/
-        raise ConfigurationError.new("refused: #{e.message}", location: line_of(marker, text, header_line),
-                                                               hint: 'configuration files hold plain data: no tags, no aliases')
+        check_keys(values, text, header_line)
+        values
+      rescue Psych::BadAlias
+        raise ConfigurationError.new('YAML aliases are not allowed in configuration files (*name repeats an &name value)',
+                                     location: line_of(/(?:^|[\s\[{,:])\*\w/, text, header_line),
+                                     hint: 'write the value out again: configuration files hold plain data')
+      rescue Psych::DisallowedClass => e
+        location = line_of(/!/, text, header_line)
+        tag = File.readlines(path)[location.lineno - 1].to_s[/!\S+/]
+        raise ConfigurationError.new("YAML tags such as #{tag || 'this one'} are not allowed in configuration files " \
+                                     "(#{e.message})", location: location,
+                                                       hint: 'configuration files hold plain data: no tags, no Ruby objects')
       rescue Psych::SyntaxError => e
         raise ConfigurationError.new("invalid YAML: #{e.problem}", location: Location.new(path, e.line),
                                                                     hint: 'fix the YAML syntax at this line')
+      end
+
+      # Top-level keys name properties: anything else (5000:, ~:, [a]:) is
+      # refused at its line.
+      def check_keys(values, text, header_line)
+        values.each_key do |key|
+          next if key.is_a?(String)
+
+          offset = text.lines.index { |l| l.match?(/^\S/) && !l.start_with?('#') && l.include?(':') && key_line?(l, key) }
+          raise ConfigurationError.new(
+            "#{key.inspect} is not a property name (configuration keys are property names)",
+            location: Location.new(path, header_line + 1 + offset.to_i),
+            hint: 'write property_name: value, e.g. exposure: 5000'
+          )
+        end
+      end
+
+      def key_line?(line, key)
+        written = line.split(':', 2).first.strip
+        written == key.to_s || (key.nil? && %w[~ null].include?(written)) || written.start_with?('?', '[', '{')
       end
 
       # The first line of a section's +text+ matching +marker+.

@@ -86,7 +86,7 @@ module Syskit
         DeploymentError.new(
           "none of the deployed tasks that can run #{requirement.device}'s driver #{task.model.name} " \
           "matches prefer_deployed_tasks(#{hints}): #{candidates.map(&:to_s).join(', ')}",
-          location: device_location(requirement),
+          location: requirement.device.deployment_hints_location || device_location(requirement),
           hint: 'change the pattern, or deploy a task whose name matches it'
         )
       end

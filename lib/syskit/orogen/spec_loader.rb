@@ -73,14 +73,13 @@ module Syskit
         return found if found
 
         lib_name = name.split('::').first
-        hint =
-          if name.include?('::') && !@app.orogen.loaded?(lib_name)
-            "add using_task_library '#{lib_name}' before this line"
-          else
-            "the task models known here are #{known_task_names.join(', ')}"
-          end
+        if name.include?('::') && !@app.orogen.loaded?(lib_name) && lib_name != library.name
+          raise SpecError.new("#{name} is unknown: task library '#{lib_name}' is not loaded",
+                              location: location, hint: "add using_task_library '#{lib_name}' before this line")
+        end
+
         raise SpecError.new("unknown task model '#{name}'#{Naming.did_you_mean(name, known_task_names)}",
-                            location: location, hint: hint)
+                            location: location, hint: "the task models known here are #{known_task_names.join(', ')}")
       end
 
       private

@@ -130,8 +130,11 @@ module Syskit
         end
         return if model.is_a?(Models::DeviceModel) || (model.is_a?(Class) && model <= TaskContext && model.spec)
 
-        raise DeclarationError.new("device expects a device model (device_type) or its driver task model, " \
-                                   "got #{describe(model)}", location: location)
+        raise DeclarationError.new(
+          "device expects a device model (device_type) or its driver task model, got #{describe(model)}",
+          location: location,
+          hint: model.is_a?(Models::DataServiceModel) ? 'declare the hardware with device_type and make it provide this service' : 'pass a model declared with device_type, e.g. device(Devices::GPS::Ublox::F9, as: \'gps\')'
+        )
       end
 
       def check_using(using, location)
@@ -150,7 +153,8 @@ module Syskit
 
       def unknown_options(unknown, location)
         DeclarationError.new(
-          "unknown option(s) #{unknown.map { |k| "#{k}:" }.join(', ')}#{Naming.did_you_mean(unknown.first, DEVICE_OPTIONS)}",
+          "unknown option(s) #{unknown.map { |k| "#{k}:" }.join(', ')}" \
+          "#{Naming.did_you_mean(unknown.first, %i[as using] + DEVICE_OPTIONS)}",
           location: location,
           hint: 'device takes as:, using:, and, on a bus, client_to_bus: and bus_to_client:; ' \
                 'configure the rest with chained calls (.with_conf, .period, ...)'

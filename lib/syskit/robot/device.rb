@@ -86,8 +86,12 @@ module Syskit
                                      location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
         end
         @deployment_hints.concat(hints.flatten)
+        @deployment_hints_location = Location.of_caller
         self
       end
+
+      # Where prefer_deployed_tasks was last called.
+      attr_reader :deployment_hints_location
 
       # Expected time between two messages of the device, in seconds.
       def period(seconds = nil)

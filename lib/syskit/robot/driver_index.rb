@@ -77,8 +77,9 @@ module Syskit
               "driver_for #{device.model} in that library's extension file"
           end
         loaded = @orogen.loaded_library_names
-        DriverError.new("no driver is known for #{device} (#{device.model}); " \
-                        "loaded task libraries: #{loaded.empty? ? 'none' : loaded.join(', ')}",
+        known = libraries.any? ? "task library #{libraries.join(' or ')} has one but is not loaded" : 'none is loaded'
+        DriverError.new("no driver is known for #{device} (#{device.model}): #{known} " \
+                        "(loaded task libraries: #{loaded.empty? ? 'none' : loaded.join(', ')})",
                         location: device.declared_at, hint: hint)
       end
 

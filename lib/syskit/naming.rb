@@ -17,7 +17,7 @@ module Syskit
     def camelize(segment, acronyms = [])
       return segment if constant_name?(segment) && !segment.include?('_')
 
-      segment.split('_').map do |word|
+      segment.split('_').reject(&:empty?).map do |word|
         acronyms.find { |a| a.casecmp?(word) } || (word[0].upcase + word[1..])
       end.join
     end

@@ -183,7 +183,7 @@ module Syskit
         %w[orogen gps/ublox] => "'gps/ublox' is not a task library name",
         %w[dev elsewhere/thing] => "models/devices/elsewhere/thing.rb would be written outside of models/ and test/",
         %w[orogen gps_ubox] => "no task library 'gps_ubox' (did you mean 'gps_ublox'?)\n  " \
-                               'hint: looked for gps_ubox.orogen in models/orogen, ' }.each do |args, message|
+                               'hint: there is no gps_ubox.orogen in models/orogen, ' }.each do |args, message|
         assert_includes refused(*args, chdir: app), message, args.join(' ')
       end
       assert_equal before, files_of(app)

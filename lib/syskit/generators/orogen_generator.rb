@@ -48,7 +48,8 @@ module Syskit
         # device models: load the app as syskit check would, but leave its
         # problems to syskit check, only this library's matter here.
         app.load
-        path = app.orogen.spec_path(library) || raise(unknown_library(app))
+        path = app.orogen.spec_path(library) ||
+               raise(app.orogen.unknown_library(library, nil, error_class: GeneratorError))
         loaded = app.orogen.library(library) || app.orogen.load_library(library, Location.new(path, 1))
         [spec_description(path), task_infos(loaded, path)]
       ensure
@@ -99,15 +100,6 @@ module Syskit
       def type_expression(type)
         name = type.respond_to?(:name) ? type.name : type.to_s
         name.match?(%r{\A(/[A-Za-z_]\w*)+\z}) ? "Types#{name.tr('/', '.')}" : "'#{name}'"
-      end
-
-      def unknown_library(app)
-        searched = app.orogen_search_dirs.map { |d| Location.new(d, 0).relative_path(root) }
-        GeneratorError.new(
-          "no task library '#{library}'#{Naming.did_you_mean(library, app.orogen.available_library_names)}",
-          hint: "looked for #{library}.orogen in #{searched.join(', ')}; create models/orogen/#{library}.orogen " \
-                'or add its directory to SYSKIT_OROGEN_PATH'
-        )
       end
     end
   end

@@ -99,6 +99,17 @@ module Syskit
       end
 
 
+      # The error for a task library that is on no search directory.
+      def unknown_library(name, location, error_class: FileLoadError)
+        searched = @app.orogen_search_dirs.map { |d| Location.new(d, 0).relative_path(@app.root) }
+        error_class.new(
+          "no task library '#{name}'#{Naming.did_you_mean(name, available_library_names)}",
+          location: location,
+          hint: "there is no #{name}.orogen in #{searched.join(', ')}; " \
+                "create models/orogen/#{name}.orogen or add its directory to SYSKIT_OROGEN_PATH"
+        )
+      end
+
       private
 
       # Library name => deployment names, read from the .orogen files' text.
@@ -106,16 +117,6 @@ module Syskit
         @declared_deployments ||= available_library_names.to_h do |lib|
           [lib, File.read(spec_path(lib)).scan(/^\s*deployment\s*\(?\s*["']([^"']+)["']/).flatten]
         end
-      end
-
-      def unknown_library(name, location)
-        searched = @app.orogen_search_dirs.map { |d| Location.new(d, 0).relative_path(@app.root) }
-        FileLoadError.new(
-          "no task library '#{name}'#{Naming.did_you_mean(name, available_library_names)}",
-          location: location,
-          hint: "there is no #{name}.orogen in #{searched.join(', ')}; " \
-                "create models/orogen/#{name}.orogen or add its directory to SYSKIT_OROGEN_PATH"
-        )
       end
     end
   end

@@ -7,7 +7,7 @@ module Syskit
   # The corpus of broken apps, test/fixtures/broken/<case>/: each is a small
   # app with one defect and an expected.yml saying what a user must see:
   #
-  #   command: check                   # or plan (default: check)
+  #   command: check                   # or plan, gen (default: check)
   #   args: [Base, gsp_dev]            # optional, after the command
   #   location: models/profiles/base.rb:8   # the line where the user must act
   #   message: needs a name|as:        # a regexp the first line's message matches
@@ -41,9 +41,10 @@ module Syskit
         "#{location}: /#{message.source}/"
       end
 
-      # The stream the first line is read from.
+      # The stream the first line is read from: check reports on stdout,
+      # the other commands print errors on stderr.
       def stream
-        command == 'plan' ? :stderr : :stdout
+        command == 'check' ? :stdout : :stderr
       end
     end
 

@@ -169,7 +169,7 @@ module Syskit
     def test_every_case_has_a_valid_expectation
       self.class.case_dirs.each do |dir|
         kase = Case.load(dir)
-        assert_includes %w[check plan], kase.command, kase.name
+        assert_includes %w[check plan gen], kase.command, kase.name
         assert_match(/\A\S+:\d+\z/, kase.location, kase.name)
         path = kase.location.sub(/:\d+\z/, '')
         assert File.file?(File.join(dir, path)), "#{kase.name}: #{kase.location} does not exist"

@@ -4,8 +4,24 @@ module Syskit
   # Statements available in any module body (and, for the ones that make
   # sense there, at the top level of a file), as in the seed's snippets.
   module DSL
+    # Statements of the top level of a file (+using_task_library+ above
+    # +module MyApp+, as in the seed).
+    module TopLevelStatements
+      private
+
+      def using_task_library(name)
+        DSL.app!.using_task_library(name.to_s, location: Location.of_caller)
+      end
+
+      def import_types_from(name)
+        DSL.app!.import_types(name.to_s, location: Location.of_caller)
+      end
+    end
+
     # Model definitions. Included in Module, private, like +attr_reader+.
     module ModuleStatements
+      include TopLevelStatements
+
       private
 
       # +data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+
@@ -45,14 +61,6 @@ module Syskit
         Profile.for_module(self, Location.of_caller).robot_block(&block)
       end
 
-      def using_task_library(name)
-        DSL.app!.using_task_library(name.to_s, location: Location.of_caller)
-      end
-
-      def import_types_from(name)
-        DSL.app!.import_types(name.to_s, location: Location.of_caller)
-      end
-
       def profile_module(name, location)
         unless Naming.constant_name?(name)
           raise DeclarationError.new("'#{name}' is not a valid profile name", location: location,
@@ -65,20 +73,6 @@ module Syskit
 
         raise DeclarationError.new("#{self}::#{name} is already defined and is not a profile", location: location,
                                                                                                 hint: 'give the profile another name')
-      end
-    end
-
-    # Statements of the top level of a file (+using_task_library+ above
-    # +module MyApp+, as in the seed).
-    module TopLevelStatements
-      private
-
-      def using_task_library(name)
-        DSL.app!.using_task_library(name.to_s, location: Location.of_caller)
-      end
-
-      def import_types_from(name)
-        DSL.app!.import_types(name.to_s, location: Location.of_caller)
       end
     end
 

@@ -21,6 +21,7 @@ Gem::Specification.new do |spec|
   spec.executables = ['syskit']
   spec.require_paths = ['lib']
 
+  spec.add_dependency 'ffi', '~> 1.15'
   spec.add_dependency 'thor', '~> 1.2'
 
   spec.add_development_dependency 'minitest', '~> 5.15'

@@ -15,7 +15,7 @@ module Syskit
       DEVICE_HEADER = ['Device', 'Filter', 'Frames', 'IDs', 'First (s)', 'Last (s)', 'Rate (/s)'].freeze
       ID_HEADER = ['ID', 'Frames', 'First (s)', 'Last (s)'].freeze
       # Columns aligned right (numbers), by header.
-      RIGHT = ['Frames', 'IDs', 'First (s)', 'Last (s)', 'Rate (/s)'].freeze
+      RIGHT = ['Frames', 'IDs', 'First (s)', 'Last (s)', 'Rate (/s)', 'Now (/s)'].freeze
 
       module_function
 

@@ -43,7 +43,7 @@ module Syskit
         end
       end
 
-      desc 'monitor PROFILE --interface IFACE', 'watch a live SocketCAN bus through the devices of a plan'
+      desc 'monitor PROFILE', 'watch a live SocketCAN bus through the devices of a plan'
       long_desc <<~TEXT
         Opens the SocketCAN interface IFACE (Linux, classic and CAN FD frames)
         and shows the replay table of the bus, refreshed every --interval
@@ -64,13 +64,17 @@ module Syskit
         require 'syskit/bus/monitor'
         with_plan(profile_name) do |dispatcher, source|
           io = ::Syskit::Bus::SocketCAN.open(options[:interface])
-          monitor = ::Syskit::Bus::Monitor.new(dispatcher, io, source: source.merge('interface' => options[:interface]),
-                                                               out: $stdout, interval: options[:interval],
-                                                               live: options[:format] == 'text')
-          print_report(monitor.run(duration: options[:duration]))
-        ensure
-          io&.close
+          begin
+            monitor = ::Syskit::Bus::Monitor.new(dispatcher, io, source: source.merge('interface' => options[:interface]),
+                                                                 interval: options[:interval], live: options[:format] == 'text')
+            print_report(monitor.run(duration: options[:duration]))
+          ensure
+            io.close
+          end
         end
+      rescue Interrupt
+        # Ctrl-C before the bus is opened: stop quietly, as the shell expects.
+        exit(130)
       end
 
       private

@@ -57,6 +57,15 @@ module Syskit
         assert_equal ['a'], d.receivers(std(0x80))
       end
 
+      def test_write_only_devices_are_named_as_the_likely_senders_of_their_ids
+        d = Dispatcher.new('can0', [dev('sync', [0x80, 0x7FF], bus_to_client: false), dev('a', [0x300, 0x7F0]),
+                                    dev('w', nil, bus_to_client: false)])
+        assert_equal [], d.receivers(std(0x80))
+        assert_equal ['sync'], d.writers(std(0x80))
+        assert_equal [], d.writers(ext(0x80))
+        assert_equal [], d.writers(std(0x305))
+      end
+
       def test_one_hash_per_distinct_mask
         devices = Array.new(20) { |i| dev("d#{i}", [0x100 + (i * 0x10), 0x7F0]) } +
                   Array.new(5) { |i| dev("e#{i}", [0x1000 + i, 0x1FFFFFFF]) }

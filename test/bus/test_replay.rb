@@ -147,6 +147,14 @@ module Syskit
       assert_equal [['7E5', false, 2], ['0000ABCD', true, 1]], unclaimed
     end
 
+    def test_unclaimed_ids_name_the_write_only_devices_whose_filter_matches
+      File.write(@log, "(1.000000) can0 200#01\n(2.000000) can0 200#02\n(3.000000) can0 7E5#00\n")
+      unclaimed = replay_json['unclaimed'].map { |u| [u['hex'], u['write_only_matches']] }
+      assert_equal [['200', ['writer']], ['7E5', []]], unclaimed
+      out, = run_cli('bus', 'replay', 'Base', @log, '--app', @app)
+      assert_match(/^  200 +2 +0\.000 +1\.000  filter of write-only writer$/, out)
+    end
+
     def test_frames_several_devices_receive_are_grouped_by_id_with_the_devices
       overlaps = replay_json['overlaps'].map { |o| [o['hex'], o['frames'], o['devices']] }
       assert_equal [['120', 1, %w[narrow wide]], ['125', 3, %w[narrow wide]]], overlaps

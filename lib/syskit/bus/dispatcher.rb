@@ -47,8 +47,11 @@ module Syskit
       def initialize(bus, plan_devices)
         @bus = bus
         @devices = plan_devices.map { |d| device_entry(d) }.sort_by(&:name).freeze
-        @standard = mask_groups(@devices.select { |d| d.filter && !d.filter.extended? })
-        @extended = mask_groups(@devices.select { |d| d.filter&.extended? })
+        receiving = @devices.select { |d| d.status == :filtered }
+        @standard, @extended = groups_by_kind(receiving)
+        # Write-only devices may declare the ids they send: reports use them
+        # to explain frames that nobody receives.
+        @writers = groups_by_kind(@devices.select { |d| d.status == :write_only && d.filter })
         @cache = {}
       end
 
@@ -62,19 +65,14 @@ module Syskit
       # Same as #receivers, without the cache: one hash lookup per distinct
       # mask of the frame's kind.
       def lookup(key)
-        if key & Frame::EFF_FLAG == 0
-          groups = @standard
-          id = key
-        else
-          groups = @extended
-          id = key & Frame::EFF_MASK
-        end
-        found = nil
-        groups.each do |mask, by_id|
-          names = by_id[id & mask]
-          found = found ? found + names : names if names
-        end
-        found ? found.sort.freeze : NONE
+        key & Frame::EFF_FLAG == 0 ? match(@standard, key) : match(@extended, key & Frame::EFF_MASK)
+      end
+
+      # The names of the write-only devices whose can_id filter matches
+      # +key+: the frames they send, when they declare them.
+      def writers(key)
+        extended = key & Frame::EFF_FLAG != 0
+        match(@writers[extended ? 1 : 0], key & Frame::EFF_MASK)
       end
 
       # Number of distinct masks, standard and extended.
@@ -83,6 +81,15 @@ module Syskit
       end
 
       private
+
+      def match(groups, id)
+        found = nil
+        groups.each do |mask, by_id|
+          names = by_id[id & mask]
+          found = found ? found + names : names if names
+        end
+        found ? found.sort.freeze : NONE
+      end
 
       def remember(key, names)
         @cache[key] = names if @cache.size < CACHE_LIMIT
@@ -99,11 +106,16 @@ module Syskit
         Device.new(device.name, filter, status).freeze
       end
 
+      # [standard groups, extended groups] of +devices+ (see #mask_groups).
+      def groups_by_kind(devices)
+        extended, standard = devices.partition { |d| d.filter.extended? }
+        [mask_groups(standard), mask_groups(extended)]
+      end
+
       # [[mask, { id => [names] }], ...]: an array, since it is iterated for
       # every frame and has few entries.
       def mask_groups(devices)
-        devices.select { |d| d.status == :filtered }
-               .group_by { |d| d.filter.mask }
+        devices.group_by { |d| d.filter.mask }
                .map { |mask, group| [mask, group.group_by { |d| d.filter.id }.transform_values { |ds| ds.map(&:name).freeze }] }
                .sort_by(&:first).freeze
       end

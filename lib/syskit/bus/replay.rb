@@ -19,12 +19,16 @@ module Syskit
       # +dispatcher+: the bus (Dispatcher); +path+: the candump log;
       # +interface+: the log interface to read (default: the first seen);
       # +source+: what the report says about the plan (profile, robot).
-      def initialize(dispatcher, path, interface: nil, source: {}, progress_out: $stderr)
+      # +progress_out+ gets a progress bar when it is a terminal and the log
+      # has at least +progress_min_bytes+.
+      def initialize(dispatcher, path, interface: nil, source: {}, progress_out: $stderr,
+                     progress_min_bytes: Progress::MIN_BYTES)
         @dispatcher = dispatcher
         @path = path
         @log = CandumpLog.new(path, interface: interface)
         @source = source
         @progress_out = progress_out
+        @progress_min_bytes = progress_min_bytes
       end
 
       # Reads the whole log; returns the Report. With +strict+, a malformed
@@ -32,7 +36,7 @@ module Syskit
       def run(strict: false)
         traffic = Traffic.new
         File.open(@path, 'rb') do |io|
-          progress = Progress.for(io.size, out: @progress_out)
+          progress = Progress.for(io.size, out: @progress_out, min_bytes: @progress_min_bytes)
           begin
             log.read(io, traffic) do
               progress.update(io.pos, traffic.frames) if progress && (log.lines % PROGRESS_EVERY).zero?

@@ -16,8 +16,10 @@ module Syskit
           Report.rate(frames, first, last)
         end
       end
-      # One frame key (id + extended flag) and the devices receiving it.
-      IdRow = Struct.new(:key, :frames, :first, :last, :devices, keyword_init: true)
+      # One frame key (id + extended flag), the devices receiving it and,
+      # for ids nobody receives, the write-only devices whose can_id matches
+      # (most likely their senders).
+      IdRow = Struct.new(:key, :frames, :first, :last, :devices, :writers, keyword_init: true)
 
       attr_reader :bus, :traffic, :devices, :unclaimed, :overlaps, :source
 
@@ -57,7 +59,7 @@ module Syskit
           'first_time' => Report.seconds(traffic.first_time), 'last_time' => Report.seconds(traffic.last_time),
           'duration' => duration,
           'devices' => devices.map { |d| device_hash(d) },
-          'unclaimed' => unclaimed.map { |r| id_hash(r).merge('first_time' => Report.seconds(r.first), 'last_time' => Report.seconds(r.last)) },
+          'unclaimed' => unclaimed.map { |r| unclaimed_hash(r) },
           'overlaps' => overlaps.map { |r| id_hash(r).merge('devices' => r.devices) }
         }
       end
@@ -74,7 +76,7 @@ module Syskit
           stats = traffic.ids[key]
           names = dispatcher.receivers(key)
           names.each { |name| add(rows.fetch(name), key, stats) }
-          @unclaimed << id_row(key, stats) if names.empty?
+          @unclaimed << id_row(key, stats, writers: dispatcher.writers(key)) if names.empty?
           @overlaps << id_row(key, stats, names) if names.size > 1
         end
         @devices = rows.values
@@ -87,8 +89,8 @@ module Syskit
         row.last = stats.last if stats.last && (row.last.nil? || stats.last > row.last)
       end
 
-      def id_row(key, stats, names = [])
-        IdRow.new(key: key, frames: stats.count, first: stats.first, last: stats.last, devices: names)
+      def id_row(key, stats, names = [], writers: [])
+        IdRow.new(key: key, frames: stats.count, first: stats.first, last: stats.last, devices: names, writers: writers)
       end
 
       def id_hash(row)
@@ -96,12 +98,17 @@ module Syskit
           'extended' => row.key & Frame::EFF_FLAG != 0, 'frames' => row.frames }
       end
 
+      def unclaimed_hash(row)
+        id_hash(row).merge('first_time' => Report.seconds(row.first), 'last_time' => Report.seconds(row.last),
+                           'write_only_matches' => row.writers)
+      end
+
       def device_hash(row)
         filter = row.filter && { 'id' => row.filter.id, 'mask' => row.filter.mask, 'extended' => row.filter.extended? }
         {
           'name' => row.name, 'status' => row.status.to_s, 'filter' => filter, 'frames' => row.frames,
           'distinct_ids' => row.keys.size, 'ids' => row.keys.map { |k| Frame.key_to_s(k) },
-          'first_time' => Report.seconds(row.first), 'last_time' => Report.seconds(row.last), 'rate' => row.rate
+          'first_time' => Report.seconds(row.first), 'last_time' => Report.seconds(row.last), 'rate' => row.rate&.round(3)
         }
       end
     end

@@ -60,7 +60,13 @@ module Syskit
         title = "Frames no device receives: #{count(rows)}"
         return "#{title}\n" if rows.empty?
 
-        "#{title}\n#{table(ID_HEADER, rows.map { |r| id_cells(report, r) }, indent: '  ')}"
+        head = ID_HEADER
+        body = rows.map { |r| id_cells(report, r) }
+        if rows.any? { |r| r.writers.any? }
+          head += ['Note']
+          body = body.zip(rows).map { |cells, r| cells + [r.writers.empty? ? '' : "filter of write-only #{r.writers.join(', ')}"] }
+        end
+        "#{title}\n#{table(head, body, indent: '  ')}"
       end
 
       def overlaps(report)

@@ -141,6 +141,7 @@ module Syskit
 
     def print_check(app, report)
       if options[:format] == 'json'
+        require 'json'
         puts ::JSON.pretty_generate('app' => app.name, 'errors' => report.errors.size,
                                     'warnings' => report.warnings.size,
                                     'problems' => report.problems.map { |p| p.to_h(app.root) })

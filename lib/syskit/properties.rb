@@ -4,11 +4,15 @@ module Syskit
   # The +properties+ of a task: one reader and writer per property of its
   # model, checking values against the property's type.
   class Properties
-    # The properties class of +task_model+, with a method per property.
+    # The properties class of +task_model+, with a reader and a writer per
+    # property. A property named like a method of this class (names, to_h,
+    # ...) keeps the method; it is read and written with properties['name'].
     def self.for(task_model)
       klass = Class.new(self)
       klass.instance_variable_set(:@task_model, task_model)
       task_model.property_declarations.each_key do |name|
+        next if method_defined?(name) || private_method_defined?(name)
+
         klass.define_method(name) { self[name] }
         klass.define_method("#{name}=") { |value| self[name] = value }
       end
@@ -91,6 +95,8 @@ module Syskit
     def self.for(task_model)
       klass = Class.new(self)
       task_model.property_declarations.each_key do |name|
+        next if method_defined?(name) || private_method_defined?(name)
+
         klass.define_method(name) { @task.properties[name] }
       end
       klass

@@ -1,7 +1,5 @@
 # frozen_string_literal: true
 
-require 'json'
-
 module Syskit
   module Render
     # The plan for people reading a terminal.
@@ -26,10 +24,22 @@ module Syskit
         out = +"  #{task.name}  #{task.model}  (deployment #{task.deployment}, conf #{task.conf.join(', ')})\n"
         out << "    devices     #{task.devices.join(', ')}\n" unless task.devices.empty?
         out << "    depends on  #{task.depends_on.join(', ')}\n" unless task.depends_on.empty?
-        out << block('properties', task.properties.map { |k, v| "#{k}: #{::JSON.generate(v)}" })
+        out << block('properties', task.properties.map { |k, v| "#{k}: #{plain(v)}" })
         out << block('ports', task.ports.map do |p|
           "#{p.name}  #{p.direction} #{p.type}#{' (dynamic)' if p.dynamic}"
         end)
+      end
+
+      # Plain data written as compact JSON, without loading the json library
+      # (whose Kernel#j would then be callable from user files).
+      def plain(value)
+        case value
+        when Hash then "{#{value.map { |k, v| "#{k.to_s.inspect}:#{plain(v)}" }.join(',')}}"
+        when Array then "[#{value.map { |v| plain(v) }.join(',')}]"
+        when String then value.inspect
+        when nil then 'null'
+        else value.to_s
+        end
       end
 
       def block(title, lines)

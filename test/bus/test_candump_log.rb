@@ -95,7 +95,7 @@ module Syskit
           .each { |text| assert_equal text, frame(text).to_candump }
       end
 
-      MIXED = <<~LOG
+      MIXED = <<~LOG.freeze
         (1436509053.249713) can0 123#DEADBEEF
         (1436509053.249800)  can0 00000123#00 R
         (1436509053.249900) can1 123#00

@@ -53,7 +53,8 @@ module Syskit
 
       def test_devices_that_cannot_receive
         d = Dispatcher.new('can0', [dev('w', [0x80, 0x7FF], bus_to_client: false), dev('n'), dev('a', [0x80, 0x7FF])])
-        assert_equal({ 'a' => :filtered, 'n' => :no_filter, 'w' => :write_only }, d.devices.to_h { |x| [x.name, x.status] })
+        statuses = d.devices.to_h { |x| [x.name, x.status] }
+        assert_equal({ 'a' => :filtered, 'n' => :no_filter, 'w' => :write_only }, statuses)
         assert_equal ['a'], d.receivers(std(0x80))
       end
 
@@ -80,7 +81,7 @@ module Syskit
           dev("d#{i}", [random.rand(0x2000_0000) & mask, mask])
         end
         d = Dispatcher.new('can0', devices)
-        filters = d.devices.map { |x| [x.name, x.filter] }
+        filters = d.devices.map { |x| [x.name, x.can_filter] }
         2000.times do
           extended = random.rand(2).zero?
           id = extended ? random.rand(0x2000_0000) : random.rand(0x800)

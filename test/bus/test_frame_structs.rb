@@ -57,8 +57,9 @@ module Syskit
         type = message_type
         frame = Frame.new(can_id: 0x1234 | Frame::EFF_FLAG, data: "\x08\x75".b, time: 1_436_509_053_252_905)
         message = FrameStructs.to_message(frame, type)
-        assert_equal type.new(time: { microseconds: 1_436_509_053_252_905 }, can_time: { microseconds: 1_436_509_053_252_905 },
-                              can_id: 0x8000_1234, size: 2, data: [8, 0x75, 0, 0, 0, 0, 0, 0]), message
+        stamp = { microseconds: 1_436_509_053_252_905 }
+        expected = type.new(time: stamp, can_time: stamp, can_id: 0x8000_1234, size: 2, data: [8, 0x75, 0, 0, 0, 0, 0, 0])
+        assert_equal expected, message
         assert_equal frame, FrameStructs.from_message(message)
       end
 

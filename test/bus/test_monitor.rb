@@ -76,7 +76,7 @@ module Syskit
         report = Monitor.new(dispatcher, reader, out: StringIO.new, live: false).run
         counts = report.devices.to_h { |d| [d.name, d.frames] }
         assert_equal({ 'n2k' => 10, 'sync' => 0, 'temperature_sensor' => 10, 'water_temperature' => 20 }, counts)
-        assert_equal [[0x080, 10]], report.unclaimed.map { |r| [r.key, r.frames] }
+        assert_equal([[0x080, 10]], report.unclaimed.map { |r| [r.key, r.frames] })
         assert_equal [50, 10, 10], [report.traffic.frames, report.traffic.fd, report.traffic.rtr]
       end
 
@@ -95,7 +95,7 @@ module Syskit
         thread.join
         tables = out.string.split("(Ctrl-C to stop)\n")
         assert_operator tables.size, :>=, 2, out.string
-        assert_match(/^Device +Filter +Frames +IDs +First \(s\) +Last \(s\) +Rate \(\/s\) +Now \(\/s\)$/, out.string)
+        assert_match(%r{^Device +Filter +Frames +IDs +First \(s\) +Last \(s\) +Rate \(/s\) +Now \(/s\)$}, out.string)
         assert_includes out.string, 'interface test: '
       end
 
@@ -170,7 +170,7 @@ module Syskit
 
       def test_monitors_a_vcan_interface
         iface = SocketCAN.can_interfaces.find { |n| n.start_with?('vcan') }
-        skip 'no vcan interface here (sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set up vcan0)' unless iface
+        skip "no vcan interface here (#{SocketCAN::VCAN_HINT})" unless iface
 
         reader = SocketCAN.open(iface).tap { |io| @sockets << io }
         writer = SocketCAN.open(iface).tap { |io| @sockets << io }

@@ -102,7 +102,8 @@ module Syskit
     end
 
     def replay_json(*args, log: @log)
-      out, err, status = run_cli('bus', 'replay', 'Base', log, '--app', @app, '--bus', 'can0', '--format', 'json', *args)
+      out, err, status = run_cli('bus', 'replay', 'Base', log, '--app', @app, '--bus', 'can0', '--format', 'json',
+                                 *args)
       assert_equal 0, status, err
       JSON.parse(out)
     end
@@ -170,7 +171,7 @@ module Syskit
     def test_malformed_lines_are_counted_with_their_line_numbers
       malformed = replay_json['source']['malformed']
       assert_equal 2, malformed['count']
-      assert_equal [7, 15], malformed['lines'].map { |l| l['line'] }
+      assert_equal([7, 15], malformed['lines'].map { |l| l['line'] })
       assert_match(/odd|pairs of hex digits/, malformed['lines'][1]['message'])
       assert_equal '(1600000001.300000) can0 123#123', malformed['lines'][1]['text']
     end
@@ -206,8 +207,8 @@ module Syskit
       assert_includes out, "Bus can0 of MyApp::Profiles::Base (robot default)\n"
       assert_includes out, "interface can0: 14 frames in 1.400 s\n"
       assert_includes out, "  standard 8, extended 5, CAN FD 1, RTR 1, error frames 1\n"
-      assert_match(/^wide +100\/700 +6 +3 +0\.000 +1\.100 +4\.5$/, out)
-      assert_match(/^exact_ext +00000120\/1FFFFFFF ext +2 +1 +0\.200 +1\.200 +1\.0$/, out)
+      assert_match(%r{^wide +100/700 +6 +3 +0\.000 +1\.100 +4\.5$}, out)
+      assert_match(%r{^exact_ext +00000120/1FFFFFFF ext +2 +1 +0\.200 +1\.200 +1\.0$}, out)
       assert_match(/^mute +no can_id filter: receives nothing by filter$/, out)
       assert_match(/^writer +write-only \(bus_to_client: false\): receives nothing$/, out)
       assert_includes out, "Frames no device receives: 2 ids, 3 frames\n"
@@ -260,7 +261,7 @@ module Syskit
       assert_equal 0, status, err
       report = JSON.parse(out)
       receiving = report['devices'].select { |d| d['status'] == 'filtered' }
-      assert_equal %w[n2k temperature_sensor water_temperature], receiving.map { |d| d['name'] }
+      assert_equal(%w[n2k temperature_sensor water_temperature], receiving.map { |d| d['name'] })
       assert(receiving.all? { |d| d['frames'].positive? })
       assert_equal 'write_only', device(report, 'sync')['status']
     end

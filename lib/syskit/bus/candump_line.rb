@@ -23,7 +23,7 @@ module Syskit
       # What a malformed line raises; its message is for the user.
       class Malformed < StandardError; end
 
-      LINE = /\A\((\d+)\.(\d{1,9})\) +(\S+) (\S+)(?: [RT])?\z/.freeze
+      LINE = /\A\((\d+)\.(\d{1,9})\) +(\S+) (\S+)(?: [RT])?\z/
 
       module_function
 
@@ -95,7 +95,10 @@ module Syskit
         # len8_dlc (_9.._F): a classic frame of 8 bytes with a DLC above 8.
         text = text.sub(/_\h\z/, '') if max == Frame::CAN_MAX_LEN
         hex = text.delete('.')
-        raise Malformed, "bad data '#{text}' in '#{frame_text}': pairs of hex digits expected" unless hex.match?(/\A(\h\h)*\z/)
+        unless hex.match?(/\A(\h\h)*\z/)
+          raise Malformed,
+                "bad data '#{text}' in '#{frame_text}': pairs of hex digits expected"
+        end
 
         len = hex.size / 2
         check_length(len, max, frame_text)

@@ -20,7 +20,7 @@ module Syskit
       # A line as candump writes it, checked whole without captures (no
       # allocation): lines that pass are read by index arithmetic, the
       # others (rare: malformed or unusual spellings) by CandumpLine.
-      WRITTEN = /\A\(\d+\.\d{6}\) +[^ \n]+ (?:\h{3}|\h{8})#(?:R[0-8]?|#\h(?:\h\h){0,64}|(?:\h\h){0,8})(?: [RT])?\n?\z/.freeze
+      WRITTEN = /\A\(\d+\.\d{6}\) +[^ \n]+ (?:\h{3}|\h{8})#(?:R[0-8]?|#\h(?:\h\h){0,64}|(?:\h\h){0,8})(?: [RT])?\n?\z/
       SPACE = 32
       FD_MARK = 35 # '#'
       RTR_MARK = 82 # 'R'

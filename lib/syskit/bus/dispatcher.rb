@@ -27,7 +27,7 @@ module Syskit
       # A device as the dispatcher sees it. +status+ is :filtered (receives
       # by its filter), :no_filter (reads the bus but declares no can_id, so
       # receives nothing by filter) or :write_only (bus_to_client: false).
-      Device = Struct.new(:name, :filter, :status)
+      Device = Struct.new(:name, :can_filter, :status)
 
       attr_reader :bus, :devices
 
@@ -38,8 +38,8 @@ module Syskit
 
         buses = plan.devices.filter_map(&:bus).uniq.sort
         known = plan.find_device(bus) ? "#{bus} has no device attached" : "the plan has no bus named '#{bus}'"
-        raise UnknownName.new("#{known}#{Naming.did_you_mean(bus, buses)}",
-                              hint: buses.empty? ? 'this profile has no device attached to a bus' : "buses with devices: #{buses.join(', ')}")
+        hint = buses.empty? ? 'this profile has no device attached to a bus' : "buses with devices: #{buses.join(', ')}"
+        raise UnknownName.new("#{known}#{Naming.did_you_mean(bus, buses)}", hint: hint)
       end
 
       # +plan_devices+ are Network::Plan::Device entries (name, bus_to_client,
@@ -51,7 +51,7 @@ module Syskit
         @standard, @extended = groups_by_kind(receiving)
         # Write-only devices may declare the ids they send: reports use them
         # to explain frames that nobody receives.
-        @writers = groups_by_kind(@devices.select { |d| d.status == :write_only && d.filter })
+        @writers = groups_by_kind(@devices.select { |d| d.status == :write_only && d.can_filter })
         @cache = {}
       end
 
@@ -108,16 +108,17 @@ module Syskit
 
       # [standard groups, extended groups] of +devices+ (see #mask_groups).
       def groups_by_kind(devices)
-        extended, standard = devices.partition { |d| d.filter.extended? }
+        extended, standard = devices.partition { |d| d.can_filter.extended? }
         [mask_groups(standard), mask_groups(extended)]
       end
 
       # [[mask, { id => [names] }], ...]: an array, since it is iterated for
       # every frame and has few entries.
       def mask_groups(devices)
-        devices.group_by { |d| d.filter.mask }
-               .map { |mask, group| [mask, group.group_by { |d| d.filter.id }.transform_values { |ds| ds.map(&:name).freeze }] }
-               .sort_by(&:first).freeze
+        devices.group_by { |d| d.can_filter.mask }.sort.map do |mask, group|
+          by_id = group.group_by { |d| d.can_filter.id }.transform_values { |same| same.map(&:name).freeze }
+          [mask, by_id.freeze].freeze
+        end.freeze
       end
     end
   end

@@ -10,6 +10,7 @@ module Syskit
     # nil when unknown); +fd_flags+ the CAN FD flags, nil for a classic frame.
     Frame = Struct.new(:can_id, :len, :data, :time, :fd_flags, keyword_init: true)
 
+    # The flags, masks and kinds of a Frame.
     class Frame
       EFF_FLAG = 0x8000_0000
       RTR_FLAG = 0x4000_0000

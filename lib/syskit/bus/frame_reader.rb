@@ -64,8 +64,8 @@ module Syskit
       def decode(bytes)
         FrameStructs.decode(bytes, time: @clock.call)
       rescue ArgumentError => e
-        raise InterfaceError.new("cannot read a CAN frame from #{@io.inspect}: #{e.message}",
-                                 hint: @mtu ? 'the stream ended in the middle of a record' : 'read CAN frames from a raw CAN socket')
+        hint = @mtu ? 'the stream ended in the middle of a record' : 'read CAN frames from a raw CAN socket'
+        raise InterfaceError.new("cannot read a CAN frame from #{@io.inspect}: #{e.message}", hint: hint)
       end
     end
   end

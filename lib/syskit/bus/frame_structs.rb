@@ -67,7 +67,9 @@ module Syskit
         # beyond 11 bits (drivers that drop the flags) is an extended id.
         def from_message(message)
           can_id = message.can_id
-          can_id |= Frame::EFF_FLAG if can_id & (Frame::EFF_FLAG | Frame::ERR_FLAG) == 0 && can_id & Frame::EFF_MASK > Frame::SFF_MASK
+          if can_id & (Frame::EFF_FLAG | Frame::ERR_FLAG) == 0 && can_id & Frame::EFF_MASK > Frame::SFF_MASK
+            can_id |= Frame::EFF_FLAG
+          end
           rtr = can_id & Frame::RTR_FLAG != 0
           data = rtr ? ''.b : message.data.first(message.size).pack('C*')
           from_frame(Frame.new(can_id: can_id, len: message.size, data: data, time: message.time.microseconds))
@@ -110,6 +112,8 @@ module Syskit
 
       CAN_MTU = CanFrame.size
       CANFD_MTU = CanFdFrame.size
+      # The record class by size: a raw CAN socket's reads are one or the other.
+      RECORDS = { CAN_MTU => CanFrame, CANFD_MTU => CanFdFrame }.freeze
 
       module_function
 
@@ -125,11 +129,10 @@ module Syskit
 
       # The Frame of +bytes+ (16 or 72 of them), read at +time+.
       def decode(bytes, time: nil)
-        record = case bytes.bytesize
-                 when CAN_MTU then CanFrame
-                 when CANFD_MTU then CanFdFrame
-                 else raise ArgumentError, "#{bytes.bytesize} bytes: a CAN frame record is #{CAN_MTU} (can_frame) or #{CANFD_MTU} (canfd_frame)"
-                 end
+        record = RECORDS.fetch(bytes.bytesize) do |size|
+          raise ArgumentError,
+                "#{size} bytes: a CAN frame record is #{CAN_MTU} (can_frame) or #{CANFD_MTU} (canfd_frame)"
+        end
         record.from_bytes(bytes).to_frame(time: time)
       end
 

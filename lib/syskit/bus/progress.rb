@@ -32,7 +32,7 @@ module Syskit
         done = (bytes.to_f / @total).clamp(0.0, 1.0)
         filled = (done * WIDTH).round
         @out.print(format("\r[%<bar>s] %<pct>3d%% %<frames>d frames", bar: ('#' * filled).ljust(WIDTH),
-                                                                       pct: (done * 100).floor, frames: frames))
+                                                                      pct: (done * 100).floor, frames: frames))
       end
 
       # Erases the bar.

@@ -58,15 +58,20 @@ module Syskit
         others = log.other_interfaces.sort.to_h
         @source.merge(
           'log' => @path, 'interface' => log.interface, 'other_interfaces' => others, 'lines' => log.lines,
-          'malformed' => { 'count' => log.malformed_count,
-                           'lines' => log.malformed.map { |m| { 'line' => m.lineno, 'message' => m.message, 'text' => m.text } } }
+          'malformed' => { 'count' => log.malformed_count, 'lines' => log.malformed.map { |m| malformed_hash(m) } }
         )
+      end
+
+      def malformed_hash(malformed)
+        { 'line' => malformed.lineno, 'message' => malformed.message, 'text' => malformed.text }
       end
 
       def strict_error
         first = log.malformed.first
         more = log.malformed_count - 1
-        LogError.new("malformed candump line: #{first.message}#{" (and #{more} more malformed #{more == 1 ? 'line' : 'lines'})" if more.positive?}",
+        others = ''
+        others = " (and #{more} more malformed #{more == 1 ? 'line' : 'lines'})" if more.positive?
+        LogError.new("malformed candump line: #{first.message}#{others}",
                      location: Location.new(@path, first.lineno),
                      hint: 'lines look like "(1436509053.249713) can0 123#DEADBEEF" (candump -l); ' \
                            'without --strict, malformed lines are skipped and reported')

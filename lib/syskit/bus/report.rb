@@ -9,17 +9,18 @@ module Syskit
     # receive. A value: renderers (ReportText, #to_h for JSON) only read it.
     class Report
       # One device of the bus. +status+: see Dispatcher::Device.
-      DeviceRow = Struct.new(:name, :status, :filter, :frames, :keys, :first, :last, keyword_init: true) do
+      DeviceRow = Struct.new(:name, :status, :can_filter, :frames, :keys, :first_time, :last_time,
+                             keyword_init: true) do
         # Mean reception rate in frames/s: intervals between the first and
         # last frame, over the time between them (nil under two frames).
         def rate
-          Report.rate(frames, first, last)
+          Report.rate(frames, first_time, last_time)
         end
       end
       # One frame key (id + extended flag), the devices receiving it and,
       # for ids nobody receives, the write-only devices whose can_id matches
       # (most likely their senders).
-      IdRow = Struct.new(:key, :frames, :first, :last, :devices, :writers, keyword_init: true)
+      IdRow = Struct.new(:key, :frames, :first_time, :last_time, :devices, :writers, keyword_init: true)
 
       attr_reader :bus, :traffic, :devices, :unclaimed, :overlaps, :source
 
@@ -68,7 +69,7 @@ module Syskit
 
       def build(dispatcher)
         rows = dispatcher.devices.to_h do |d|
-          [d.name, DeviceRow.new(name: d.name, status: d.status, filter: d.filter, frames: 0, keys: [])]
+          [d.name, DeviceRow.new(name: d.name, status: d.status, can_filter: d.can_filter, frames: 0, keys: [])]
         end
         @unclaimed = []
         @overlaps = []
@@ -83,14 +84,17 @@ module Syskit
       end
 
       def add(row, key, stats)
-        row.frames += stats.count
+        row.frames += stats.frames
         row.keys << key
-        row.first = stats.first if stats.first && (row.first.nil? || stats.first < row.first)
-        row.last = stats.last if stats.last && (row.last.nil? || stats.last > row.last)
+        first = stats.first_time
+        last = stats.last_time
+        row.first_time = first if first && (row.first_time.nil? || first < row.first_time)
+        row.last_time = last if last && (row.last_time.nil? || last > row.last_time)
       end
 
       def id_row(key, stats, names = [], writers: [])
-        IdRow.new(key: key, frames: stats.count, first: stats.first, last: stats.last, devices: names, writers: writers)
+        IdRow.new(key: key, frames: stats.frames, first_time: stats.first_time, last_time: stats.last_time,
+                  devices: names, writers: writers)
       end
 
       def id_hash(row)
@@ -99,16 +103,18 @@ module Syskit
       end
 
       def unclaimed_hash(row)
-        id_hash(row).merge('first_time' => Report.seconds(row.first), 'last_time' => Report.seconds(row.last),
+        id_hash(row).merge('first_time' => Report.seconds(row.first_time), 'last_time' => Report.seconds(row.last_time),
                            'write_only_matches' => row.writers)
       end
 
       def device_hash(row)
-        filter = row.filter && { 'id' => row.filter.id, 'mask' => row.filter.mask, 'extended' => row.filter.extended? }
+        filter = row.can_filter
+        filter &&= { 'id' => filter.id, 'mask' => filter.mask, 'extended' => filter.extended? }
         {
           'name' => row.name, 'status' => row.status.to_s, 'filter' => filter, 'frames' => row.frames,
           'distinct_ids' => row.keys.size, 'ids' => row.keys.map { |k| Frame.key_to_s(k) },
-          'first_time' => Report.seconds(row.first), 'last_time' => Report.seconds(row.last), 'rate' => row.rate&.round(3)
+          'first_time' => Report.seconds(row.first_time), 'last_time' => Report.seconds(row.last_time),
+          'rate' => row.rate&.round(3)
         }
       end
     end

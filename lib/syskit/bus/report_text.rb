@@ -27,19 +27,35 @@ module Syskit
       end
 
       def header(report)
+        "#{[title(report), totals(report), kinds(report.traffic), skipped(report.source)].compact.join("\n")}\n"
+      end
+
+      def title(report)
         src = report.source
-        t = report.traffic
-        lines = ["Bus #{report.bus}#{" of #{src['profile']}" if src['profile']}#{" (robot #{src['robot']})" if src['robot']}"]
-        from = [src['log'] && "log #{src['log']}", src['interface'] && "interface #{src['interface']}"].compact.join(', ')
+        text = "Bus #{report.bus}"
+        text += " of #{src['profile']}" if src['profile']
+        text += " (robot #{src['robot']})" if src['robot']
+        text
+      end
+
+      def totals(report)
+        src = report.source
+        from = [src['log'] && "log #{src['log']}", src['interface'] && "interface #{src['interface']}"]
         span = report.duration ? format(' in %.3f s', report.duration) : ''
-        lines << "#{from}: #{t.frames} frames#{span}"
-        lines << "  standard #{t.standard}, extended #{t.extended}, CAN FD #{t.fd}, RTR #{t.rtr}, error frames #{t.errors}"
-        others = src['other_interfaces']
-        if others&.any?
-          lines << "  skipped frames of other interfaces: #{others.map { |i, n| "#{i} (#{n})" }.join(', ')} " \
-                   '(choose one with --interface)'
-        end
-        "#{lines.join("\n")}\n"
+        "#{from.compact.join(', ')}: #{report.traffic.frames} frames#{span}"
+      end
+
+      def kinds(traffic)
+        "  standard #{traffic.standard}, extended #{traffic.extended}, CAN FD #{traffic.fd}, RTR #{traffic.rtr}, " \
+          "error frames #{traffic.errors}"
+      end
+
+      def skipped(source)
+        others = source['other_interfaces']
+        return unless others&.any?
+
+        "  skipped frames of other interfaces: #{others.map { |i, n| "#{i} (#{n})" }.join(', ')} " \
+          '(choose one with --interface)'
       end
 
       def devices(report, recent)
@@ -48,8 +64,8 @@ module Syskit
           note = STATUS_NOTES[d.status]
           next [d.name, note] if note
 
-          row = [d.name, filter(d.filter), d.frames.to_s, d.keys.size.to_s,
-                 time(report, d.first), time(report, d.last), number(d.rate)]
+          row = [d.name, filter(d.can_filter), d.frames.to_s, d.keys.size.to_s,
+                 time(report, d.first_time), time(report, d.last_time), number(d.rate)]
           recent ? row + [number(recent[d.name])] : row
         end
         table(head, rows)
@@ -64,7 +80,9 @@ module Syskit
         body = rows.map { |r| id_cells(report, r) }
         if rows.any? { |r| r.writers.any? }
           head += ['Note']
-          body = body.zip(rows).map { |cells, r| cells + [r.writers.empty? ? '' : "filter of write-only #{r.writers.join(', ')}"] }
+          body = body.zip(rows).map do |cells, r|
+            cells + [r.writers.empty? ? '' : "filter of write-only #{r.writers.join(', ')}"]
+          end
         end
         "#{title}\n#{table(head, body, indent: '  ')}"
       end
@@ -95,7 +113,7 @@ module Syskit
       end
 
       def id_cells(report, row)
-        [Frame.key_to_s(row.key), row.frames.to_s, time(report, row.first), time(report, row.last)]
+        [Frame.key_to_s(row.key), row.frames.to_s, time(report, row.first_time), time(report, row.last_time)]
       end
 
       def filter(filter)

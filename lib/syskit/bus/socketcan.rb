@@ -111,17 +111,17 @@ module Syskit
 
       # Without this option the socket only carries classic frames; old
       # kernels do not know it, and then classic frames are all there is.
-      def enable_fd_frames(fd)
+      def enable_fd_frames(socket)
         on = FFI::MemoryPointer.new(:int)
         on.write_int(1)
-        c_setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FD_FRAMES, on, on.size)
+        c_setsockopt(socket, SOL_CAN_RAW, CAN_RAW_FD_FRAMES, on, on.size)
       end
 
-      def bind(fd, index, name)
+      def bind(socket, index, name)
         addr = SockaddrCan.new
         addr[:can_family] = PF_CAN
         addr[:can_ifindex] = index
-        return unless c_bind(fd, addr.to_ptr, SockaddrCan.size).negative?
+        return unless c_bind(socket, addr.to_ptr, SockaddrCan.size).negative?
 
         error = SystemCallError.new(nil, FFI.errno)
         hint = error.is_a?(Errno::ENETDOWN) ? "bring it up: sudo ip link set up #{name}" : interfaces_hint

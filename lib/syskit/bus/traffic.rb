@@ -13,7 +13,7 @@ module Syskit
     # ids) is a sum, min or max over keys. Times are in microseconds.
     class Traffic
       # Frames of one key: how many, and the time of the first and last.
-      IdStats = Struct.new(:count, :first, :last)
+      IdStats = Struct.new(:frames, :first_time, :last_time)
 
       attr_reader :ids, :frames, :extended, :fd, :rtr, :errors, :first_time, :last_time
 
@@ -36,21 +36,21 @@ module Syskit
       end
 
       # Counts one frame of +key+ received at +time+ (microseconds, or nil).
-      def count(key, time, extended, fd, rtr)
+      def count(key, time, extended, fd_frame, rtr)
         @frames += 1
         @extended += 1 if extended
-        @fd += 1 if fd
+        @fd += 1 if fd_frame
         @rtr += 1 if rtr
         stats = @ids[key]
         if stats
-          stats.count += 1
+          stats.frames += 1
           return unless time
 
           # Logs are in time order: the last frame is the latest, except in
           # logs merged from several sources.
-          if stats.last.nil? then stats.first = stats.last = time
-          elsif time >= stats.last then stats.last = time
-          elsif time < stats.first then stats.first = time
+          if stats.last_time.nil? then stats.first_time = stats.last_time = time
+          elsif time >= stats.last_time then stats.last_time = time
+          elsif time < stats.first_time then stats.first_time = time
           end
         else
           @ids[key] = IdStats.new(1, time, time)

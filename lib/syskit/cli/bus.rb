@@ -6,6 +6,7 @@ require 'syskit/bus/replay'
 require 'syskit/bus/report_text'
 
 module Syskit
+  # The main commands are in syskit/cli.rb; this file adds `syskit bus`.
   class CLI < Thor
     # `syskit bus replay|monitor`: bus traffic seen through a profile's plan,
     # from a candump log or live from a SocketCAN interface.
@@ -33,7 +34,8 @@ module Syskit
 
         Example: syskit bus replay Live::Base --bus can0 logs/can0.log
       TEXT
-      method_option :interface, type: :string, desc: 'the interface of the log to read (default: the first one in the log)'
+      method_option :interface, type: :string,
+                                desc: 'the interface of the log to read (default: the first one in the log)'
       method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
       method_option :strict, type: :boolean, default: false, desc: 'fail on malformed lines'
       def replay(profile_name, log_path)
@@ -65,8 +67,9 @@ module Syskit
         with_plan(profile_name) do |dispatcher, source|
           io = ::Syskit::Bus::SocketCAN.open(options[:interface])
           begin
-            monitor = ::Syskit::Bus::Monitor.new(dispatcher, io, source: source.merge('interface' => options[:interface]),
-                                                                 interval: options[:interval], live: options[:format] == 'text')
+            source = source.merge('interface' => options[:interface])
+            monitor = ::Syskit::Bus::Monitor.new(dispatcher, io, source: source, interval: options[:interval],
+                                                                 live: options[:format] == 'text')
             print_report(monitor.run(duration: options[:duration]))
           ensure
             io.close
@@ -114,8 +117,12 @@ module Syskit
         buses = plan.devices.filter_map(&:bus).uniq.sort
         return buses.first if buses.size == 1
 
-        raise UnknownName.new("the plan of #{plan.profile} has #{buses.empty? ? 'no bus with devices' : 'several buses'}",
-                              hint: buses.empty? ? 'attach devices to a bus with through' : "choose one with --bus (#{buses.join(', ')})")
+        if buses.empty?
+          raise UnknownName.new("the plan of #{plan.profile} has no bus with devices",
+                                hint: 'attach devices to a bus with through')
+        end
+        raise UnknownName.new("the plan of #{plan.profile} has several buses",
+                              hint: "choose one with --bus (#{buses.join(', ')})")
       end
 
       def app_root
@@ -131,9 +138,13 @@ module Syskit
         return matches.first if matches.size == 1
 
         names = profiles.map(&:name)
-        raise UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, names)}", hint: "profiles: #{names.join(', ')}") if matches.empty?
+        if matches.empty?
+          raise UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, names)}",
+                                hint: "profiles: #{names.join(', ')}")
+        end
 
-        raise UnknownName.new("'#{name}' names several profiles: #{matches.map(&:name).join(', ')}", hint: 'give more of the name')
+        raise UnknownName.new("'#{name}' names several profiles: #{matches.map(&:name).join(', ')}",
+                              hint: 'give more of the name')
       end
 
       def report_error(error, root)

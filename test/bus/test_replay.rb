@@ -2,6 +2,7 @@
 
 require 'helper'
 require 'json'
+require 'syskit/bus/candump_log'
 
 module Syskit
   # `syskit bus replay`, through the command line.

@@ -1,10 +1,5 @@
 # frozen_string_literal: true
 
-require 'json'
-require 'syskit/bus/dispatcher'
-require 'syskit/bus/replay'
-require 'syskit/bus/report_text'
-
 module Syskit
   # The main commands are in syskit/cli.rb; this file adds `syskit bus`.
   class CLI < Thor
@@ -39,6 +34,7 @@ module Syskit
       method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
       method_option :strict, type: :boolean, default: false, desc: 'fail on malformed lines'
       def replay(profile_name, log_path)
+        require 'syskit/bus/replay'
         with_plan(profile_name) do |dispatcher, source|
           replay = ::Syskit::Bus::Replay.new(dispatcher, log_path, interface: options[:interface], source: source)
           print_report(replay.run(strict: options[:strict]))
@@ -86,6 +82,9 @@ module Syskit
       # --bus with what the report says about its source; errors are
       # printed as by the main CLI (file:line: message, hint).
       def with_plan(profile_name)
+        # The bus tools are loaded by their commands only: `syskit plan`
+        # does not pay for them (nor for ffi, needed by monitor alone).
+        require 'syskit/bus/dispatcher'
         app = App.new(app_root)
         begin
           app.load!(robots: [options[:robot]])
@@ -107,8 +106,10 @@ module Syskit
 
       def print_report(report)
         if options[:format] == 'json'
+          require 'json'
           puts ::JSON.pretty_generate(report.to_h)
         else
+          require 'syskit/bus/report_text'
           $stdout.write(::Syskit::Bus::ReportText.render(report))
         end
       end

@@ -124,9 +124,10 @@ module Syskit
       wide = device(replay_json, 'wide')
       assert_in_delta 1_600_000_000.0, wide['first_time'], 1e-6
       assert_in_delta 1_600_000_001.1, wide['last_time'], 1e-6
-      # 6 frames: 5 intervals in 1.1 s.
-      assert_in_delta 5 / 1.1, wide['rate'], 1e-3
-      assert_nil device(replay_json, 'mute')['rate']
+      # 6 frames in the 1.4 s of the log.
+      assert_in_delta 6 / 1.4, wide['rate'], 1e-3
+      assert_in_delta 0.0, device(replay_json, 'mute')['rate']
+      assert_nil device(replay_json, 'writer')['rate']
     end
 
     def test_standard_and_extended_frames_with_the_same_number_stay_apart
@@ -208,8 +209,8 @@ module Syskit
       assert_includes out, "Bus can0 of MyApp::Profiles::Base (robot default)\n"
       assert_includes out, "interface can0: 14 frames in 1.400 s\n"
       assert_includes out, "  standard 8, extended 5, CAN FD 1, RTR 1, error frames 1\n"
-      assert_match(%r{^wide +100/700 +6 +3 +0\.000 +1\.100 +4\.5$}, out)
-      assert_match(%r{^exact_ext +00000120/1FFFFFFF ext +2 +1 +0\.200 +1\.200 +1\.0$}, out)
+      assert_match(%r{^wide +100/700 +6 +3 +0\.000 +1\.100 +4\.3$}, out)
+      assert_match(%r{^exact_ext +00000120/1FFFFFFF ext +2 +1 +0\.200 +1\.200 +1\.4$}, out)
       assert_match(/^mute +no can_id filter: receives nothing by filter$/, out)
       assert_match(/^writer +write-only \(bus_to_client: false\): receives nothing$/, out)
       assert_includes out, "Frames no device receives: 2 ids, 3 frames\n"

@@ -8,15 +8,10 @@ module Syskit
     # device counts, the ids nobody receives and the ids several devices
     # receive. A value: renderers (ReportText, #to_h for JSON) only read it.
     class Report
-      # One device of the bus. +status+: see Dispatcher::Device.
-      DeviceRow = Struct.new(:name, :status, :can_filter, :frames, :keys, :first_time, :last_time,
-                             keyword_init: true) do
-        # Mean reception rate in frames/s: intervals between the first and
-        # last frame, over the time between them (nil under two frames).
-        def rate
-          Report.rate(frames, first_time, last_time)
-        end
-      end
+      # One device of the bus. +status+: see Dispatcher::Device; +rate+: see
+      # Report.rate.
+      DeviceRow = Struct.new(:name, :status, :can_filter, :frames, :keys, :first_time, :last_time, :rate,
+                             keyword_init: true)
       # One frame key (id + extended flag), the devices receiving it and,
       # for ids nobody receives, the write-only devices whose can_id matches
       # (most likely their senders).
@@ -24,12 +19,13 @@ module Syskit
 
       attr_reader :bus, :traffic, :devices, :unclaimed, :overlaps, :source
 
-      # Frames per second between +first+ and +last+, in microseconds (see
-      # DeviceRow#rate).
-      def self.rate(frames, first, last)
-        return unless frames > 1 && first && last && last > first
-
-        (frames - 1) * 1e6 / (last - first)
+      # The mean rate of a device, in frames/s: its frames over the time the
+      # log (or the monitoring) spans, from its first frame to its last, in
+      # microseconds. Over the whole span rather than the device's own, so
+      # that a device receiving several periodic ids gets the sum of their
+      # rates; nil when the span is empty.
+      def self.rate(frames, span)
+        frames.to_f * 1e6 / span if span&.positive?
       end
 
       # Microseconds to seconds, for people and JSON.
@@ -80,6 +76,8 @@ module Syskit
           @unclaimed << id_row(key, stats, writers: dispatcher.writers(key)) if names.empty?
           @overlaps << id_row(key, stats, names) if names.size > 1
         end
+        span = traffic.last_time - traffic.first_time if traffic.first_time
+        rows.each_value { |row| row.rate = Report.rate(row.frames, span) unless row.status == :write_only }
         @devices = rows.values
       end
 

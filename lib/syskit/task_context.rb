@@ -15,6 +15,9 @@ module Syskit
 
     attr_reader :arguments, :properties, :created_ports
     attr_accessor :conf, :deployed_task
+    # The requirement (a profile's device action) the generator made this
+    # task for.
+    attr_accessor :requirement
 
     def initialize(arguments = {})
       @arguments = arguments

@@ -39,15 +39,31 @@ module Syskit
       end
 
       # The deployed tasks that can run a task of +model+ (their model is it
-      # or a subclass of it), computed once per model: sorted by name, and
-      # indexed by name for prefer_deployed_tasks('name').
-      Candidates = Struct.new(:list, :by_name)
+      # or a subclass of it), computed once per model: indexed by name for
+      # prefer_deployed_tasks('name'), listed by name when they must be
+      # scanned (regexp hints) or shown (errors).
+      class Candidates
+        attr_reader :by_name
+
+        def initialize(groups)
+          @by_name = {}
+          groups.each { |tasks| tasks.each { |t| @by_name[t.name] = t } }
+        end
+
+        def size
+          by_name.size
+        end
+
+        def list
+          @list ||= by_name.values.sort_by(&:name).freeze
+        end
+      end
 
       def candidates_for(model)
         @candidates ||= {}
         @candidates[model] ||= begin
-          list = deployed_tasks.select { |t| t.model <= model }.sort_by(&:name)
-          Candidates.new(list, list.to_h { |t| [t.name, t] })
+          @by_model ||= deployed_tasks.group_by(&:model)
+          Candidates.new(@by_model.filter_map { |m, tasks| tasks if m <= model })
         end
       end
 
@@ -68,6 +84,7 @@ module Syskit
 
       def add(deployment, location)
         @candidates = nil
+        @by_model = nil
         @deployments << deployment
         deployment.tasks.each do |task|
           if (other = @deployed_tasks[task.name])

@@ -23,17 +23,22 @@ module Syskit
         @stub_deployments = stub_deployments
         @tasks = []
         @task_by_device = {}.compare_by_identity
-        @requirement_by_task = {}.compare_by_identity
         @bus_links = []
         @expected_ports = Hash.new { |h, k| h[k] = [] }.compare_by_identity
         @connections = []
         @errors = []
       end
 
+      # The tasks sorted by (deployed) name, once: the order and the plan
+      # both list tasks by name.
+      def tasks_by_name
+        @tasks_by_name ||= @tasks.sort_by(&:name)
+      end
+
       def add_task(task, device, requirement)
         @tasks << task
         @task_by_device[device] = task
-        @requirement_by_task[task] = requirement
+        task.requirement = requirement
         task
       end
 
@@ -42,12 +47,12 @@ module Syskit
       end
 
       def requirement_for(task)
-        @requirement_by_task[task]
+        task.requirement
       end
 
       # The device a task was created for.
       def device_of(task)
-        requirement_for(task).device
+        task.requirement.device
       end
 
       # Collects an error; the step raises them all at its end.

@@ -34,15 +34,15 @@ module Syskit
       def choose(task)
         requirement = @context.requirement_for(task)
         index = @context.robot_config.candidates_for(task.model)
-        candidates = index.list
-        return @context.error(none(task, requirement)) if candidates.empty?
+        return @context.error(none(task, requirement)) if index.size.zero?
 
         hints = requirement.deployment_hints
         # The common case, a deployed task named after the device: a lookup.
         if hints.size == 1 && hints.first.is_a?(String)
-          return index.by_name[hints.first] || @context.error(no_preferred(task, requirement, candidates))
+          return index.by_name[hints.first] || @context.error(no_preferred(task, requirement, index.list))
         end
 
+        candidates = index.list
         unless hints.empty?
           preferred = preferred(index, hints)
           return @context.error(no_preferred(task, requirement, candidates)) if preferred.empty?

@@ -15,12 +15,16 @@ module Syskit
         @visiting = {}.compare_by_identity
       end
 
+      # Steps are put in one bucket per rank, tasks taken in name order, so
+      # no sort is needed (configure ranks are even, start ranks odd).
       def run
-        steps = @context.tasks.flat_map do |task|
+        buckets = []
+        @context.tasks_by_name.each do |task|
           rank = configure_rank(task)
-          [Step.new('configure', task, rank), Step.new('start', task, rank + 1)]
+          (buckets[rank] ||= []) << Step.new('configure', task, rank)
+          (buckets[rank + 1] ||= []) << Step.new('start', task, rank + 1)
         end
-        @context.order = steps.sort_by { |s| [s.rank, s.task.name.to_s, s.step] }
+        @context.order = buckets.compact.flatten(1)
       end
 
       private

@@ -31,9 +31,9 @@ module Syskit
         static_ports = {}
         new(
           profile: context.profile&.name, robot: context.robot_config&.name,
-          tasks: context.tasks.map { |t| task_entry(t, static_ports) }.sort_by(&:name),
+          tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports) },
           devices: context.tasks.map { |t| device_entry(context.device_of(t), t) }.sort_by(&:name),
-          connections: context.connections.map { |c| connection_entry(c) }.sort_by { |c| connection_key(c) },
+          connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
           order: context.order.map { |s| Step.new(s.step, s.task.name).freeze }
         )
       end
@@ -97,8 +97,10 @@ module Syskit
         value.freeze
       end
 
+      # One string per connection, compared as the four names in turn ("\0"
+      # sorts before any character of a name).
       def self.connection_key(conn)
-        [conn.from.task, conn.from.port, conn.to.task, conn.to.port]
+        "#{conn.from.task}\0#{conn.from.port}\0#{conn.to.task}\0#{conn.to.port}"
       end
 
       def initialize(profile:, robot:, tasks:, devices:, connections:, order:)
@@ -136,10 +138,11 @@ module Syskit
 
       # The plan as plain data, the JSON document's content.
       def to_h
+        port_hashes = {}.compare_by_identity # port entries are shared by tasks of a model
         {
           'profile' => profile, 'robot' => robot,
-          'tasks' => tasks.map { |t| task_hash(t) },
-          'devices' => devices.map { |d| d.to_h.transform_keys(&:to_s) },
+          'tasks' => tasks.map { |t| task_hash(t, port_hashes) },
+          'devices' => devices.map { |d| device_hash(d) },
           'connections' => connections.map { |c| connection_hash(c) },
           'order' => order.map { |s| { 'step' => s.step, 'task' => s.task } }
         }
@@ -147,18 +150,32 @@ module Syskit
 
       private
 
-      def task_hash(task)
+      def task_hash(task, port_hashes)
         {
           'name' => task.name, 'model' => task.model, 'deployment' => task.deployment,
           'devices' => task.devices, 'conf' => task.conf, 'properties' => task.properties,
-          'ports' => task.ports.map { |p| p.to_h.transform_keys(&:to_s) },
+          'ports' => task.ports.map { |p| port_hashes[p] ||= port_hash(p) },
           'depends_on' => task.depends_on
+        }
+      end
+
+      def port_hash(port)
+        { 'name' => port.name, 'direction' => port.direction, 'type' => port.type, 'dynamic' => port.dynamic }
+      end
+
+      def device_hash(device)
+        {
+          'name' => device.name, 'model' => device.model, 'task' => device.task, 'bus' => device.bus,
+          'bus_to_client' => device.bus_to_client, 'client_to_bus' => device.client_to_bus,
+          'attributes' => device.attributes, 'period' => device.period, 'burst' => device.burst,
+          'sample_size' => device.sample_size, 'declared_at' => device.declared_at
         }
       end
 
       def connection_hash(conn)
         {
-          'from' => conn.from.to_h.transform_keys(&:to_s), 'to' => conn.to.to_h.transform_keys(&:to_s),
+          'from' => { 'task' => conn.from.task, 'port' => conn.from.port },
+          'to' => { 'task' => conn.to.task, 'port' => conn.to.port },
           'type' => conn.type, 'policy' => conn.policy
         }
       end

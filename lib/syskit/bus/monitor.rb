@@ -36,7 +36,8 @@ module Syskit
         start = now
         deadline = duration && start + duration
         @next_refresh = start + @interval
-        @previous = nil
+        # Rates of the first interval count from the start of monitoring.
+        @previous = [start, {}]
         loop do
           break unless read_until([@next_refresh, deadline].compact.min)
 
@@ -99,8 +100,6 @@ module Syskit
 
       # Frames per second of each device since the previous refresh.
       def recent_rates(report, at)
-        return {} unless @previous
-
         since, counts = @previous
         elapsed = at - since
         report.devices.to_h { |d| [d.name, elapsed.positive? ? (d.frames - counts.fetch(d.name, 0)) / elapsed : nil] }

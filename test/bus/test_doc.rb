@@ -36,7 +36,8 @@ module Syskit
       shown = JSON.parse(DOC[/^```json\n(.*?)^```/m, 1])
       out, = run_cli('bus', 'replay', 'Live::Base', '--bus', 'can0', 'examples/awesome_robot/logs/can0.log',
                      '--app', 'examples/awesome_robot', '--format', 'json')
-      assert_equal shown, JSON.parse(out)['devices'].find { |d| d['name'] == 'n2k' }
+      n2k = JSON.parse(out)['devices'].find { |d| d['name'] == 'n2k' }
+      assert_equal shown, n2k
     end
 
     def test_the_missing_interface_example

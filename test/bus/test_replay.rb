@@ -251,6 +251,12 @@ module Syskit
       assert_match(/  hint: /, err)
     end
 
+    def test_trace_adds_the_backtrace
+      _, err, status = run_cli('bus', 'replay', 'Base', '/nonexistent/can0.log', '--app', @app, '--trace')
+      assert_equal 1, status
+      assert_match %r{^    .*lib/syskit/bus/replay\.rb:\d+}, err
+    end
+
     def test_an_unknown_profile_is_an_error
       _, err, status = run_cli('bus', 'replay', 'Nope', @log, '--app', @app)
       assert_equal 1, status

@@ -150,8 +150,14 @@ module Syskit
 
       def report_error(error, root)
         warn error.report(root)
-        warn (error.backtrace || []).map { |l| "    #{l}" }.join("\n") if options[:trace]
+        warn (error.backtrace || []).map { |l| "    #{l}" }.join("\n") if trace?
         exit(1)
+      end
+
+      # --trace is the main command's option too, so Thor gives it to
+      # `syskit` and not to `syskit bus`, wherever it is written.
+      def trace?
+        options[:trace] || (respond_to?(:parent_options) && (parent_options || {})['trace'])
       end
     end
 

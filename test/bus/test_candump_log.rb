@@ -99,6 +99,7 @@ module Syskit
         (1436509053.249713) can0 123#DEADBEEF
         (1436509053.249800)  can0 00000123#00 R
         (1436509053.249900) can1 123#00
+        (1436509053.249950) can1 800#00
         (1436509053.250000) can0 123#R
         (1436509053.250100) can0 123#R4
         (1436509053.250200) can0 7FF##1#{'00' * 64}
@@ -138,7 +139,7 @@ module Syskit
         fast = summary(*read_fast(MIXED))
         assert_equal summary(*read_frames(MIXED)), fast
         ids, frames, extended, fd, rtr, errors, first, last, malformed, = fast
-        assert_equal [13, 2, 1, 2, 2, 3], [frames, extended, fd, rtr, errors, malformed]
+        assert_equal [13, 2, 1, 2, 2, 4], [frames, extended, fd, rtr, errors, malformed]
         assert_equal [1_436_509_053_249_000, 1_436_509_053_251_200], [first, last]
         # Out-of-order times still give the earliest and latest.
         assert_equal [7, 1_436_509_053_249_000, 1_436_509_053_251_200], ids[0x123]

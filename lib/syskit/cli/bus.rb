@@ -59,7 +59,7 @@ module Syskit
       method_option :format, type: :string, default: 'text', enum: %w[text json],
                              desc: 'json prints the final report only'
       def monitor(profile_name)
-        require 'syskit/bus/monitor'
+        load_monitor
         with_plan(profile_name) do |dispatcher, source|
           io = ::Syskit::Bus::SocketCAN.open(options[:interface])
           begin
@@ -77,6 +77,14 @@ module Syskit
       end
 
       private
+
+      # The monitor needs the ffi gem, which only it loads.
+      def load_monitor
+        require 'syskit/bus/monitor'
+      rescue LoadError => e
+        report_error(Error.new("syskit bus monitor needs the ffi gem: #{e.message}",
+                               hint: 'run bundle install (or gem install ffi)'), nil)
+      end
 
       # Loads the app, generates PROFILE's plan and yields the dispatcher of
       # --bus with what the report says about its source; errors are

@@ -6,18 +6,19 @@ require 'syskit/check'
 require 'syskit/render/text'
 require 'syskit/render/json'
 require 'syskit/render/dot'
+require 'syskit/cli/support'
 
 module Syskit
   # `syskit`: thin Thor commands that parse options, call one function of the
   # library and print its result.
   class CLI < Thor
-    GEM_ROOT = File.expand_path('../..', __dir__)
-    EXAMPLE_APP = File.join(GEM_ROOT, 'examples', 'awesome_robot')
     RENDERERS = { 'text' => Render::Text, 'json' => Render::JSON, 'dot' => Render::Dot }.freeze
 
     def self.exit_on_failure?
       true
     end
+
+    include Support
 
     class_option :trace, type: :boolean, default: false, desc: 'show the backtrace of errors'
 
@@ -89,56 +90,6 @@ module Syskit
 
     private
 
-    # Runs the block with the app of --app (loaded unless load: false),
-    # printing Syskit errors as file:line: message + hint.
-    def with_app(load: true, robots: ['default'])
-      app = App.new(app_root)
-      begin
-        load ? app.load!(robots: robots) : app.activate
-        yield app
-      ensure
-        app.unload
-      end
-    rescue Syskit::Error => e
-      report_error(e, app&.root)
-    rescue StandardError, ScriptError => e
-      # A bug of syskit itself: say so, without a backtrace unless asked.
-      report_error(Error.new("internal error: #{e.class}: #{e.message}",
-                             hint: 'this is a bug in syskit; run again with --trace and report the backtrace')
-                        .tap { |err| err.set_backtrace(e.backtrace) }, app&.root)
-    end
-
-    def app_root
-      return File.expand_path(options[:app]) if options[:app]
-
-      found = App.find_root(Dir.pwd)
-      found && found != GEM_ROOT ? found : EXAMPLE_APP
-    end
-
-    def find_profile(app, name)
-      profiles = app.profiles.values.sort_by(&:name)
-      if name.nil?
-        return profiles.first if profiles.any?
-
-        raise UnknownName.new("#{app} has no profile", hint: 'declare one in models/profiles/ (syskit gen profile NAME)')
-      end
-
-      matches = profiles.select { |p| p.name == name || p.name.end_with?("::#{name}") }
-      return matches.first if matches.size == 1
-
-      names = profiles.map(&:name)
-      raise UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, names)}", hint: "profiles: #{names.join(', ')}") if matches.empty?
-
-      raise UnknownName.new("'#{name}' names several profiles: #{matches.map(&:name).join(', ')}",
-                            hint: 'give more of the name')
-    end
-
-    def report_error(error, root)
-      warn error.report(root)
-      warn (error.backtrace || []).map { |l| "    #{l}" }.join("\n") if options[:trace]
-      exit(1)
-    end
-
     def print_check(app, report)
       if options[:format] == 'json'
         require 'json'
@@ -155,7 +106,7 @@ module Syskit
         puts if i.positive?
         problems.sort_by { |p| p.location&.lineno.to_i }.each do |p|
           puts p.report(app.root)
-          puts (p.backtrace || []).map { |l| "    #{l}" } if options[:trace]
+          puts (p.backtrace || []).map { |l| "    #{l}" } if trace?
         end
       end
       puts "#{app.name}: #{report.errors.size} error(s), #{report.warnings.size} warning(s)"

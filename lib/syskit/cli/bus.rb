@@ -6,6 +6,8 @@ module Syskit
     # `syskit bus replay|monitor`: bus traffic seen through a profile's plan,
     # from a candump log or live from a SocketCAN interface.
     class Bus < Thor
+      include Support
+
       def self.exit_on_failure?
         true
       end
@@ -87,29 +89,17 @@ module Syskit
       end
 
       # Loads the app, generates PROFILE's plan and yields the dispatcher of
-      # --bus with what the report says about its source; errors are
-      # printed as by the main CLI (file:line: message, hint).
+      # --bus with what the report says about its source.
       def with_plan(profile_name)
         # The bus tools are loaded by their commands only: `syskit plan`
         # does not pay for them (nor for ffi, needed by monitor alone).
         require 'syskit/bus/dispatcher'
-        app = App.new(app_root)
-        begin
-          app.load!(robots: [options[:robot]])
+        with_app(robots: [options[:robot]]) do |app|
           profile = find_profile(app, profile_name)
           plan = Network::Generator.plan_profile(app, profile, robot: options[:robot]).plan
           bus = options[:bus] || only_bus(plan)
           yield ::Syskit::Bus::Dispatcher.from_plan(plan, bus), { 'profile' => plan.profile, 'robot' => plan.robot }
-        ensure
-          app.unload
         end
-      rescue Syskit::Error => e
-        report_error(e, app&.root)
-      rescue StandardError, ScriptError => e
-        # A bug of syskit itself: say so, without a backtrace unless asked.
-        report_error(Error.new("internal error: #{e.class}: #{e.message}",
-                               hint: 'this is a bug in syskit; run again with --trace and report the backtrace')
-                          .tap { |err| err.set_backtrace(e.backtrace) }, app&.root)
       end
 
       def print_report(report)
@@ -132,40 +122,6 @@ module Syskit
         end
         raise UnknownName.new("the plan of #{plan.profile} has several buses",
                               hint: "choose one with --bus (#{buses.join(', ')})")
-      end
-
-      def app_root
-        return File.expand_path(options[:app]) if options[:app]
-
-        found = App.find_root(Dir.pwd)
-        found && found != CLI::GEM_ROOT ? found : CLI::EXAMPLE_APP
-      end
-
-      def find_profile(app, name)
-        profiles = app.profiles.values.sort_by(&:name)
-        matches = profiles.select { |p| p.name == name || p.name.end_with?("::#{name}") }
-        return matches.first if matches.size == 1
-
-        names = profiles.map(&:name)
-        if matches.empty?
-          raise UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, names)}",
-                                hint: "profiles: #{names.join(', ')}")
-        end
-
-        raise UnknownName.new("'#{name}' names several profiles: #{matches.map(&:name).join(', ')}",
-                              hint: 'give more of the name')
-      end
-
-      def report_error(error, root)
-        warn error.report(root)
-        warn (error.backtrace || []).map { |l| "    #{l}" }.join("\n") if trace?
-        exit(1)
-      end
-
-      # --trace is the main command's option too, so Thor gives it to
-      # `syskit` and not to `syskit bus`, wherever it is written.
-      def trace?
-        options[:trace] || (respond_to?(:parent_options) && (parent_options || {})['trace'])
       end
     end
 

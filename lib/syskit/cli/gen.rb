@@ -12,6 +12,8 @@ module Syskit
     # conventions, each model with its test. Nothing is ever overwritten
     # without --force, and a refused command writes nothing.
     class Gen < Thor
+      include Support
+
       EXAMPLES = <<~TEXT
         Examples:
           syskit gen app awesome_robot      # a new app in ./awesome_robot
@@ -66,7 +68,7 @@ module Syskit
       TEXT
       method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
       def dev(name)
-        generate { |opts| Generators::DeviceGenerator.new(app_root, name, **opts) }
+        generate { |opts| Generators::DeviceGenerator.new(target_app, name, **opts) }
       end
 
       desc 'bus NAME', 'create a communication bus model and its test'
@@ -81,7 +83,7 @@ module Syskit
       TEXT
       method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
       def bus(name)
-        generate { |opts| Generators::BusGenerator.new(app_root, name, **opts) }
+        generate { |opts| Generators::BusGenerator.new(target_app, name, **opts) }
       end
 
       desc 'orogen LIB', "create the Syskit extension file of a task library and its test"
@@ -96,7 +98,7 @@ module Syskit
       TEXT
       method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
       def orogen(library)
-        generate { |opts| Generators::OrogenGenerator.new(app_root, library, **opts) }
+        generate { |opts| Generators::OrogenGenerator.new(target_app, library, **opts) }
       end
 
       desc 'profile PATH/NAME', 'create a profile with an empty robot block and its test'
@@ -110,7 +112,7 @@ module Syskit
       TEXT
       method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
       def profile(name)
-        generate { |opts| Generators::ProfileGenerator.new(app_root, name, **opts) }
+        generate { |opts| Generators::ProfileGenerator.new(target_app, name, **opts) }
       end
 
       private
@@ -118,15 +120,11 @@ module Syskit
       # Runs the generator the block makes and lists what it wrote; errors
       # print as in the rest of the CLI (file:line: message, then the hint).
       def generate
-        generator = yield(force: options[:force], dry_run: options[:dry_run])
-        print_entries(generator, generator.run)
-      rescue Syskit::Error => e
-        report_error(e, generator&.root)
-      rescue StandardError, ScriptError => e
-        # A bug of syskit itself: say so, without a backtrace unless asked.
-        report_error(Error.new("internal error: #{e.class}: #{e.message}",
-                               hint: 'this is a bug in syskit; run again with --trace and report the backtrace')
-                          .tap { |err| err.set_backtrace(e.backtrace) }, generator&.root)
+        generator = nil
+        reporting_errors(-> { generator&.root }) do
+          generator = yield(force: options[:force], dry_run: options[:dry_run])
+          print_entries(generator, generator.run)
+        end
       end
 
       def print_entries(generator, entries)
@@ -140,14 +138,10 @@ module Syskit
         end
       end
 
-      def app_root
+      # Generators work in an app (--app or the current directory's): no
+      # falling back to the example app.
+      def target_app
         Generators::Base.find_app(options[:app])
-      end
-
-      def report_error(error, root)
-        warn error.report(root)
-        warn (error.backtrace || []).map { |l| "    #{l}" }.join("\n") if options[:trace]
-        exit(1)
       end
     end
 

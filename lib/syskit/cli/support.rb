@@ -1,0 +1,91 @@
+# frozen_string_literal: true
+
+require 'thor'
+
+module Syskit
+  class CLI < Thor
+    GEM_ROOT = File.expand_path('../../..', __dir__)
+    EXAMPLE_APP = File.join(GEM_ROOT, 'examples', 'awesome_robot')
+
+    # What the command classes (syskit, syskit gen, syskit bus) share:
+    # finding the app and the profile, and printing errors as
+    # `file:line: message` then `  hint: ...`, with Ruby's backtrace only
+    # under --trace, and exit status 1.
+    module Support
+      private
+
+      # Runs the block; a Syskit error is printed for the user (paths
+      # relative to what +root+ returns), any other exception is reported as
+      # a bug of syskit.
+      def reporting_errors(root = -> {})
+        yield
+      rescue Syskit::Error => e
+        report_error(e, root.call)
+      rescue StandardError, ScriptError => e
+        internal = Error.new("internal error: #{e.class}: #{e.message}",
+                             hint: 'this is a bug in syskit; run again with --trace and report the backtrace')
+        internal.set_backtrace(e.backtrace)
+        report_error(internal, root.call)
+      end
+
+      # Runs the block with the app of --app (loaded unless load: false),
+      # unloaded afterwards.
+      def with_app(load: true, robots: ['default'])
+        app = nil
+        reporting_errors(-> { app&.root }) do
+          app = App.new(app_root)
+          begin
+            load ? app.load!(robots: robots) : app.activate
+            yield app
+          ensure
+            app.unload
+          end
+        end
+      end
+
+      # --app, else the app containing the current directory, else the
+      # bundled example app.
+      def app_root
+        return File.expand_path(options[:app]) if options[:app]
+
+        found = App.find_root(Dir.pwd)
+        found && found != GEM_ROOT ? found : EXAMPLE_APP
+      end
+
+      # The profile called +name+ (its full name or the end of it), the
+      # app's first profile when +name+ is nil.
+      def find_profile(app, name)
+        profiles = app.profiles.values.sort_by(&:name)
+        if name.nil?
+          return profiles.first if profiles.any?
+
+          raise UnknownName.new("#{app} has no profile", hint: 'declare one in models/profiles/ (syskit gen profile NAME)')
+        end
+
+        matches = profiles.select { |p| p.name == name || p.name.end_with?("::#{name}") }
+        return matches.first if matches.size == 1
+
+        names = profiles.map(&:name)
+        if matches.empty?
+          raise UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, names)}",
+                                hint: "profiles: #{names.join(', ')}")
+        end
+
+        raise UnknownName.new("'#{name}' names several profiles: #{matches.map(&:name).join(', ')}",
+                              hint: 'give more of the name')
+      end
+
+      def report_error(error, root)
+        warn error.report(root)
+        warn (error.backtrace || []).map { |l| "    #{l}" }.join("\n") if trace?
+        exit(1)
+      end
+
+      # --trace is also the main command's option: Thor gives it to `syskit`
+      # rather than to `syskit gen`/`syskit bus`, wherever it is written.
+      def trace?
+        options[:trace] || (respond_to?(:parent_options) && (parent_options || {})['trace'])
+      end
+    end
+  end
+end

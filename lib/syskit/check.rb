@@ -75,7 +75,9 @@ module Syskit
 
           [dev, CAN::Filter.new(*dev.can_id)]
         end
-        overlapping_pairs(filtered).map { |a, b| warning(bus, a, b) }
+        # Standard and extended filters never match the same frame.
+        pairs = filtered.partition { |_, f| f.extended? }.flat_map { |kind| overlapping_pairs(kind) }
+        pairs.sort_by { |a, b| [a.declared_at.to_a, b.declared_at.to_a] }.map { |a, b| warning(bus, a, b) }
       end
 
       def overlapping_pairs(filtered)
@@ -88,7 +90,7 @@ module Syskit
           end
           by_mask.drop(i + 1).each { |other_mask, other| pairs.concat(cross_pairs(group, other, mask & other_mask)) }
         end
-        pairs.sort_by { |a, b| [a.declared_at.to_a, b.declared_at.to_a] }
+        pairs
       end
 
       # Pairs across two masks: equal ids once both masks are applied.

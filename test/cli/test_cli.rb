@@ -94,6 +94,23 @@ module Syskit
       refute_match BACKTRACE, out
     end
 
+    def test_standard_and_extended_filters_never_overlap
+      robot = <<~RUBY
+        com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+        through 'can0' do
+          device(Devices::TemperatureSensor, as: 'a').can_id(0x120, 0x7ff).prefer_deployed_tasks('a')
+          device(Devices::TemperatureSensor, as: 'b').can_id(0x120, 0x1fffffff).prefer_deployed_tasks('b')
+          device(Devices::TemperatureSensor, as: 'c').can_id(0x120, 0xfff).prefer_deployed_tasks('c')
+        end
+      RUBY
+      root = my_app(robot, 'config/robots/default.rb' => "using_task_library 'temp'\nSyskit.conf.use_deployment 'test_canbus'\n" \
+                                                         "%w[a b c].each { |n| Syskit.conf.use_deployment OroGen.temp.Task => n }\n")
+      out, = run_cli('check', '--app', root)
+      assert_match(/device 'b' \(id 0x120 mask 0x1FFFFFFF\) and device 'c' .* have overlapping filters/, out)
+      refute_match(/device 'a' .* overlapping/, out)
+      assert_match(/0 error\(s\), 1 warning\(s\)/, out)
+    end
+
     def test_check_json_and_strict
       robot = OVERLAP.gsub(/as: '(\w)'\)(.*)$/) { "as: '#{$1}')#{$2}.prefer_deployed_tasks('#{$1}')" }
       root = my_app(robot, 'config/robots/default.rb' => "using_task_library 'temp'\nSyskit.conf.use_deployment 'test_canbus'\n" \

@@ -7,7 +7,7 @@ module Syskit
   # What doc/bus-traffic.md (the README's bus traffic section) shows is what
   # the commands print.
   class TestBusDoc < Minitest::Test
-    DOC = File.read(File.join(GEM_ROOT, 'doc', 'bus-traffic.md'))
+    DOC = File.read(File.join(GEM_ROOT, 'README.md'))[/^## Bus traffic.*?(?=^## )/m]
     COMMAND = 'bundle exec bin/syskit '
 
     # The output shown under "$ COMMAND", and the command's arguments.

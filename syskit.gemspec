@@ -24,7 +24,5 @@ Gem::Specification.new do |spec|
   spec.add_dependency 'ffi', '~> 1.15'
   spec.add_dependency 'thor', '~> 1.2'
 
-  spec.add_development_dependency 'minitest', '~> 5.15'
-  spec.add_development_dependency 'rake', '~> 13.0'
   spec.metadata['rubygems_mfa_required'] = 'true'
 end

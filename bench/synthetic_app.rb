@@ -125,14 +125,14 @@ module Syskit
       end
 
       def profile_file
-        out = +"using_task_library 'canbus'\nusing_task_library 'bench'\n\nmodule Bench\n  module Profiles\n" \
-               "    profile 'Base' do\n      robot do\n"
+        out = +"using_task_library 'canbus'\nusing_task_library 'bench'\n\nmodule Bench\n  module Profiles\n    " \
+               "profile 'Base' do\n      robot do\n"
         @buses.times do |b|
           driver = b.even? ? 'OroGen.canbus.Task' : 'OroGen.bench.BusTask'
           out << "        com_bus(CommonModels::Devices::Bus::CAN, as: 'can#{b}', using: #{driver})" \
                  ".prefer_deployed_tasks('can#{b}')\n"
           out << "        through 'can#{b}' do\n"
-          (b * PER_BUS...[(b + 1) * PER_BUS, @devices].min).each { |i| out << device_line(i) }
+          ((b * PER_BUS)...[(b + 1) * PER_BUS, @devices].min).each { |i| out << device_line(i) }
           out << "        end\n"
         end
         out << "      end\n    end\n  end\nend\n"
@@ -140,7 +140,7 @@ module Syskit
 
       def device_line(index)
         kind = KINDS[index % KINDS.size]
-        conf = kind[:model] == 'Motor' || kind[:model] == 'Thermometer' ? ".with_conf('default', 's#{index % 8}')" : ''
+        conf = %w[Motor Thermometer].include?(kind[:model]) ? ".with_conf('default', 's#{index % 8}')" : ''
         "          device(Devices::#{kind[:model]}, as: 'dev#{index}'#{kind[:options]})" \
           ".can_id(0x#{(0x100 + (index % PER_BUS)).to_s(16)}, 0x7ff)" \
           ".prefer_deployed_tasks('dev#{index}')#{conf}.period(0.01)\n"

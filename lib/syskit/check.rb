@@ -30,7 +30,7 @@ module Syskit
     end
 
     def errors
-      problems.reject { |p| p.is_a?(Warning) }
+      problems.grep_v(Warning)
     end
 
     def warnings

@@ -81,7 +81,7 @@ module Syskit
     def test(*files)
       root = app_root
       files = files.map { |f| File.expand_path(f) }
-      files = Dir[File.join(root, 'test', '**', 'test_*.rb')].sort if files.empty?
+      files = Dir[File.join(root, 'test', '**', 'test_*.rb')] if files.empty?
       loader = 'ARGV.each { |f| require f }'
       ok = system({ 'SYSKIT_APP' => root }, RbConfig.ruby, '-I', File.expand_path('..', __dir__),
                   '-e', loader, *files, chdir: root)
@@ -106,7 +106,7 @@ module Syskit
         puts if i.positive?
         problems.sort_by { |p| p.location&.lineno.to_i }.each do |p|
           puts p.report(app.root)
-          puts (p.backtrace || []).map { |l| "    #{l}" } if trace?
+          puts((p.backtrace || []).map { |l| "    #{l}" }) if trace?
         end
       end
       puts "#{app.name}: #{report.errors.size} error(s), #{report.warnings.size} warning(s)"

@@ -25,8 +25,8 @@ module Syskit
       private
 
       # +data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+
-      def data_service_type(name, &block)
-        Models::DataServiceModel.define(self, name, location: Location.of_caller, root: Syskit::DataService, &block)
+      def data_service_type(name, &)
+        Models::DataServiceModel.define(self, name, location: Location.of_caller, root: Syskit::DataService, &)
       end
 
       # +device_type 'F9' do provides ... end+; +parent:+ gives a device model
@@ -57,14 +57,14 @@ module Syskit
       end
 
       # A robot block in a module makes the module a profile.
-      def robot(&block)
-        Profile.for_module(self, Location.of_caller).robot_block(&block)
+      def robot(&)
+        Profile.for_module(self, Location.of_caller).robot_block(&)
       end
 
       def profile_module(name, location)
         unless Naming.constant_name?(name)
           raise DeclarationError.new("'#{name}' is not a valid profile name", location: location,
-                                                                             hint: "profile names are constant names, e.g. profile 'Base'")
+                                                                              hint: "profile names are constant names, e.g. profile 'Base'")
         end
         return const_set(name, Module.new) unless const_defined?(name, false)
 
@@ -72,13 +72,13 @@ module Syskit
         return existing if existing.instance_of?(Module)
 
         raise DeclarationError.new("#{self}::#{name} is already defined and is not a profile", location: location,
-                                                                                                hint: 'give the profile another name')
+                                                                                               hint: 'give the profile another name')
       end
     end
 
     def self.app!
       Syskit.app || raise(Error.new('no Syskit app is loaded', location: Location.of_caller,
-                                                              hint: 'load the file through syskit (syskit check, syskit plan, rake test)'))
+                                                               hint: 'load the file through syskit (syskit check, syskit plan, rake test)'))
     end
   end
 end

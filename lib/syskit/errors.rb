@@ -87,7 +87,7 @@ module Syskit
     def initialize(errors)
       @errors = errors.flat_map { |e| e.respond_to?(:errors) ? e.errors : [e] }
       super(@errors.map(&:message).join("\n"), location: @errors.first&.location,
-                                                 hint: @errors.first&.hint)
+                                               hint: @errors.first&.hint)
     end
 
     def report(root = nil)

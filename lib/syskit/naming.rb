@@ -4,7 +4,7 @@ module Syskit
   # Conversions between the path form users type (gps/ublox/f9) and the
   # constant form models are named with (GPS::Ublox::F9).
   module Naming
-    CONSTANT_NAME = /\A[A-Z][A-Za-z0-9_]*\z/.freeze
+    CONSTANT_NAME = /\A[A-Z][A-Za-z0-9_]*\z/
 
     module_function
 

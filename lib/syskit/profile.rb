@@ -71,8 +71,8 @@ module Syskit
 
     # Methods of profile modules.
     module ModuleMethods
-      def robot(&block)
-        syskit_profile.robot_block(&block)
+      def robot(&)
+        syskit_profile.robot_block(&)
       end
 
       def syskit_profile

@@ -59,7 +59,7 @@ module Syskit
     end
 
     # On a bus driver: every device declared on its bus, in declaration order.
-    def each_declared_attached_device(&block)
+    def each_declared_attached_device(&)
       bus = devices.find(&:com_bus?)
       unless bus
         raise ConfigurationError.new("#{model.name} drives no communication bus",
@@ -67,14 +67,14 @@ module Syskit
                                      hint: 'each_declared_attached_device is for bus drivers')
       end
 
-      bus.each_attached_device(&block)
+      bus.each_attached_device(&)
     end
 
     # The tasks this one depends on (its bus drivers), as +[task, info]+ pairs.
     def each_child(&block)
       return enum_for(__method__) unless block
 
-      @children.each { |child, info| yield(child, info) }
+      @children.each(&block)
     end
 
     # The tasks this one depends on.

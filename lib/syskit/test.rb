@@ -42,7 +42,9 @@ module Syskit
 
       def load_app
         root = ENV['SYSKIT_APP'] || App.find_root(Dir.pwd)
-        abort "syskit/test: #{Dir.pwd} is not in a Syskit app (no models/ directory above it); set SYSKIT_APP" unless root
+        unless root
+          abort "syskit/test: #{Dir.pwd} is not in a Syskit app (no models/ directory above it); set SYSKIT_APP"
+        end
 
         app = App.new(root)
         app.load(robots: [robot], everything: true)

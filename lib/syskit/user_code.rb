@@ -61,7 +61,7 @@ module Syskit
         location = path && Location.new(path, 0)
       end
       FileLoadError.new("syntax error: #{text.strip.delete_prefix('syntax error, ')}", location: location,
-                                                       hint: 'fix the Ruby syntax at this line')
+                                                                                       hint: 'fix the Ruby syntax at this line')
     end
 
     def name_error(exception, path, error_class, context)
@@ -74,9 +74,7 @@ module Syskit
     # Ruby's message with spelling suggestions.
     def explain(exception)
       receiver = receiver_of(exception)
-      if exception.name && receiver.respond_to?(:explain_missing)
-        return receiver.explain_missing(exception.name.to_s)
-      end
+      return receiver.explain_missing(exception.name.to_s) if exception.name && receiver.respond_to?(:explain_missing)
 
       message = original_message(exception).sub(/ for #<[^>]*>\z/, '')
       [message, suggestion(exception, receiver) || missing_hint(exception)]

@@ -109,7 +109,7 @@ module Syskit
 
       # Data bytes of a CAN FD line: from after ##F to the end of the frame.
       def fd_length(line, hash)
-        stop = line.index(' ', hash) || line.bytesize - (line.end_with?("\n") ? 1 : 0)
+        stop = line.index(' ', hash) || (line.bytesize - (line.end_with?("\n") ? 1 : 0))
         (stop - hash - 3) / 2
       end
 

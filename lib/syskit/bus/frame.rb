@@ -69,7 +69,7 @@ module Syskit
       # The frame in candump's notation (the part after the interface name).
       def to_candump
         id_text = error? ? format('%08X', can_id & (EFF_MASK | ERR_FLAG)) : Frame.key_to_s(key)
-        return "#{id_text}#R#{len.positive? ? len : ''}" if rtr?
+        return "#{id_text}#R#{len if len.positive?}" if rtr?
 
         hex = data.unpack1('H*').upcase
         fd? ? "#{id_text}###{format('%X', fd_flags)}#{hex}" : "#{id_text}##{hex}"

@@ -34,7 +34,7 @@ module Syskit
       # Reads until stopped; returns the final Report.
       def run(duration: nil)
         start = now
-        deadline = duration && start + duration
+        deadline = duration && (start + duration)
         @next_refresh = start + @interval
         # Rates of the first interval count from the start of monitoring.
         @previous = [start, {}]

@@ -10,6 +10,7 @@ module Syskit
     # reads then wait in Ruby, so Ctrl-C interrupts them.
     module SocketCAN
       extend FFI::Library
+
       ffi_lib FFI::Library::LIBC
 
       PF_CAN = 29

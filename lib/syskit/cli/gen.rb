@@ -86,7 +86,7 @@ module Syskit
         generate { |opts| Generators::BusGenerator.new(target_app, name, **opts) }
       end
 
-      desc 'orogen LIB', "create the Syskit extension file of a task library and its test"
+      desc 'orogen LIB', 'create the Syskit extension file of a task library and its test'
       long_desc <<~TEXT
         Creates models/orogen/LIB.rb with one Syskit.extend_model block per
         task context of LIB.orogen, where driver_for, provides, configure and

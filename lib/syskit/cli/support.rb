@@ -59,7 +59,8 @@ module Syskit
         if name.nil?
           return profiles.first if profiles.any?
 
-          raise UnknownName.new("#{app} has no profile", hint: 'declare one in models/profiles/ (syskit gen profile NAME)')
+          raise UnknownName.new("#{app} has no profile",
+                                hint: 'declare one in models/profiles/ (syskit gen profile NAME)')
         end
 
         matches = profiles.select { |p| p.name == name || p.name.end_with?("::#{name}") }

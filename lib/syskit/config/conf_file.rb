@@ -14,10 +14,10 @@ module Syskit
     # A file without a header starts with the 'default' section. Sections are
     # read with safe YAML only (no Ruby objects, no aliases).
     class ConfFile
-      HEADER = /^---\s*name:\s*(\S+)\s*$/.freeze
+      HEADER = /^---\s*name:\s*(\S+)\s*$/
 
       # One section: its values and the line of its header.
-      Section = Struct.new(:name, :values, :line, :text)
+      Section = Struct.new(:name, :settings, :line, :text)
 
       attr_reader :path, :sections
 
@@ -44,7 +44,7 @@ module Syskit
 
           raise unknown_section(name, location) unless section
 
-          ConfFile.deep_merge(values, section.values)
+          ConfFile.deep_merge(values, section.settings)
         end
       end
 
@@ -52,7 +52,7 @@ module Syskit
       def location_of(key, names)
         names.reverse_each do |name|
           section = sections[name]
-          next unless section&.values&.key?(key)
+          next unless section&.settings&.key?(key)
 
           offset = section.text.lines.index { |l| l.match?(/^#{Regexp.escape(key.to_s)}\s*:/) }
           return Location.new(path, section.line + 1 + offset.to_i)
@@ -95,7 +95,7 @@ module Syskit
 
       def load_yaml(text, header_line)
         # Blank lines keep Psych's line numbers those of the file.
-        values = Psych.safe_load("\n" * header_line + text, filename: path, aliases: false) || {}
+        values = Psych.safe_load(("\n" * header_line) + text, filename: path, aliases: false) || {}
         unless values.is_a?(Hash)
           raise ConfigurationError.new('a configuration section must map property names to values',
                                        location: Location.new(path, header_line + 1), hint: 'write property: value lines')
@@ -115,7 +115,7 @@ module Syskit
                                                        hint: 'configuration files hold plain data: no tags, no Ruby objects')
       rescue Psych::SyntaxError => e
         raise ConfigurationError.new("invalid YAML: #{e.problem}", location: Location.new(path, e.line),
-                                                                    hint: 'fix the YAML syntax at this line')
+                                                                   hint: 'fix the YAML syntax at this line')
       end
 
       # Top-level keys name properties: anything else (5000:, ~:, [a]:) is
@@ -124,7 +124,9 @@ module Syskit
         values.each_key do |key|
           next if key.is_a?(String)
 
-          offset = text.lines.index { |l| l.match?(/^\S/) && !l.start_with?('#') && l.include?(':') && key_line?(l, key) }
+          offset = text.lines.index do |l|
+            l.match?(/^\S/) && !l.start_with?('#') && l.include?(':') && key_line?(l, key)
+          end
           raise ConfigurationError.new(
             "#{key.inspect} is not a property name (configuration keys are property names)",
             location: Location.new(path, header_line + 1 + offset.to_i),

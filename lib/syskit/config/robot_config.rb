@@ -50,8 +50,8 @@ module Syskit
           groups.each { |tasks| tasks.each { |t| @by_name[t.name] = t } }
         end
 
-        def size
-          by_name.size
+        def empty?
+          by_name.empty?
         end
 
         def list
@@ -117,9 +117,7 @@ module Syskit
       end
 
       def task_deployment(model, name, location)
-        unless model.is_a?(Class) && model <= Syskit::TaskContext && model.spec
-          raise usage_error(model, location)
-        end
+        raise usage_error(model, location) unless model.is_a?(Class) && model <= Syskit::TaskContext && model.spec
 
         deployment = Orogen::DeploymentSpec.new(name.to_s, location: location)
         deployment.add_task(name.to_s, model, location: location)
@@ -129,7 +127,7 @@ module Syskit
       def usage_error(spec, location)
         DeploymentError.new(
           "use_deployment does not understand #{spec.inspect}", location: location,
-          hint: "write use_deployment 'deployment_name' or use_deployment OroGen.lib.Task => 'task_name'"
+                                                                hint: "write use_deployment 'deployment_name' or use_deployment OroGen.lib.Task => 'task_name'"
         )
       end
     end

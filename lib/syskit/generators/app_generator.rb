@@ -24,7 +24,7 @@ module Syskit
         check_dir(dir)
         @root = File.expand_path(dir, pwd)
         @app_name = Name.parse(File.basename(dir), what: 'app', acronyms: ACRONYMS,
-                                                        examples: 'e.g. awesome_robot').to_s
+                                                   examples: 'e.g. awesome_robot').to_s
         @force = force
         @dry_run = dry_run
       end
@@ -53,11 +53,11 @@ module Syskit
       private
 
       def check_dir(dir)
-        if dir.empty? || dir.start_with?('/', '~') || dir.split('/').include?('..')
-          raise GeneratorError.new("'#{dir}' is not a directory name relative to the current directory",
-                                   hint: 'run syskit gen app from the directory the app goes in, ' \
-                                         'e.g. syskit gen app awesome_robot')
-        end
+        return unless dir.empty? || dir.start_with?('/', '~') || dir.split('/').include?('..')
+
+        raise GeneratorError.new("'#{dir}' is not a directory name relative to the current directory",
+                                 hint: 'run syskit gen app from the directory the app goes in, ' \
+                                       'e.g. syskit gen app awesome_robot')
       end
 
       # The Gemfile's line for this gem: the checkout it runs from, or the

@@ -13,7 +13,7 @@ module Syskit
       EXAMPLES = 'e.g. gps/ublox/f9 or GPS::Ublox::F9'
 
       # Words separated by single underscores; camelize needs no more.
-      SEGMENT = /\A[A-Za-z0-9]+(_[A-Za-z0-9]+)*\z/.freeze
+      SEGMENT = /\A[A-Za-z0-9]+(_[A-Za-z0-9]+)*\z/
 
       attr_reader :constants
 

@@ -8,7 +8,7 @@ module Syskit
     # library (models/orogen/gps_ublox.rb), one extend_model block per task
     # context of its .orogen file, and its test.
     class OrogenGenerator < Base
-      LIBRARY_NAME = /\A[A-Za-z_][A-Za-z0-9_]*\z/.freeze
+      LIBRARY_NAME = /\A[A-Za-z_][A-Za-z0-9_]*\z/
 
       # What the template says of one task context.
       TaskInfo = Struct.new(:name, :accessor, :doc, :device_name, :property, :output_port, :dynamic_type,

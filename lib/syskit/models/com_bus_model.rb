@@ -51,9 +51,9 @@ module Syskit
 
       # Adds the methods defined in the block (e.g. +dsl_attribute :can_id+) to
       # every device attached to a bus of this model or of its sub-models.
-      def extend_attached_device_configuration(&block)
+      def extend_attached_device_configuration(&)
         @attached_device_configuration ||= DeviceConfigurationModule.new
-        @attached_device_configuration.module_eval(&block)
+        @attached_device_configuration.module_eval(&)
         @attached_device_configuration
       end
 
@@ -84,7 +84,7 @@ module Syskit
 
         raise DeclarationError.new(
           "#{self} has no message type", location: declared_at,
-          hint: "pass it: com_bus_type '#{name.to_s.split('::').last}', message_type: '/canbus/Message'"
+                                         hint: "pass it: com_bus_type '#{name.to_s.split('::').last}', message_type: '/canbus/Message'"
         )
       end
 
@@ -104,10 +104,10 @@ module Syskit
         service('ClientSrv') { nil }.provides(client_in).provides(client_out)
       end
 
-      def service(name, &block)
+      def service(name, &)
         srv = DataServiceModel.new(location: declared_at, name: "#{self}::#{name}")
         const_set(name, srv)
-        srv.instance_eval(&block)
+        srv.instance_eval(&)
         srv.bus_model = self
         srv.bus_role = Naming.underscore(name.delete_suffix('Srv')).to_sym
         srv

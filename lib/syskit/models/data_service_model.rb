@@ -25,7 +25,7 @@ module Syskit
         unless Naming.constant_name?(name)
           raise DeclarationError.new(
             "'#{name}' is not a valid name for a #{kind}", location: location,
-            hint: "model names are Ruby constant names, e.g. '#{Naming.camelize(name.gsub(/\W/, '_'))}'"
+                                                           hint: "model names are Ruby constant names, e.g. '#{Naming.camelize(name.gsub(/\W/, '_'))}'"
           )
         end
         if namespace.const_defined?(name, false)
@@ -112,7 +112,7 @@ module Syskit
         @parents[model] = model.ports.each_value.to_h do |port|
           [port.name, adopt_port(port, renames.fetch(port.name, port.name), model, location)]
         end
-        @fullfilled = nil
+        @fullfilled_models = nil
         @identity_mappings = nil
         self
       end
@@ -125,7 +125,7 @@ module Syskit
 
       # This model and every model it provides, closest first.
       def fullfilled_models
-        @fullfilled ||= ([self] + parents.keys.flat_map(&:fullfilled_models)).uniq
+        @fullfilled_models ||= ([self] + parents.keys.flat_map(&:fullfilled_models)).uniq
       end
 
       # For a model this one provides, its port names mapped to ours.
@@ -160,7 +160,7 @@ module Syskit
         if existing && (existing.type != port.type || existing.direction != port.direction)
           raise DeclarationError.new(
             "#{model}'s #{port} collides with #{self}'s #{existing}", location: location,
-            hint: "map it to another name: provides #{model}, '#{port.name}' => 'other_name'"
+                                                                      hint: "map it to another name: provides #{model}, '#{port.name}' => 'other_name'"
           )
         end
 

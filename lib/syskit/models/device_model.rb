@@ -22,9 +22,9 @@ module Syskit
 
       # Adds the methods defined in the block to every device declared with
       # this model (or a model that provides it).
-      def extend_device_configuration(&block)
+      def extend_device_configuration(&)
         @device_configuration ||= DeviceConfigurationModule.new
-        @device_configuration.module_eval(&block)
+        @device_configuration.module_eval(&)
         @device_configuration
       end
 

@@ -99,7 +99,7 @@ module Syskit
         unless model.is_a?(DeviceModel)
           raise DeclarationError.new(
             "driver_for expects a device or bus model, got #{model.inspect}", location: location,
-            hint: model.is_a?(DataServiceModel) ? "#{model} is a data service: use provides #{model}, as: 'name'" : nil
+                                                                              hint: model.is_a?(DataServiceModel) ? "#{model} is a data service: use provides #{model}, as: 'name'" : nil
           )
         end
 
@@ -117,7 +117,7 @@ module Syskit
         end
         unless as
           raise DeclarationError.new("provides #{model} needs a service name", location: location,
-                                                                                hint: "write provides #{model}, as: 'name'")
+                                                                               hint: "write provides #{model}, as: 'name'")
         end
 
         add_service(as, model, mappings, location)
@@ -214,14 +214,14 @@ module Syskit
       def check_service_options(name, mappings, location)
         unless name.match?(/\A[a-z_]\w*\z/)
           raise DeclarationError.new("'#{name}' is not a valid service name", location: location,
-                                                                             hint: "use a lower-case name, e.g. as: 'gps'")
+                                                                              hint: "use a lower-case name, e.g. as: 'gps'")
         end
         options = mappings.keys.grep(Symbol)
         return if options.empty?
 
         raise DeclarationError.new(
           "unknown option #{options.map { |o| "#{o}:" }.join(', ')}", location: location,
-          hint: "the only option is as: 'name'; port mappings are written 'service_port' => 'task_port'"
+                                                                      hint: "the only option is as: 'name'; port mappings are written 'service_port' => 'task_port'"
         )
       end
     end

@@ -86,7 +86,9 @@ module Syskit
           file, line = stubs.first.source_location
           raise NetworkError.new(
             "#{task.model.name}'s configure and stub did not create the #{port.direction} port '#{port.name}' " \
-            "that #{port.device} needs (created: #{task.created_ports.keys.sort.join(', ').then { |s| s.empty? ? 'none' : s }})",
+            "that #{port.device} needs (created: #{task.created_ports.keys.sort.join(', ').then do |s|
+              s.empty? ? 'none' : s
+            end})",
             location: Location.new(file, line),
             hint: 'the stub must create a port per attached device, from the property the configure method sets'
           )

@@ -15,8 +15,14 @@ module Syskit
 
       def run
         @context.bus_links.each do |link|
-          connect(link.bus_task, link.bus_output, link.device_task, link.client_input, link.device, false) if link.bus_output
-          connect(link.device_task, link.client_output, link.bus_task, link.bus_input, link.device, true) if link.bus_input
+          if link.bus_output
+            connect(link.bus_task, link.bus_output, link.device_task, link.client_input, link.device,
+                    false)
+          end
+          if link.bus_input
+            connect(link.device_task, link.client_output, link.bus_task, link.bus_input, link.device,
+                    true)
+          end
         rescue Syskit::Error => e
           @context.error(e)
         end
@@ -57,7 +63,7 @@ module Syskit
                            "#{sink.to_task}'s input port '#{sink.to_port.name}' does not multiplex but " \
                            "#{into.size} outputs write to it: #{sources.join(', ')}",
                            location: into.last.device.declared_at,
-                           hint: "mark it .multiplexes in the .orogen file if the component accepts several writers, " \
+                           hint: 'mark it .multiplexes in the .orogen file if the component accepts several writers, ' \
                                  'or give each device its own input port (dynamic_input_port)'
                          ))
         end

@@ -34,7 +34,7 @@ module Syskit
       def choose(task)
         requirement = @context.requirement_for(task)
         index = @context.robot_config.candidates_for(task.model)
-        return @context.error(none(task, requirement)) if index.size.zero?
+        return @context.error(none(task, requirement)) if index.empty?
 
         hints = requirement.deployment_hints
         # The common case, a deployed task named after the device: a lookup.
@@ -77,7 +77,8 @@ module Syskit
           "no deployed task can run #{task.model.name}, the driver of #{device}, on #{@context.robot_config}",
           location: device_location(requirement),
           hint: "add to config/robots/#{@context.robot_config.name}.rb: " \
-                "Syskit.conf.use_deployment OroGen.#{task.model.name.gsub('::', '.')} => '#{device.name}'#{alternatives}"
+                "Syskit.conf.use_deployment OroGen.#{task.model.name.gsub('::',
+                                                                          '.')} => '#{device.name}'#{alternatives}"
         )
       end
 

@@ -41,7 +41,9 @@ module Syskit
       # Entries are frozen as they are built, so the plan is a frozen value
       # without walking it again.
       def self.task_entry(task, static_ports)
-        ports = static_ports[task.model] ||= task.model.ports.each_value.map { |p| port_entry(p) }.sort_by!(&:name).freeze
+        ports = static_ports[task.model] ||= task.model.ports.each_value.map do |p|
+          port_entry(p)
+        end.sort_by!(&:name).freeze
         unless task.created_ports.empty?
           ports = (ports + task.created_ports.each_value.map { |p| port_entry(p) }).sort_by!(&:name).freeze
         end

@@ -98,7 +98,6 @@ module Syskit
         (deployment_names + declared_deployments.values.flatten).uniq.sort
       end
 
-
       # The error for a task library that is on no search directory.
       def unknown_library(name, location, error_class: FileLoadError)
         searched = @app.orogen_search_dirs.map { |d| Location.new(d, 0).relative_path(@app.root) }

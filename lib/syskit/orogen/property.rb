@@ -44,7 +44,7 @@ module Syskit
     # An operation (RPC) of a task model, recorded for completeness.
     class Operation
       attr_reader :name, :arguments
-      attr_accessor :doc, :return_type
+      attr_accessor :return_type
 
       def initialize(name)
         @name = name
@@ -61,7 +61,10 @@ module Syskit
         self
       end
 
+      # Sets the documentation (and returns self, for chaining), or reads it.
       def doc(text = nil)
+        return @doc if text.nil?
+
         @doc = text
         self
       end

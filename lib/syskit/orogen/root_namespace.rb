@@ -11,8 +11,8 @@ module Syskit
       end
 
       # Same as Syskit.extend_model.
-      def extend_task(model, &block)
-        Syskit.extend_model(model, &block)
+      def extend_task(model, &)
+        Syskit.extend_model(model, &)
       end
 
       # A library that exists on the search path but is not loaded yet: using

@@ -32,8 +32,8 @@ module Syskit
         @loader.define_task(task_name.to_s, subclasses, Location.of_caller, &block)
       end
 
-      def deployment(deployment_name, &block)
-        @loader.define_deployment(deployment_name.to_s, Location.of_caller, &block)
+      def deployment(deployment_name, &)
+        @loader.define_deployment(deployment_name.to_s, Location.of_caller, &)
       end
 
       def static_deployment(&block)
@@ -147,7 +147,7 @@ module Syskit
         declared_name = raw_name.to_s
         unless declared_name.match?(/\A[A-Za-z_]\w*\z/)
           raise SpecError.new("'#{declared_name}' is not a valid #{what} name", location: Location.of_caller,
-                                                                               hint: 'oroGen names are C++ identifiers: letters, digits and _')
+                                                                                hint: 'oroGen names are C++ identifiers: letters, digits and _')
         end
         if table.key?(declared_name)
           raise SpecError.new("#{@spec.name} declares the #{what} '#{declared_name}' twice",

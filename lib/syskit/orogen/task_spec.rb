@@ -34,7 +34,7 @@ module Syskit
       end
 
       def all_dynamic_ports
-        @all_dynamic_ports || (superclass ? superclass.all_dynamic_ports : []) + dynamic_ports
+        @all_dynamic_ports || ((superclass ? superclass.all_dynamic_ports : []) + dynamic_ports)
       end
 
       def all_properties

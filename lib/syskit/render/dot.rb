@@ -8,7 +8,7 @@ module Syskit
       module_function
 
       def render(plan)
-        out = +"digraph #{quote(plan.profile.to_s)} {\n"
+        out = "digraph #{quote(plan.profile.to_s)} {\n"
         out << "  rankdir=LR;\n  node [shape=box, fontname=\"Helvetica\"];\n  edge [fontname=\"Helvetica\", fontsize=10];\n"
         plan.tasks.group_by(&:deployment).sort.each_with_index do |(deployment, tasks), i|
           out << "  subgraph cluster_#{i} {\n    label=#{quote("deployment #{deployment}")};\n"

@@ -7,7 +7,7 @@ module Syskit
       module_function
 
       def render(plan)
-        out = +"Plan of #{plan.profile} on robot '#{plan.robot}'\n"
+        out = "Plan of #{plan.profile} on robot '#{plan.robot}'\n"
         out << "\nTasks (#{plan.tasks.size})\n"
         plan.tasks.each { |task| out << task_text(task) }
         out << "\nConnections (#{plan.connections.size})\n"
@@ -21,7 +21,7 @@ module Syskit
       end
 
       def task_text(task)
-        out = +"  #{task.name}  #{task.model}  (deployment #{task.deployment}, conf #{task.conf.join(', ')})\n"
+        out = "  #{task.name}  #{task.model}  (deployment #{task.deployment}, conf #{task.conf.join(', ')})\n"
         out << "    devices     #{task.devices.join(', ')}\n" unless task.devices.empty?
         out << "    depends on  #{task.depends_on.join(', ')}\n" unless task.depends_on.empty?
         out << block('properties', task.properties.map { |k, v| "#{k}: #{plain(v)}" })

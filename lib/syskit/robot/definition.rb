@@ -52,7 +52,7 @@ module Syskit
         bus = find_bus(bus, location)
         if device.attached?
           raise DeclarationError.new("#{device} is already attached to #{device.bus}", location: location,
-                                                                                   hint: 'a device is attached to one bus')
+                                                                                       hint: 'a device is attached to one bus')
         end
         if !client_to_bus && !bus_to_client
           raise DeclarationError.new(
@@ -107,7 +107,7 @@ module Syskit
         name = name.to_s
         unless name.match?(/\A[a-z_][a-zA-Z0-9_]*\z/)
           raise DeclarationError.new("'#{name}' is not a valid device name", location: location,
-                                                                            hint: "device names are lower-case identifiers, e.g. as: 'gps'")
+                                                                             hint: "device names are lower-case identifiers, e.g. as: 'gps'")
         end
         if (other = @devices[name])
           raise DeclarationError.new("a device named '#{name}' is already declared at #{other.declared_at}",
@@ -170,7 +170,7 @@ module Syskit
         buses = devices.grep(ComBus).map(&:name)
         what = found ? "#{found} is not a communication bus" : "no bus named '#{bus}'"
         raise UnknownName.new("#{what}#{Naming.did_you_mean(bus, buses)}", location: location,
-                                                                          hint: buses.empty? ? "declare it first: com_bus Model, as: '#{bus}'" : "buses of this robot: #{buses.join(', ')}")
+                                                                           hint: buses.empty? ? "declare it first: com_bus Model, as: '#{bus}'" : "buses of this robot: #{buses.join(', ')}")
       end
 
       def check_cycle(device, bus, location)

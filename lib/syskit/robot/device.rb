@@ -65,7 +65,7 @@ module Syskit
         names = names.flatten.map(&:to_s)
         if names.empty?
           raise DeclarationError.new('with_conf needs at least one section name', location: Location.of_caller,
-                                                                                   hint: "write with_conf('default', 'forward')")
+                                                                                  hint: "write with_conf('default', 'forward')")
         end
 
         @conf = names
@@ -157,7 +157,11 @@ module Syskit
 
       # Sets a dsl_attribute (see DeviceConfigurationModule#dsl_attribute).
       def set_dsl_attribute(attr, args, filter_method)
-        value = filter_method ? send(filter_method, *args) : (args.size == 1 ? args.first : args)
+        value = if filter_method
+                  send(filter_method, *args)
+                else
+                  (args.size == 1 ? args.first : args)
+                end
         dsl_attributes[attr] = value
         self
       rescue Syskit::Error
@@ -205,7 +209,7 @@ module Syskit
 
         unless yield(value)
           raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}", location: Location.of_caller,
-                                                                                     hint: "#{key} takes a positive number")
+                                                                                    hint: "#{key} takes a positive number")
         end
 
         @settings[key] = value
@@ -220,7 +224,11 @@ module Syskit
       end
 
       def invalid_attribute(attr, args, filter_method, error)
-        params = method(filter_method).parameters.map { |kind, n| kind == :opt ? "#{n} = ..." : n.to_s } if filter_method
+        if filter_method
+          params = method(filter_method).parameters.map do |kind, n|
+            kind == :opt ? "#{n} = ..." : n.to_s
+          end
+        end
         DeclarationError.new(
           "#{attr}(#{args.map(&:inspect).join(', ')}) on #{self}: #{error.message}",
           location: Location.of_caller,

@@ -50,7 +50,7 @@ module Syskit
         others = drivers_for(device.model).map(&:name)
         raise DriverError.new(
           "#{using.name} does not drive #{device.model} (#{device})", location: device.declared_at,
-          hint: others.empty? ? "declare driver_for #{device.model} in the extension file of #{using.name}" : "drivers of #{device.model}: #{others.join(', ')}"
+                                                                      hint: others.empty? ? "declare driver_for #{device.model} in the extension file of #{using.name}" : "drivers of #{device.model}: #{others.join(', ')}"
         )
       end
 

@@ -30,7 +30,7 @@ module Syskit
         bus = @definition.send(:find_bus, bus_name, location)
         unless block
           raise DeclarationError.new("through '#{bus.name}' needs a block", location: location,
-                                                                           hint: "write through '#{bus.name}' do device(...) end")
+                                                                            hint: "write through '#{bus.name}' do device(...) end")
         end
 
         previous = @bus

@@ -14,11 +14,11 @@ module Syskit
     # Without actions, every device of the profile. Failures carry the
     # generator's messages (file:line, hint), as `syskit plan` prints them.
     module ProfileAssertions
-      def is_self_contained(*actions) # rubocop:disable Naming/PredicateName -- Syskit's name
+      def is_self_contained(*actions)
         syskit_check_each(actions, Network::Drivers)
       end
 
-      def is_self_contained_together(*actions) # rubocop:disable Naming/PredicateName
+      def is_self_contained_together(*actions)
         syskit_check_together(actions, Network::Drivers)
       end
 

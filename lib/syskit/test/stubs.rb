@@ -51,12 +51,8 @@ module Syskit
       # deployments, configures it in order, and returns the device's task.
       # The task is also available as +task+ afterwards.
       def syskit_stub_deploy_and_configure(device)
-        requirement =
-          case device
-          when Network::Requirement then device
-          when Robot::Device then Network::Requirement.new(device)
-          else device # refused by the generator, with the reason
-          end
+        # Anything else than a device is refused by the generator, with the reason.
+        requirement = device.is_a?(Robot::Device) ? Network::Requirement.new(device) : device
         result = Network::Generator.new(Test.app, [requirement], stub_deployments: true).generate
         @syskit_stub_result = result
         @task = result.task_for(requirement.device)

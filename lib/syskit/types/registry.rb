@@ -81,8 +81,8 @@ module Syskit
         @opaque_namespaces.key?(canonical.delete_prefix('/').split('/').first)
       end
 
-      def each_type(&block)
-        @types.each_value(&block)
+      def each_type(&)
+        @types.each_value(&)
       end
 
       def names

@@ -67,9 +67,7 @@ module Syskit
 
       def from_ruby(value)
         mismatch(value, 'an integer') unless value.is_a?(Integer)
-        unless range.cover?(value)
-          raise ValueError, "#{value} is out of range for #{name} (#{range.min}..#{range.max})"
-        end
+        raise ValueError, "#{value} is out of range for #{name} (#{range.min}..#{range.max})" unless range.cover?(value)
 
         value
       end

@@ -64,7 +64,7 @@ module Syskit
           location = Location.of_caller
           if @fields.key?(name.to_s)
             raise TypeError.new("field '#{name}' is declared twice", location: location,
-                                                                      hint: 'give each field its own name')
+                                                                     hint: 'give each field its own name')
           end
 
           @fields[name.to_s] = @loader.registry.resolve(type, location: location)
@@ -87,7 +87,7 @@ module Syskit
         full = relative.start_with?('/') ? relative : "/#{name}/#{relative}"
         if registry.find(full)
           raise TypeError.new("type #{full} is already defined", location: Location.of_caller,
-                                                                  hint: 'remove the second definition')
+                                                                 hint: 'remove the second definition')
         end
 
         registry.register(yield(full))

@@ -1,0 +1,60 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # Types declared in Ruby typekits, as configure code uses them (SPEC 2).
+  class TestTypes < Minitest::Test
+    TYPEKIT = <<~RUBY
+      struct 'Device' do
+        field 'name', '/std/string'
+        field 'id', '/uint32_t'
+        field 'mask', '/uint32_t'
+      end
+      enum 'Mode', %w[ACTIVE PASSIVE]
+      opaque 'Calibration'
+    RUBY
+
+    def setup
+      root = my_app(nil, 'models/typekits/my_bus.rb' => TYPEKIT,
+                         'models/devices/x.rb' => "module MyApp\n  import_types_from 'my_bus'\nend\n")
+      @app = load_app(root)
+    end
+
+    def test_names_and_objects_resolve_to_the_same_type
+      assert_same ::Types.my_bus.Device, @app.types.find('/my_bus/Device')
+      assert_same ::Types.canbus.Message, @app.types.find('canbus/Message')
+      assert_same @app.types.find('/int32_t'), @app.types.find('int')
+      assert_equal '/std/vector</my_bus/Device>', @app.types.find('/std/vector< /my_bus/Device >').name
+    end
+
+    def test_struct_values_are_built_positionally_or_with_keywords
+      device = ::Types.my_bus.Device.new('gps', 1, 2)
+      assert_equal device, ::Types.my_bus.Device.new(name: 'gps', id: 1, mask: 2)
+      assert_equal ::Types.my_bus.Device.new('gps', 1), ::Types.my_bus.Device.new(name: 'gps', id: 1, mask: 0)
+      assert_equal %w[gps 1 2], [device.name, device.id.to_s, device.mask.to_s]
+      device.mask = 3
+      assert_equal({ 'name' => 'gps', 'id' => 1, 'mask' => 3 }, ::Types.my_bus.Device.to_plain(device))
+      refute_equal device, ::Types.my_bus.Device.new('gps', 1, 2)
+    end
+
+    def test_struct_values_check_their_fields
+      error = assert_raises(ArgumentError) { ::Types.my_bus.Device.new('gps', -1) }
+      assert_match(%r{/my_bus/Device.id: -1 is out of range for /uint32_t}, error.message)
+      error = assert_raises(ArgumentError) { ::Types.my_bus.Device.new(nmae: 'gps') }
+      assert_match(/has no field 'nmae' \(did you mean 'name'\?\)/, error.message)
+      error = assert_raises(ArgumentError) { ::Types.my_bus.Device.new('a', 1, 2, 3) }
+      assert_match(/has 3 fields \(name, id, mask\), got 4 values/, error.message)
+    end
+
+    def test_plain_data_converts_to_values
+      type = @app.types.find('/std/vector</my_bus/Device>')
+      values = type.from_ruby([{ 'name' => 'a', 'id' => 1 }, ::Types.my_bus.Device.new('b')])
+      assert_equal [::Types.my_bus.Device.new('a', 1, 0), ::Types.my_bus.Device.new('b', 0, 0)], values
+      assert_equal :PASSIVE, ::Types.my_bus.Mode.from_ruby('PASSIVE')
+      assert_raises(Types::ValueError) { ::Types.my_bus.Mode.from_ruby('SLEEP') }
+      assert_equal({ 'k' => [1, 'x'] }, ::Types.my_bus.Calibration.from_ruby({ 'k' => [1, 'x'] }))
+      assert_equal [0] * 8, @app.types.find('/uint8_t[8]').zero
+    end
+  end
+end

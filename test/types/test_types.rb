@@ -51,6 +51,9 @@ module Syskit
       type = @app.types.find('/std/vector</my_bus/Device>')
       values = type.from_ruby([{ 'name' => 'a', 'id' => 1 }, ::Types.my_bus.Device.new('b')])
       assert_equal [::Types.my_bus.Device.new('a', 1, 0), ::Types.my_bus.Device.new('b', 0, 0)], values
+    end
+
+    def test_enums_opaque_types_and_arrays
       assert_equal :PASSIVE, ::Types.my_bus.Mode.from_ruby('PASSIVE')
       assert_raises(Types::ValueError) { ::Types.my_bus.Mode.from_ruby('SLEEP') }
       assert_equal({ 'k' => [1, 'x'] }, ::Types.my_bus.Calibration.from_ruby({ 'k' => [1, 'x'] }))

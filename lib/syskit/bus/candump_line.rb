@@ -68,7 +68,7 @@ module Syskit
         end
         raise Malformed, "id #{text} has bits set beyond the 29-bit id and the error flag" if value > 0x3FFF_FFFF
 
-        value & Frame::ERR_FLAG == 0 ? value | Frame::EFF_FLAG : value
+        (value & Frame::ERR_FLAG).zero? ? value | Frame::EFF_FLAG : value
       end
 
       def parse_rtr(can_id, rest, time)

@@ -65,7 +65,7 @@ module Syskit
       # Same as #receivers, without the cache: one hash lookup per distinct
       # mask of the frame's kind.
       def lookup(key)
-        key & Frame::EFF_FLAG == 0 ? match(@standard, key) : match(@extended, key & Frame::EFF_MASK)
+        (key & Frame::EFF_FLAG).zero? ? match(@standard, key) : match(@extended, key & Frame::EFF_MASK)
       end
 
       # The names of the write-only devices whose can_id filter matches

@@ -32,7 +32,7 @@ module Syskit
       # The id written as candump writes it: 3 hex digits for a standard
       # frame, 8 for an extended one.
       def self.key_to_s(key)
-        key & EFF_FLAG == 0 ? format('%03X', key) : format('%08X', key & EFF_MASK)
+        (key & EFF_FLAG).zero? ? format('%03X', key) : format('%08X', key & EFF_MASK)
       end
 
       def initialize(can_id:, len: nil, data: ''.b, time: nil, fd_flags: nil)

@@ -18,7 +18,7 @@ module Syskit
           max = self[:data].size
           raise ArgumentError, "a #{self.class.name} cannot hold #{len} data bytes (at most #{max})" if len > max
 
-          data = can_id & Frame::RTR_FLAG == 0 ? self[:data].to_ptr.get_bytes(0, len) : ''.b
+          data = (can_id & Frame::RTR_FLAG).zero? ? self[:data].to_ptr.get_bytes(0, len) : ''.b
           Frame.new(can_id: can_id, len: len, data: data, time: time, fd_flags: fd_flags)
         end
 
@@ -67,7 +67,7 @@ module Syskit
         # beyond 11 bits (drivers that drop the flags) is an extended id.
         def from_message(message)
           can_id = message.can_id
-          if can_id & (Frame::EFF_FLAG | Frame::ERR_FLAG) == 0 && can_id & Frame::EFF_MASK > Frame::SFF_MASK
+          if (can_id & (Frame::EFF_FLAG | Frame::ERR_FLAG)).zero? && can_id & Frame::EFF_MASK > Frame::SFF_MASK
             can_id |= Frame::EFF_FLAG
           end
           rtr = can_id & Frame::RTR_FLAG != 0

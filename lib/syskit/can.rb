@@ -43,7 +43,8 @@ module Syskit
         next if value.between?(0, EXTENDED_ID_MAX)
 
         raise ArgumentError, format('the %<what>s 0x%<v>X does not fit in 29 bits (CAN ids are 11-bit standard ' \
-                                    'or 29-bit extended, at most 0x%<max>X)', what: what, v: value, max: EXTENDED_ID_MAX)
+                                    'or 29-bit extended, at most 0x%<max>X)',
+                                    what: what, v: value, max: EXTENDED_ID_MAX)
       end
       return Filter.new(id, mask) if (id & mask) == id
 

@@ -21,7 +21,7 @@ module Syskit
       failed_files = app.problems.filter_map { |p| p.location&.path }.uniq
       app.profiles.values.sort_by(&:name).each do |profile|
         @problems.concat(Checks::CanFilters.new(profile.robot).warnings)
-        next if (profile_files(profile) & failed_files).any?
+        next if profile_files(profile).intersect?(failed_files)
 
         app.robot_configs.each_key { |robot| generate(profile, robot) }
       end

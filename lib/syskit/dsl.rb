@@ -35,7 +35,8 @@ module Syskit
         location = Location.of_caller
         unless parent.is_a?(Models::DeviceModel) && !parent.is_a?(Models::ComBusModel)
           raise DeclarationError.new("parent: expects a device model, got #{parent.inspect}",
-                                     location: location, hint: 'pass an instance of a Syskit::Models::DeviceModel subclass')
+                                     location: location,
+                                     hint: 'pass an instance of a Syskit::Models::DeviceModel subclass')
         end
 
         Models::DeviceModel.define(self, name, location: location, root: parent, model_class: parent.class, &block)
@@ -63,22 +64,23 @@ module Syskit
 
       def profile_module(name, location)
         unless Naming.constant_name?(name)
-          raise DeclarationError.new("'#{name}' is not a valid profile name", location: location,
-                                                                              hint: "profile names are constant names, e.g. profile 'Base'")
+          raise DeclarationError.new("'#{name}' is not a valid profile name",
+                                     location: location, hint: "profile names are constant names, e.g. profile 'Base'")
         end
         return const_set(name, Module.new) unless const_defined?(name, false)
 
         existing = const_get(name, false)
         return existing if existing.instance_of?(Module)
 
-        raise DeclarationError.new("#{self}::#{name} is already defined and is not a profile", location: location,
-                                                                                               hint: 'give the profile another name')
+        raise DeclarationError.new("#{self}::#{name} is already defined and is not a profile",
+                                   location: location, hint: 'give the profile another name')
       end
     end
 
     def self.app!
-      Syskit.app || raise(Error.new('no Syskit app is loaded', location: Location.of_caller,
-                                                               hint: 'load the file through syskit (syskit check, syskit plan, rake test)'))
+      Syskit.app || raise(Error.new('no Syskit app is loaded',
+                                    location: Location.of_caller,
+                                    hint: 'load the file through syskit (syskit check, syskit plan, rake test)'))
     end
   end
 end

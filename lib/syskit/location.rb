@@ -4,6 +4,7 @@ module Syskit
   # A place in a user's file: where a declaration was made or an error comes from.
   Location = Struct.new(:path, :lineno)
 
+  # Finding the user's frame in a call stack, and printing it as file:line.
   class Location
     # The gem's own code; frames in here are never "the user's line".
     GEM_LIB = File.expand_path('..', __dir__)

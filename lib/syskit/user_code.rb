@@ -60,8 +60,8 @@ module Syskit
         text = first_line(exception.message)
         location = path && Location.new(path, 0)
       end
-      FileLoadError.new("syntax error: #{text.strip.delete_prefix('syntax error, ')}", location: location,
-                                                                                       hint: 'fix the Ruby syntax at this line')
+      FileLoadError.new("syntax error: #{text.strip.delete_prefix('syntax error, ')}",
+                        location: location, hint: 'fix the Ruby syntax at this line')
     end
 
     def name_error(exception, path, error_class, context)

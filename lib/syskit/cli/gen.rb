@@ -7,6 +7,7 @@ require 'syskit/generators/orogen_generator'
 require 'syskit/generators/profile_generator'
 
 module Syskit
+  # The `syskit` command line (see syskit/cli.rb), here given its `gen` subcommand.
   class CLI < Thor
     # `syskit gen app|dev|bus|orogen|profile`: files that follow the app's
     # conventions, each model with its test. Nothing is ever overwritten

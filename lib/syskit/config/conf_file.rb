@@ -98,24 +98,34 @@ module Syskit
         values = Psych.safe_load(("\n" * header_line) + text, filename: path, aliases: false) || {}
         unless values.is_a?(Hash)
           raise ConfigurationError.new('a configuration section must map property names to values',
-                                       location: Location.new(path, header_line + 1), hint: 'write property: value lines')
+                                       location: Location.new(path, header_line + 1),
+                                       hint: 'write property: value lines')
         end
 
         check_keys(values, text, header_line)
         values
       rescue Psych::BadAlias
-        raise ConfigurationError.new('YAML aliases are not allowed in configuration files (*name repeats an &name value)',
-                                     location: line_of(/(?:^|[\s\[{,:])\*\w/, text, header_line),
-                                     hint: 'write the value out again: configuration files hold plain data')
+        raise ConfigurationError.new(
+          'YAML aliases are not allowed in configuration files (*name repeats an &name value)',
+          location: line_of(/(?:^|[\s\[{,:])\*\w/, text, header_line),
+          hint: 'write the value out again: configuration files hold plain data'
+        )
       rescue Psych::DisallowedClass => e
+        raise tag_error(e, text, header_line)
+      rescue Psych::SyntaxError => e
+        raise ConfigurationError.new("invalid YAML: #{e.problem}",
+                                     location: Location.new(path, e.line), hint: 'fix the YAML syntax at this line')
+      end
+
+      # Psych only says a class was refused: the error points at the first
+      # tag of the section and names it when the line shows it.
+      def tag_error(error, text, header_line)
         location = line_of(/!/, text, header_line)
         tag = File.readlines(path)[location.lineno - 1].to_s[/!\S+/]
-        raise ConfigurationError.new("YAML tags such as #{tag || 'this one'} are not allowed in configuration files " \
-                                     "(#{e.message})", location: location,
-                                                       hint: 'configuration files hold plain data: no tags, no Ruby objects')
-      rescue Psych::SyntaxError => e
-        raise ConfigurationError.new("invalid YAML: #{e.problem}", location: Location.new(path, e.line),
-                                                                   hint: 'fix the YAML syntax at this line')
+        ConfigurationError.new("YAML tags such as #{tag || 'this one'} are not allowed in configuration files " \
+                               "(#{error.message})",
+                               location: location,
+                               hint: 'configuration files hold plain data: no tags, no Ruby objects')
       end
 
       # Top-level keys name properties: anything else (5000:, ~:, [a]:) is

@@ -126,8 +126,9 @@ module Syskit
 
       def usage_error(spec, location)
         DeploymentError.new(
-          "use_deployment does not understand #{spec.inspect}", location: location,
-                                                                hint: "write use_deployment 'deployment_name' or use_deployment OroGen.lib.Task => 'task_name'"
+          "use_deployment does not understand #{spec.inspect}",
+          location: location,
+          hint: "write use_deployment 'deployment_name' or use_deployment OroGen.lib.Task => 'task_name'"
         )
       end
     end

@@ -83,8 +83,9 @@ module Syskit
         return if message_type || equal?(Syskit::ComBus)
 
         raise DeclarationError.new(
-          "#{self} has no message type", location: declared_at,
-                                         hint: "pass it: com_bus_type '#{name.to_s.split('::').last}', message_type: '/canbus/Message'"
+          "#{self} has no message type",
+          location: declared_at,
+          hint: "pass it: com_bus_type '#{name.to_s.split('::').last}', message_type: '/canbus/Message'"
         )
       end
 

@@ -3,6 +3,7 @@
 require 'syskit/port'
 
 module Syskit
+  # The plain model objects the DSL records declarations into.
   module Models
     # A data service: a named set of ports that components provide
     # (+data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+).
@@ -24,8 +25,9 @@ module Syskit
         name = name.to_s
         unless Naming.constant_name?(name)
           raise DeclarationError.new(
-            "'#{name}' is not a valid name for a #{kind}", location: location,
-                                                           hint: "model names are Ruby constant names, e.g. '#{Naming.camelize(name.gsub(/\W/, '_'))}'"
+            "'#{name}' is not a valid name for a #{kind}",
+            location: location,
+            hint: "model names are Ruby constant names, e.g. '#{Naming.camelize(name.gsub(/\W/, '_'))}'"
           )
         end
         if namespace.const_defined?(name, false)
@@ -159,8 +161,9 @@ module Syskit
         existing = ports[name]
         if existing && (existing.type != port.type || existing.direction != port.direction)
           raise DeclarationError.new(
-            "#{model}'s #{port} collides with #{self}'s #{existing}", location: location,
-                                                                      hint: "map it to another name: provides #{model}, '#{port.name}' => 'other_name'"
+            "#{model}'s #{port} collides with #{self}'s #{existing}",
+            location: location,
+            hint: "map it to another name: provides #{model}, '#{port.name}' => 'other_name'"
           )
         end
 
@@ -212,13 +215,14 @@ module Syskit
           raise DeclarationError.new(
             "#{model} has no port named '#{a}' or '#{b}' (mapping '#{a}' => '#{b}' on #{owner})",
             location: location,
-            hint: "#{model}'s ports are #{model.ports.values.map(&:to_s).join(', ')}; " \
+            hint: "#{model}'s ports are #{model.ports.values.join(', ')}; " \
                   "write '#{model.ports.keys.first || 'its_port'}' => 'your_port'"
           )
         end
       end
     end
 
+    # What a bus's services add to a data service: port aliases and roles.
     class DataServiceModel
       # What users may write for a bus client's ports in port mappings (the
       # seed's disambiguation example maps 'bus_in' and 'bus_out').

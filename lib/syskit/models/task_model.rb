@@ -98,8 +98,9 @@ module Syskit
         location = Location.of_caller
         unless model.is_a?(DeviceModel)
           raise DeclarationError.new(
-            "driver_for expects a device or bus model, got #{model.inspect}", location: location,
-                                                                              hint: model.is_a?(DataServiceModel) ? "#{model} is a data service: use provides #{model}, as: 'name'" : nil
+            "driver_for expects a device or bus model, got #{model.inspect}",
+            location: location,
+            hint: ("#{model} is a data service: use provides #{model}, as: 'name'" if model.is_a?(DataServiceModel))
           )
         end
 
@@ -116,8 +117,8 @@ module Syskit
                                      location: location)
         end
         unless as
-          raise DeclarationError.new("provides #{model} needs a service name", location: location,
-                                                                               hint: "write provides #{model}, as: 'name'")
+          raise DeclarationError.new("provides #{model} needs a service name",
+                                     location: location, hint: "write provides #{model}, as: 'name'")
         end
 
         add_service(as, model, mappings, location)
@@ -213,15 +214,16 @@ module Syskit
 
       def check_service_options(name, mappings, location)
         unless name.match?(/\A[a-z_]\w*\z/)
-          raise DeclarationError.new("'#{name}' is not a valid service name", location: location,
-                                                                              hint: "use a lower-case name, e.g. as: 'gps'")
+          raise DeclarationError.new("'#{name}' is not a valid service name",
+                                     location: location, hint: "use a lower-case name, e.g. as: 'gps'")
         end
         options = mappings.keys.grep(Symbol)
         return if options.empty?
 
         raise DeclarationError.new(
-          "unknown option #{options.map { |o| "#{o}:" }.join(', ')}", location: location,
-                                                                      hint: "the only option is as: 'name'; port mappings are written 'service_port' => 'task_port'"
+          "unknown option #{options.map { |o| "#{o}:" }.join(', ')}",
+          location: location,
+          hint: "the only option is as: 'name'; port mappings are written 'service_port' => 'task_port'"
         )
       end
     end

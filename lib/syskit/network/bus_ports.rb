@@ -123,16 +123,21 @@ module Syskit
         NetworkError.new(
           "#{@device_task.model.name}, the driver of #{@device}, provides several bus client services: " \
           "#{services.map(&:name).join(', ')}",
-          location: @device.declared_at, hint: "choose one with #{option}: '#{services.first.name}' in the device declaration"
+          location: @device.declared_at,
+          hint: "choose one with #{option}: '#{services.first.name}' in the device declaration"
         )
       end
 
       def unknown_client_service(option, wanted, services, service_model)
+        hint = if services.empty?
+                 "provide it: provides #{service_model}, as: '#{wanted}'"
+               else
+                 "its services of that kind: #{services.map(&:name).join(', ')}"
+               end
         NetworkError.new(
           "#{option}: '#{wanted}' names no #{service_model} service of #{@device_task.model.name}" \
           "#{Naming.did_you_mean(wanted, services.map(&:name))}",
-          location: @device.declared_at,
-          hint: services.empty? ? "provide it: provides #{service_model}, as: '#{wanted}'" : "its services of that kind: #{services.map(&:name).join(', ')}"
+          location: @device.declared_at, hint: hint
         )
       end
     end

@@ -50,7 +50,8 @@ module Syskit
         while bus
           if seen.include?(bus)
             raise NetworkError.new("#{bus} is attached through itself: #{(seen + [bus]).map(&:name).join(' -> ')}",
-                                   location: bus.declared_at, hint: 'a bus cannot be attached to itself, directly or not')
+                                   location: bus.declared_at,
+                                   hint: 'a bus cannot be attached to itself, directly or not')
           end
 
           seen << bus
@@ -85,7 +86,8 @@ module Syskit
 
       def static_clash(bus_task, port, static)
         NetworkError.new(
-          "#{port.device}'s #{port.direction} port '#{port.name}' on #{bus_task.model.name} collides with its #{static}",
+          "#{port.device}'s #{port.direction} port '#{port.name}' on #{bus_task.model.name} " \
+          "collides with its #{static}",
           location: port.device.declared_at, hint: 'rename the device'
         )
       end

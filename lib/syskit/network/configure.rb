@@ -39,7 +39,8 @@ module Syskit
 
           raise ConfigurationError.new(
             "#{device} asks for sections #{task.conf.join(', ')} but #{task.model.name} has no configuration file",
-            location: location, hint: "create config/orogen/#{task.model.name}.yml with a '--- name:#{task.conf.last}' section"
+            location: location,
+            hint: "create config/orogen/#{task.model.name}.yml with a '--- name:#{task.conf.last}' section"
           )
         end
 

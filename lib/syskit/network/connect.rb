@@ -16,12 +16,12 @@ module Syskit
       def run
         @context.bus_links.each do |link|
           if link.bus_output
-            connect(link.bus_task, link.bus_output, link.device_task, link.client_input, link.device,
-                    false)
+            connect(link.bus_task, link.bus_output, link.device_task, link.client_input,
+                    device: link.device, into_bus: false)
           end
           if link.bus_input
-            connect(link.device_task, link.client_output, link.bus_task, link.bus_input, link.device,
-                    true)
+            connect(link.device_task, link.client_output, link.bus_task, link.bus_input,
+                    device: link.device, into_bus: true)
           end
         rescue Syskit::Error => e
           @context.error(e)
@@ -31,7 +31,7 @@ module Syskit
 
       private
 
-      def connect(from_task, from_name, to_task, to_name, device, into_bus)
+      def connect(from_task, from_name, to_task, to_name, device:, into_bus:)
         from = port(from_task, from_name, :output, device)
         to = port(to_task, to_name, :input, device)
         unless from.type == to.type
@@ -48,7 +48,8 @@ module Syskit
         return port if port&.direction == direction
 
         raise NetworkError.new("#{task} has no #{direction} port '#{name}' for #{device}",
-                               location: device.declared_at, hint: 'the port should have been created at configure time')
+                               location: device.declared_at,
+                               hint: 'the port should have been created at configure time')
       end
 
       def check_multiplexing
@@ -57,16 +58,21 @@ module Syskit
         by_sink.each_value.flat_map(&:values).each do |into|
           next if into.size == 1 || into.first.to_port.multiplexes?
 
-          sink = into.first
-          sources = into.map { |c| "#{c.from_task.name}.#{c.from_port.name} (#{c.device})" }
-          @context.error(NetworkError.new(
-                           "#{sink.to_task}'s input port '#{sink.to_port.name}' does not multiplex but " \
-                           "#{into.size} outputs write to it: #{sources.join(', ')}",
-                           location: into.last.device.declared_at,
-                           hint: 'mark it .multiplexes in the .orogen file if the component accepts several writers, ' \
-                                 'or give each device its own input port (dynamic_input_port)'
-                         ))
+          @context.error(multiplexing_error(into))
         end
+      end
+
+      # +into+: the connections that write to one input port.
+      def multiplexing_error(into)
+        sink = into.first
+        sources = into.map { |c| "#{c.from_task.name}.#{c.from_port.name} (#{c.device})" }
+        NetworkError.new(
+          "#{sink.to_task}'s input port '#{sink.to_port.name}' does not multiplex but " \
+          "#{into.size} outputs write to it: #{sources.join(', ')}",
+          location: into.last.device.declared_at,
+          hint: 'mark it .multiplexes in the .orogen file if the component accepts several writers, ' \
+                'or give each device its own input port (dynamic_input_port)'
+        )
       end
     end
   end

@@ -86,7 +86,7 @@ module Syskit
         hints = requirement.deployment_hints.map(&:inspect).join(', ')
         DeploymentError.new(
           "none of the deployed tasks that can run #{requirement.device}'s driver #{task.model.name} " \
-          "matches prefer_deployed_tasks(#{hints}): #{candidates.map(&:to_s).join(', ')}",
+          "matches prefer_deployed_tasks(#{hints}): #{candidates.join(', ')}",
           location: requirement.device.deployment_hints_location || device_location(requirement),
           hint: 'change the pattern, or deploy a task whose name matches it'
         )
@@ -97,7 +97,7 @@ module Syskit
         example = candidates.any? { |c| c.name == name } ? "'#{name}'" : "/#{candidates.first.name}/"
         DeploymentError.new(
           "several deployed tasks can run #{requirement.device}'s driver #{task.model.name}: " \
-          "#{candidates.map(&:to_s).join(', ')}",
+          "#{candidates.join(', ')}",
           location: device_location(requirement),
           hint: "choose one with .prefer_deployed_tasks(#{example}) on the device declaration"
         )

@@ -29,8 +29,9 @@ module Syskit
         services = model.driver_services_for(device.model)
         if services.empty?
           raise NetworkError.new("#{model.name} has no driver service for #{device.model}, so #{device} " \
-                                 'would leave its task without a device', location: device.declared_at,
-                                                                          hint: "declare driver_for #{device.model} in #{model.name}'s extension")
+                                 'would leave its task without a device',
+                                 location: device.declared_at,
+                                 hint: "declare driver_for #{device.model} in #{model.name}'s extension")
         end
 
         task = model.new(services.to_h { |srv| [srv.argument_name, device] })

@@ -146,8 +146,9 @@ module Syskit
       def declare(table, raw_name, what)
         declared_name = raw_name.to_s
         unless declared_name.match?(/\A[A-Za-z_]\w*\z/)
-          raise SpecError.new("'#{declared_name}' is not a valid #{what} name", location: Location.of_caller,
-                                                                                hint: 'oroGen names are C++ identifiers: letters, digits and _')
+          raise SpecError.new("'#{declared_name}' is not a valid #{what} name",
+                              location: Location.of_caller,
+                              hint: 'oroGen names are C++ identifiers: letters, digits and _')
         end
         if table.key?(declared_name)
           raise SpecError.new("#{@spec.name} declares the #{what} '#{declared_name}' twice",

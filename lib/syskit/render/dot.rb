@@ -9,20 +9,29 @@ module Syskit
 
       def render(plan)
         out = "digraph #{quote(plan.profile.to_s)} {\n"
-        out << "  rankdir=LR;\n  node [shape=box, fontname=\"Helvetica\"];\n  edge [fontname=\"Helvetica\", fontsize=10];\n"
+        out << "  rankdir=LR;\n  node [shape=box, fontname=\"Helvetica\"];\n"
+        out << "  edge [fontname=\"Helvetica\", fontsize=10];\n"
         plan.tasks.group_by(&:deployment).sort.each_with_index do |(deployment, tasks), i|
-          out << "  subgraph cluster_#{i} {\n    label=#{quote("deployment #{deployment}")};\n"
-          tasks.each do |t|
-            out << "    #{quote(t.name)} [label=#{quote("#{t.name}\n#{t.model}")}];\n"
-          end
-          out << "  }\n"
+          out << cluster(deployment, tasks, i)
         end
-        plan.connections.each do |c|
-          policy = c.policy['type'] == 'buffer' ? "buffer #{c.policy['size']}" : c.policy['type']
-          label = "#{c.from.port} -> #{c.to.port}\n#{policy}"
-          out << "  #{quote(c.from.task)} -> #{quote(c.to.task)} [label=#{quote(label)}];\n"
-        end
+        plan.connections.each { |c| out << edge(c) }
         out << "}\n"
+      end
+
+      # Graphviz draws the tasks of one deployment (one process) together.
+      def cluster(deployment, tasks, index)
+        out = "  subgraph cluster_#{index} {\n    label=#{quote("deployment #{deployment}")};\n"
+        tasks.each do |t|
+          out << "    #{quote(t.name)} [label=#{quote("#{t.name}\n#{t.model}")}];\n"
+        end
+        out << "  }\n"
+      end
+
+      def edge(connection)
+        policy = connection.policy
+        policy = policy['type'] == 'buffer' ? "buffer #{policy['size']}" : policy['type']
+        label = "#{connection.from.port} -> #{connection.to.port}\n#{policy}"
+        "  #{quote(connection.from.task)} -> #{quote(connection.to.task)} [label=#{quote(label)}];\n"
       end
 
       def quote(text)

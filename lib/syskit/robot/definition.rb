@@ -51,8 +51,8 @@ module Syskit
       def attach(device, bus, location:, client_to_bus: true, bus_to_client: true)
         bus = find_bus(bus, location)
         if device.attached?
-          raise DeclarationError.new("#{device} is already attached to #{device.bus}", location: location,
-                                                                                       hint: 'a device is attached to one bus')
+          raise DeclarationError.new("#{device} is already attached to #{device.bus}",
+                                     location: location, hint: 'a device is attached to one bus')
         end
         if !client_to_bus && !bus_to_client
           raise DeclarationError.new(
@@ -106,8 +106,9 @@ module Syskit
         end
         name = name.to_s
         unless name.match?(/\A[a-z_][a-zA-Z0-9_]*\z/)
-          raise DeclarationError.new("'#{name}' is not a valid device name", location: location,
-                                                                             hint: "device names are lower-case identifiers, e.g. as: 'gps'")
+          raise DeclarationError.new("'#{name}' is not a valid device name",
+                                     location: location,
+                                     hint: "device names are lower-case identifiers, e.g. as: 'gps'")
         end
         if (other = @devices[name])
           raise DeclarationError.new("a device named '#{name}' is already declared at #{other.declared_at}",
@@ -125,15 +126,19 @@ module Syskit
                                      location: location, hint: 'declare other devices with device')
         end
         if model.is_a?(Models::ComBusModel)
-          raise DeclarationError.new("#{model} is a communication bus", location: location,
-                                                                        hint: "declare it with com_bus #{model}, as: 'name'")
+          raise DeclarationError.new("#{model} is a communication bus",
+                                     location: location, hint: "declare it with com_bus #{model}, as: 'name'")
         end
         return if model.is_a?(Models::DeviceModel) || (model.is_a?(Class) && model <= TaskContext && model.spec)
 
+        hint = if model.is_a?(Models::DataServiceModel)
+                 'declare the hardware with device_type and make it provide this service'
+               else
+                 'pass a model declared with device_type, e.g. device(Devices::GPS::Ublox::F9, as: \'gps\')'
+               end
         raise DeclarationError.new(
           "device expects a device model (device_type) or its driver task model, got #{describe(model)}",
-          location: location,
-          hint: model.is_a?(Models::DataServiceModel) ? 'declare the hardware with device_type and make it provide this service' : 'pass a model declared with device_type, e.g. device(Devices::GPS::Ublox::F9, as: \'gps\')'
+          location: location, hint: hint
         )
       end
 
@@ -169,8 +174,12 @@ module Syskit
 
         buses = devices.grep(ComBus).map(&:name)
         what = found ? "#{found} is not a communication bus" : "no bus named '#{bus}'"
-        raise UnknownName.new("#{what}#{Naming.did_you_mean(bus, buses)}", location: location,
-                                                                           hint: buses.empty? ? "declare it first: com_bus Model, as: '#{bus}'" : "buses of this robot: #{buses.join(', ')}")
+        hint = if buses.empty?
+                 "declare it first: com_bus Model, as: '#{bus}'"
+               else
+                 "buses of this robot: #{buses.join(', ')}"
+               end
+        raise UnknownName.new("#{what}#{Naming.did_you_mean(bus, buses)}", location: location, hint: hint)
       end
 
       def check_cycle(device, bus, location)

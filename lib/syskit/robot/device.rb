@@ -64,8 +64,8 @@ module Syskit
       def with_conf(*names)
         names = names.flatten.map(&:to_s)
         if names.empty?
-          raise DeclarationError.new('with_conf needs at least one section name', location: Location.of_caller,
-                                                                                  hint: "write with_conf('default', 'forward')")
+          raise DeclarationError.new('with_conf needs at least one section name',
+                                     location: Location.of_caller, hint: "write with_conf('default', 'forward')")
         end
 
         @conf = names
@@ -208,8 +208,8 @@ module Syskit
         return @settings[key] if value.nil?
 
         unless yield(value)
-          raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}", location: Location.of_caller,
-                                                                                    hint: "#{key} takes a positive number")
+          raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}",
+                                     location: Location.of_caller, hint: "#{key} takes a positive number")
         end
 
         @settings[key] = value

@@ -36,11 +36,17 @@ module Syskit
         models = task.driven_device_models
         return models.first if models.size == 1
 
-        raise DriverError.new(
-          models.empty? ? "#{task.name} drives no device" : "#{task.name} drives several devices: #{models.join(', ')}",
-          location: device.declared_at,
-          hint: models.empty? ? "declare driver_for DeviceModel, as: 'name' in the extension file of #{task.name}" : "pass the device model and choose the driver with using: #{task.name}"
-        )
+        if models.empty?
+          raise DriverError.new(
+            "#{task.name} drives no device",
+            location: device.declared_at,
+            hint: "declare driver_for DeviceModel, as: 'name' in the extension file of #{task.name}"
+          )
+        end
+
+        raise DriverError.new("#{task.name} drives several devices: #{models.join(', ')}",
+                              location: device.declared_at,
+                              hint: "pass the device model and choose the driver with using: #{task.name}")
       end
 
       def check_using(device)
@@ -48,10 +54,13 @@ module Syskit
         return using unless using.driver_services_for(device.model).empty?
 
         others = drivers_for(device.model).map(&:name)
-        raise DriverError.new(
-          "#{using.name} does not drive #{device.model} (#{device})", location: device.declared_at,
-                                                                      hint: others.empty? ? "declare driver_for #{device.model} in the extension file of #{using.name}" : "drivers of #{device.model}: #{others.join(', ')}"
-        )
+        hint = if others.empty?
+                 "declare driver_for #{device.model} in the extension file of #{using.name}"
+               else
+                 "drivers of #{device.model}: #{others.join(', ')}"
+               end
+        raise DriverError.new("#{using.name} does not drive #{device.model} (#{device})",
+                              location: device.declared_at, hint: hint)
       end
 
       def single_driver(device)

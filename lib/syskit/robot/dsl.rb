@@ -29,8 +29,8 @@ module Syskit
         location = Location.of_caller
         bus = @definition.send(:find_bus, bus_name, location)
         unless block
-          raise DeclarationError.new("through '#{bus.name}' needs a block", location: location,
-                                                                            hint: "write through '#{bus.name}' do device(...) end")
+          raise DeclarationError.new("through '#{bus.name}' needs a block",
+                                     location: location, hint: "write through '#{bus.name}' do device(...) end")
         end
 
         previous = @bus

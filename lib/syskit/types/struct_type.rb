@@ -54,7 +54,8 @@ module Syskit
         unknown = hash.keys.map(&:to_s) - field_names
         unless unknown.empty?
           raise ValueError, "#{name} has no field '#{unknown.first}'" \
-                            "#{Naming.did_you_mean(unknown.first, field_names)}; its fields are #{field_names.join(', ')}"
+                            "#{Naming.did_you_mean(unknown.first, field_names)}; " \
+                            "its fields are #{field_names.join(', ')}"
         end
 
         value_class.new(**hash.transform_keys(&:to_sym))

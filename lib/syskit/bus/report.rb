@@ -51,8 +51,7 @@ module Syskit
       def to_h
         {
           'bus' => bus, 'source' => source,
-          'frames' => { 'total' => traffic.frames, 'standard' => traffic.standard, 'extended' => traffic.extended,
-                        'fd' => traffic.fd, 'rtr' => traffic.rtr, 'error' => traffic.errors },
+          'frames' => frames_hash,
           'first_time' => Report.seconds(traffic.first_time), 'last_time' => Report.seconds(traffic.last_time),
           'duration' => duration,
           'devices' => devices.map { |d| device_hash(d) },
@@ -64,9 +63,7 @@ module Syskit
       private
 
       def build(dispatcher)
-        rows = dispatcher.devices.to_h do |d|
-          [d.name, DeviceRow.new(name: d.name, status: d.status, can_filter: d.can_filter, frames: 0, keys: [])]
-        end
+        rows = device_rows(dispatcher)
         @unclaimed = []
         @overlaps = []
         traffic.ids.keys.sort.each do |key|
@@ -76,9 +73,20 @@ module Syskit
           @unclaimed << id_row(key, stats, writers: dispatcher.writers(key)) if names.empty?
           @overlaps << id_row(key, stats, names) if names.size > 1
         end
+        @devices = with_rates(rows.values)
+      end
+
+      # Empty rows by device name, filled by #add.
+      def device_rows(dispatcher)
+        dispatcher.devices.to_h do |d|
+          [d.name, DeviceRow.new(name: d.name, status: d.status, can_filter: d.can_filter, frames: 0, keys: [])]
+        end
+      end
+
+      # Write-only devices receive nothing: they get no rate.
+      def with_rates(rows)
         span = traffic.last_time - traffic.first_time if traffic.first_time
-        rows.each_value { |row| row.rate = Report.rate(row.frames, span) unless row.status == :write_only }
-        @devices = rows.values
+        rows.each { |row| row.rate = Report.rate(row.frames, span) unless row.status == :write_only }
       end
 
       def add(row, key, stats)
@@ -93,6 +101,11 @@ module Syskit
       def id_row(key, stats, names = [], writers: [])
         IdRow.new(key: key, frames: stats.frames, first_time: stats.first_time, last_time: stats.last_time,
                   devices: names, writers: writers)
+      end
+
+      def frames_hash
+        { 'total' => traffic.frames, 'standard' => traffic.standard, 'extended' => traffic.extended,
+          'fd' => traffic.fd, 'rtr' => traffic.rtr, 'error' => traffic.errors }
       end
 
       def id_hash(row)

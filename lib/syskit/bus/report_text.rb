@@ -133,11 +133,7 @@ module Syskit
       # Rows of cells in aligned columns; a row shorter than the header ends
       # with a note that spans the remaining columns.
       def table(head, rows, indent: '')
-        widths = head.map(&:size)
-        rows.each do |row|
-          # A note spans columns: only the name before it counts for widths.
-          row.first(row.size == head.size ? row.size : 1).each_with_index { |c, i| widths[i] = [widths[i], c.size].max }
-        end
+        widths = column_widths(head, rows)
         [head, *rows].map do |row|
           cells = row.each_with_index.map do |cell, i|
             next cell if row.size < head.size && i == row.size - 1
@@ -146,6 +142,15 @@ module Syskit
           end
           "#{indent}#{cells.join('  ').rstrip}\n"
         end.join
+      end
+
+      def column_widths(head, rows)
+        widths = head.map(&:size)
+        rows.each do |row|
+          # A note spans columns: only the name before it counts for widths.
+          row.first(row.size == head.size ? row.size : 1).each_with_index { |c, i| widths[i] = [widths[i], c.size].max }
+        end
+        widths
       end
     end
   end

@@ -44,14 +44,7 @@ module Syskit
         stats = @ids[key]
         if stats
           stats.frames += 1
-          return unless time
-
-          # Logs are in time order: the last frame is the latest, except in
-          # logs merged from several sources.
-          if stats.last_time.nil? then stats.first_time = stats.last_time = time
-          elsif time >= stats.last_time then stats.last_time = time
-          elsif time < stats.first_time then stats.first_time = time
-          end
+          stretch(stats, time) if time
         else
           @ids[key] = IdStats.new(1, time, time)
         end
@@ -75,6 +68,16 @@ module Syskit
       end
 
       private
+
+      # Same as #span, for the times of one key.
+      def stretch(stats, time)
+        # Logs are in time order: the last frame is the latest, except in
+        # logs merged from several sources.
+        if stats.last_time.nil? then stats.first_time = stats.last_time = time
+        elsif time >= stats.last_time then stats.last_time = time
+        elsif time < stats.first_time then stats.first_time = time
+        end
+      end
 
       def span(time)
         if @last_time.nil? then @first_time = @last_time = time

@@ -19,12 +19,7 @@ module Syskit
       app.load(robots: :all, everything: true)
       @problems.concat(app.problems)
       failed_files = app.problems.filter_map { |p| p.location&.path }.uniq
-      app.profiles.values.sort_by(&:name).each do |profile|
-        @problems.concat(Checks::CanFilters.new(profile.robot).warnings)
-        next if profile_files(profile).intersect?(failed_files)
-
-        app.robot_configs.each_key { |robot| generate(profile, robot) }
-      end
+      app.profiles.values.sort_by(&:name).each { |profile| check_profile(profile, failed_files) }
       @problems = @problems.uniq { |p| [p.class, p.message, p.location.to_a] }
       self
     end
@@ -38,6 +33,13 @@ module Syskit
     end
 
     private
+
+    def check_profile(profile, failed_files)
+      @problems.concat(Checks::CanFilters.new(profile.robot).warnings)
+      return if profile_files(profile).intersect?(failed_files)
+
+      app.robot_configs.each_key { |robot| generate(profile, robot) }
+    end
 
     def profile_files(profile)
       ([profile.declared_at] + profile.robot.devices.map(&:declared_at)).compact.map(&:path).uniq

@@ -91,25 +91,31 @@ module Syskit
     private
 
     def print_check(app, report)
-      if options[:format] == 'json'
-        require 'json'
-        puts ::JSON.pretty_generate('app' => app.name, 'errors' => report.errors.size,
-                                    'warnings' => report.warnings.size,
-                                    'problems' => report.problems.map { |p| p.to_h(app.root) })
-        return
-      end
+      return print_check_json(app, report) if options[:format] == 'json'
 
       # Files in the order their first problem was found, which puts the
       # cause before what follows from it; lines in order within a file.
       groups = report.problems.group_by { |p| p.location&.relative_path(app.root).to_s }
       groups.each_with_index do |(_file, problems), i|
         puts if i.positive?
-        problems.sort_by { |p| p.location&.lineno.to_i }.each do |p|
-          puts p.report(app.root)
-          puts((p.backtrace || []).map { |l| "    #{l}" }) if trace?
-        end
+        print_problems(app, problems)
       end
       puts "#{app.name}: #{report.errors.size} error(s), #{report.warnings.size} warning(s)"
+    end
+
+    # The problems of one file, in line order.
+    def print_problems(app, problems)
+      problems.sort_by { |p| p.location&.lineno.to_i }.each do |p|
+        puts p.report(app.root)
+        puts((p.backtrace || []).map { |l| "    #{l}" }) if trace?
+      end
+    end
+
+    def print_check_json(app, report)
+      require 'json'
+      puts ::JSON.pretty_generate('app' => app.name, 'errors' => report.errors.size,
+                                  'warnings' => report.warnings.size,
+                                  'problems' => report.problems.map { |p| p.to_h(app.root) })
     end
   end
 end

@@ -84,16 +84,19 @@ module Syskit
           next task.create_port(port.direction, port.name, port.type) if stubs.empty?
           next if task.created_ports.key?(port.name)
 
-          file, line = stubs.first.source_location
-          raise NetworkError.new(
-            "#{task.model.name}'s configure and stub did not create the #{port.direction} port '#{port.name}' " \
-            "that #{port.device} needs (created: #{task.created_ports.keys.sort.join(', ').then do |s|
-              s.empty? ? 'none' : s
-            end})",
-            location: Location.new(file, line),
-            hint: 'the stub must create a port per attached device, from the property the configure method sets'
-          )
+          raise missing_port(task, port, stubs.first)
         end
+      end
+
+      def missing_port(task, port, stub)
+        file, line = stub.source_location
+        created = task.created_ports.keys.sort.join(', ')
+        NetworkError.new(
+          "#{task.model.name}'s configure and stub did not create the #{port.direction} port '#{port.name}' " \
+          "that #{port.device} needs (created: #{created.empty? ? 'none' : created})",
+          location: Location.new(file, line),
+          hint: 'the stub must create a port per attached device, from the property the configure method sets'
+        )
       end
     end
   end

@@ -69,17 +69,21 @@ module Syskit
 
       def none(task, requirement)
         device = requirement.device
-        in_libraries = @context.app.orogen.each_task_model.select { |m| m <= task.model }.flat_map do |m|
-          m.spec.library.deployments.values.select { |d| d.tasks.any? { |t| t.model <= task.model } }.map(&:name)
-        end
-        alternatives = in_libraries.map { |d| " or Syskit.conf.use_deployment '#{d}'" }.join
+        alternatives = library_deployments(task).map { |d| " or Syskit.conf.use_deployment '#{d}'" }.join
         DeploymentError.new(
           "no deployed task can run #{task.model.name}, the driver of #{device}, on #{@context.robot_config}",
           location: device_location(requirement),
           hint: "add to config/robots/#{@context.robot_config.name}.rb: " \
-                "Syskit.conf.use_deployment OroGen.#{task.model.name.gsub('::',
-                                                                          '.')} => '#{device.name}'#{alternatives}"
+                "Syskit.conf.use_deployment OroGen.#{task.model.name.gsub('::', '.')} => '#{device.name}'" \
+                "#{alternatives}"
         )
+      end
+
+      # The deployments that oroGen libraries declare for +task+'s model.
+      def library_deployments(task)
+        @context.app.orogen.each_task_model.select { |m| m <= task.model }.flat_map do |m|
+          m.spec.library.deployments.values.select { |d| d.tasks.any? { |t| t.model <= task.model } }.map(&:name)
+        end
       end
 
       def no_preferred(task, requirement, candidates)

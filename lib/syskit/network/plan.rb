@@ -41,18 +41,23 @@ module Syskit
       # Entries are frozen as they are built, so the plan is a frozen value
       # without walking it again.
       def self.task_entry(task, static_ports)
-        ports = static_ports[task.model] ||= task.model.ports.each_value.map do |p|
-          port_entry(p)
-        end.sort_by!(&:name).freeze
-        unless task.created_ports.empty?
-          ports = (ports + task.created_ports.each_value.map { |p| port_entry(p) }).sort_by!(&:name).freeze
-        end
+        ports = task_ports(task, static_ports)
         Task.new(
           name: task.name, model: task.model.name, deployment: task.deployed_task.deployment.name,
           devices: task.devices.map(&:name).freeze, conf: task.conf.dup.freeze,
           properties: freeze_plain(task.properties.to_plain), ports: ports,
           depends_on: task.children.map(&:name).sort!.freeze
         ).freeze
+      end
+
+      # The model's static ports, then those the task's configure created.
+      def self.task_ports(task, static_ports)
+        ports = static_ports[task.model] ||= task.model.ports.each_value.map do |p|
+          port_entry(p)
+        end.sort_by!(&:name).freeze
+        return ports if task.created_ports.empty?
+
+        (ports + task.created_ports.each_value.map { |p| port_entry(p) }).sort_by!(&:name).freeze
       end
 
       def self.device_entry(device, task)

@@ -51,13 +51,15 @@ module Syskit
       end
 
       def connections_text(connections)
-        rows = connections.map do |c|
-          ["#{c.from.task}.#{c.from.port}", "#{c.to.task}.#{c.to.port}", c.type, policy_text(c.policy)]
-        end
+        rows = connections.map { |c| connection_row(c) }
         widths = (0..2).map { |i| rows.map { |r| r[i].size }.max.to_i }
         rows.map do |r|
           "  #{r[0].ljust(widths[0])} -> #{r[1].ljust(widths[1])}  #{r[2].ljust(widths[2])}  #{r[3]}\n"
         end.join
+      end
+
+      def connection_row(conn)
+        ["#{conn.from.task}.#{conn.from.port}", "#{conn.to.task}.#{conn.to.port}", conn.type, policy_text(conn.policy)]
       end
 
       def policy_text(policy)

@@ -140,8 +140,8 @@ module Syskit
                 ['dispatch (per-mask lookup only)', results[:dispatch_uncached], TARGETS[:dispatch]],
                 ['dispatch (linear scan, reference)', results[:linear_scan], nil],
                 ['end to end (parse + count + report)', results[:end_to_end], TARGETS[:end_to_end]]]
-        io.puts format('  %-38<what>s %12<rate>s  %10<target>s', what: 'measure (best run)', rate: 'frames/s',
-                                                                 target: 'target')
+        # The columns of the rows' format below.
+        io.puts '  measure (best run)                         frames/s      target'
         rows.each do |what, value, target|
           verdict = target && (value >= target ? 'ok' : 'BELOW TARGET')
           line = format('  %-38<what>s %12<rate>d  %10<target>s  %<ok>s',

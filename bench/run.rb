@@ -57,9 +57,13 @@ module Syskit
         GC.start
         app = App.new(app_dir)
         load_time, load_objects = measure { app.load!(robots: ['default']) }
-        profile = app.profiles.values.first
-        # Generation and rendering run RUNS times; each figure is the best
-        # run, the usual way to keep other processes' noise out.
+        best = best_run(app, app.profiles.values.first)
+        best.merge('devices' => devices, 'load' => load_time, 'load_objects' => load_objects, 'rss_mb' => peak_rss_mb)
+      end
+
+      # Generation and rendering run RUNS times; each figure is the best
+      # run, the usual way to keep other processes' noise out.
+      def best_run(app, profile)
         runs = Array.new(RUNS) do
           result = nil
           time, objects = measure { result = Network::Generator.plan_profile(app, profile) }
@@ -67,8 +71,7 @@ module Syskit
           RENDERERS.each { |name, renderer| run[name], = measure { renderer.render(result.plan) } }
           run.merge('tasks' => result.plan.tasks.size)
         end
-        best = runs.first.keys.to_h { |k| [k, runs.map { |r| r[k] }.min] }
-        best.merge('devices' => devices, 'load' => load_time, 'load_objects' => load_objects, 'rss_mb' => peak_rss_mb)
+        runs.first.keys.to_h { |k| [k, runs.map { |r| r[k] }.min] }
       end
 
       def measure

@@ -126,14 +126,17 @@ module Syskit
       out = StringIO.new
       err = StringIO.new
       status = 0
-      stdout, stderr = $stdout, $stderr
-      $stdout, $stderr = out, err
+      stdout = $stdout
+      stderr = $stderr
+      $stdout = out
+      $stderr = err
       begin
         Dir.chdir(chdir) { Syskit::CLI.start(args.map(&:to_s)) }
       rescue SystemExit => e
         status = e.status
       ensure
-        $stdout, $stderr = stdout, stderr
+        $stdout = stdout
+        $stderr = stderr
       end
       [out.string, err.string, status]
     end

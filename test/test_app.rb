@@ -21,7 +21,7 @@ module Syskit
     def test_models_can_be_required_in_the_three_ways_the_seed_does
       root = my_app(nil, 'models/devices/a.rb' => "require 'models/devices/imu'\nrequire 'devices/imu'\nrequire 'my_app/models/devices/imu'\n")
       app = load_app(root)
-      assert_equal 1, $LOADED_FEATURES.count { |f| f.end_with?('my_app/models/devices/imu.rb') }
+      assert_equal(1, $LOADED_FEATURES.count { |f| f.end_with?('my_app/models/devices/imu.rb') })
       assert app.problems.empty?
     end
 
@@ -95,7 +95,7 @@ module Syskit
     def test_a_misspelled_constant
       root = my_app("device(Devices::IMUU, as: 'imu')\n")
       assert_reported load_problem(root), /uninitialized constant MyApp::Devices::IMUU/, at: 'models/profiles/base.rb:9',
-                                                                                          hint: /did you mean 'MyApp::Devices::IMU'\?/, root: root
+                                                                                         hint: /did you mean 'MyApp::Devices::IMU'\?/, root: root
     end
 
     def test_a_misspelled_task_library_in_the_orogen_namespace
@@ -119,13 +119,13 @@ module Syskit
     def test_an_unknown_task_library
       root = my_app(nil, 'models/profiles/x.rb' => "using_task_library 'gps_ubloxx'\n")
       assert_reported load_problem(root), /no task library 'gps_ubloxx'/, at: 'models/profiles/x.rb:1',
-                                                                           hint: %r{no gps_ubloxx.orogen in models/orogen, .*models/orogen; create models/orogen/gps_ubloxx.orogen or add its directory to SYSKIT_OROGEN_PATH}, root: root
+                                                                          hint: %r{no gps_ubloxx.orogen in models/orogen, .*models/orogen; create models/orogen/gps_ubloxx.orogen or add its directory to SYSKIT_OROGEN_PATH}, root: root
     end
 
     def test_an_unknown_typekit_in_a_ruby_file
       root = my_app(nil, 'models/devices/x.rb' => "module MyApp\n  import_types_from 'my_bus'\nend\n")
       assert_reported load_problem(root), /no typekit 'my_bus'/, at: 'models/devices/x.rb:2',
-                                                                  hint: %r{models/typekits/my_bus.rb}, root: root
+                                                                 hint: %r{models/typekits/my_bus.rb}, root: root
     end
 
     def test_a_misspelled_type
@@ -168,7 +168,7 @@ module Syskit
     def test_a_deployed_task_name_used_twice
       root = my_app(nil, 'config/robots/default.rb' => "using_task_library 'imu'\nSyskit.conf.use_deployment OroGen.imu.Task => 'x'\nSyskit.conf.use_deployment OroGen.imu.Task => 'x'\n")
       assert_reported load_problem(root), /deployed task name 'x' is used twice/, at: 'config/robots/default.rb:3',
-                                                                                    hint: /unique on a robot/, root: root
+                                                                                  hint: /unique on a robot/, root: root
     end
 
     def test_use_deployment_with_something_else

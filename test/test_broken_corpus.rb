@@ -21,8 +21,8 @@ module Syskit
   # failing cases: what was expected and what was printed.
   class TestBrokenCorpus < Minitest::Test
     CORPUS = File.expand_path('fixtures/broken', __dir__)
-    BACKTRACE = /\.rb:\d+:in `/.freeze
-    HINT = /\A  hint: \S/.freeze
+    BACKTRACE = /\.rb:\d+:in `/
+    HINT = /\A  hint: \S/
 
     # One case of the corpus.
     Case = Struct.new(:name, :dir, :description, :command, :args, :location, :message, keyword_init: true) do
@@ -90,7 +90,7 @@ module Syskit
           [#{kase.name}] #{kase.description}
             run:      #{kase.command_line}
             expected: #{kase.expected_line}
-                      #{'  hint: ...'}
+                        hint: ...
             printed:  #{printed.empty? ? '(nothing)' : printed}
             problems: #{problems.map { |kind, text| "#{kind}: #{text}" }.join("\n                      ")}
           #{full_output}

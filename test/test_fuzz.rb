@@ -21,8 +21,8 @@ module Syskit
     BUDGET = Float(ENV.fetch('SYSKIT_FUZZ_SECONDS', '12'))
     ONLY = ENV['SYSKIT_FUZZ_ONLY']&.then { |i| Integer(i) }
     RUN_TIMEOUT = 5
-    BACKTRACE = /\.rb:\d+:in `/.freeze
-    LOCATED = /\A(?<path>\S+?):(?<line>\d+): \S/.freeze
+    BACKTRACE = /\.rb:\d+:in `/
+    LOCATED = /\A(?<path>\S+?):(?<line>\d+): \S/
     GEM_LIB = File.join(SelfTest::GEM_ROOT, 'lib', '')
 
     # Raised by Timeout in a run that takes too long. Not a StandardError,

@@ -68,7 +68,7 @@ module Syskit
       refute status.success?
       assert_match(/1 failures, 0 errors/, out)
       assert_match(%r{models/profiles/base\.rb:7: no deployed task can run imu::Task, the driver of device 'imu'}, out)
-      assert_match(/hint: add to config\/robots\/default\.rb: Syskit\.conf\.use_deployment OroGen\.imu\.Task => 'imu'/, out)
+      assert_match(%r{hint: add to config/robots/default\.rb: Syskit\.conf\.use_deployment OroGen\.imu\.Task => 'imu'}, out)
     end
 
     def test_stubs_do_not_leak_from_one_test_to_the_next

@@ -9,7 +9,7 @@ module Syskit
   # bin/syskit as users run it (SPEC 10).
   class TestCLI < Minitest::Test
     EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
-    BACKTRACE = /\.rb:\d+:in `/.freeze
+    BACKTRACE = /\.rb:\d+:in `/
 
     def test_version_and_help
       out, = run_cli('version')
@@ -33,7 +33,7 @@ module Syskit
     def test_plan_of_a_profile_by_short_name_and_actions
       out, err, status = run_cli('plan', 'Live::Base', 'gps_dev', 'can0', '--app', EXAMPLE, '--format', 'json')
       assert_equal 0, status, err
-      assert_equal %w[can0 gps], JSON.parse(out)['tasks'].map { |t| t['name'] }
+      assert_equal(%w[can0 gps], JSON.parse(out)['tasks'].map { |t| t['name'] })
     end
 
     def test_unknown_profile
@@ -112,7 +112,10 @@ module Syskit
     end
 
     def test_check_json_and_strict
-      robot = OVERLAP.gsub(/as: '(\w)'\)(.*)$/) { "as: '#{$1}')#{$2}.prefer_deployed_tasks('#{$1}')" }
+      robot = OVERLAP.gsub(/as: '(\w)'\)(.*)$/) do
+        name, rest = Regexp.last_match.captures
+        "as: '#{name}')#{rest}.prefer_deployed_tasks('#{name}')"
+      end
       root = my_app(robot, 'config/robots/default.rb' => "using_task_library 'temp'\nSyskit.conf.use_deployment 'test_canbus'\n" \
                                                          "%w[a b c].each { |n| Syskit.conf.use_deployment OroGen.temp.Task => n }\n")
       out, err, status = run_cli('check', '--app', root)

@@ -10,7 +10,7 @@ module Syskit
   # files follow the app's conventions, load, and their tests pass.
   class TestGen < Minitest::Test
     LIB = File.join(GEM_ROOT, 'lib')
-    BACKTRACE = /\.rb:\d+:in `/.freeze
+    BACKTRACE = /\.rb:\d+:in `/
 
     MY_LIB = <<~RUBY
       name 'my_lib'
@@ -181,7 +181,7 @@ module Syskit
         %w[profile live/../../base] => "contains '..'",
         %w[orogen ../gps_ublox] => "contains '..'",
         %w[orogen gps/ublox] => "'gps/ublox' is not a task library name",
-        %w[dev elsewhere/thing] => "models/devices/elsewhere/thing.rb would be written outside of models/ and test/",
+        %w[dev elsewhere/thing] => 'models/devices/elsewhere/thing.rb would be written outside of models/ and test/',
         %w[orogen gps_ubox] => "no task library 'gps_ubox' (did you mean 'gps_ublox'?)\n  " \
                                'hint: there is no gps_ubox.orogen in models/orogen, ' }.each do |args, message|
         assert_includes refused(*args, chdir: app), message, args.join(' ')
@@ -262,7 +262,7 @@ module Syskit
     def test_help_shows_examples
       out, = run_cli('gen', '--help')
       assert_match(%r{ gen dev TYPE/MANUFACTURER/MODEL +# create a device}, out)
-      assert_match(%r{^Examples:\n  syskit gen app awesome_robot}, out)
+      assert_match(/^Examples:\n  syskit gen app awesome_robot/, out)
       { 'app' => 'syskit gen app awesome_robot', 'dev' => 'syskit gen dev gps/ublox/f9', 'bus' => 'syskit gen bus can',
         'orogen' => 'syskit gen orogen gps_ublox', 'profile' => 'syskit gen profile live/base' }.each do |cmd, example|
         out, = run_cli('gen', 'help', cmd)

@@ -113,7 +113,7 @@ module Syskit
       RUBY
       error, root = problem_in(source)
       assert_reported error, /MyApp::Pose has no port named 'sample' or 'rate'/, at: 'models/devices/things.rb:4',
-                                                                                  hint: /write 'samples' => 'your_port'/, root: root
+                                                                                 hint: /write 'samples' => 'your_port'/, root: root
     end
 
     def test_unknown_port_type
@@ -125,7 +125,7 @@ module Syskit
     def test_bus_model_needs_a_message_type
       error, root = problem_in("module MyApp\n  com_bus_type 'Serial'\nend\n")
       assert_reported error, /MyApp::Serial has no message type/, at: 'models/devices/things.rb:2',
-                                                                  hint: /com_bus_type 'Serial', message_type: '\/canbus\/Message'/, root: root
+                                                                  hint: %r{com_bus_type 'Serial', message_type: '/canbus/Message'}, root: root
     end
 
     def test_bus_model_inherits_the_message_type_and_device_configuration_of_the_bus_it_provides
@@ -228,7 +228,7 @@ module Syskit
 
     def test_driver_for_with_ambiguous_ports
       error, root = driver_problem("Syskit.extend_model(OroGen.gps.Task) do\n  driver_for MyApp::Devices::Gps, as: 'gps'\nend\n")
-      assert_reported error, /gps::Task has several output ports of type \/double for MyApp::Devices::Gps's port 'position': lat, lon/,
+      assert_reported error, %r{gps::Task has several output ports of type /double for MyApp::Devices::Gps's port 'position': lat, lon},
                       at: 'models/orogen/gps.rb:3', hint: /'position' => 'lat'/, root: root
     end
 
@@ -255,7 +255,7 @@ module Syskit
     def test_provides_without_a_name
       error, root = driver_problem("Syskit.extend_model(OroGen.gps.Task) do\n  provides MyApp::Devices::Pose\nend\n")
       assert_reported error, /provides MyApp::Devices::Pose needs a service name/, at: 'models/orogen/gps.rb:3',
-                                                                                    hint: /provides MyApp::Devices::Pose, as: 'name'/, root: root
+                                                                                   hint: /provides MyApp::Devices::Pose, as: 'name'/, root: root
     end
 
     def test_driver_for_with_an_unknown_option

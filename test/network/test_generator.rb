@@ -114,8 +114,8 @@ module Syskit
 
     def test_a_sink_that_is_not_reliable_gets_a_data_policy_and_buffered_connection_is_a_minimum
       spec = FILES['models/orogen/sensor.orogen']
-                 .sub("input_port('can_in', '/canbus/Message').needs_reliable_connection", "input_port('can_in', '/canbus/Message')")
-                 .sub("output_port 'can_out'", "input_port('other', '/double').needs_buffered_connection(50)\n  output_port 'can_out'")
+             .sub("input_port('can_in', '/canbus/Message').needs_reliable_connection", "input_port('can_in', '/canbus/Message')")
+             .sub("output_port 'can_out'", "input_port('other', '/double').needs_buffered_connection(50)\n  output_port 'can_out'")
       plan = generate(on_can0(a: '.period(0.01)'), 'models/orogen/sensor.orogen' => spec).plan
       assert_equal({ 'type' => 'data' }, plan.connections_to('a', 'can_in').first.policy)
       assert_equal({ 'type' => 'buffer', 'size' => 11 }, plan.connections_to('can0', 'wa').first.policy)
@@ -148,8 +148,8 @@ module Syskit
       assert_equal({ 'name' => 'low', 'id' => 1, 'mask' => 3 }, plan.find_task('b').properties['limits'],
                    'hashes are merged key by key')
       assert_equal %w[default hot], plan.find_task('b').conf
-      assert_equal ['configure can0', 'start can0', 'configure a', 'configure b', 'start a', 'start b'],
-                   plan.order.map { |s| "#{s.step} #{s.task}" }
+      assert_equal(['configure can0', 'start can0', 'configure a', 'configure b', 'start a', 'start b'],
+                   plan.order.map { |s| "#{s.step} #{s.task}" })
     ensure
       $configure_order = nil # rubocop:disable Style/GlobalVars
     end
@@ -191,23 +191,23 @@ module Syskit
     def test_unknown_action
       errors = generation_error(on_can0, actions: ['c_dev'])
       assert_reported errors.first, /MyApp::Profiles::Base has no action 'c_dev'/, at: 'models/profiles/base.rb:7',
-                                                                                    hint: /its actions are can0_dev, a_dev, b_dev/, root: @root
+                                                                                   hint: /its actions are can0_dev, a_dev, b_dev/, root: @root
     end
 
     # --- errors of each step -----------------------------------------------
 
     def test_device_and_w_device_names_clash_on_one_bus
-      robot = "com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\nthrough 'can0' do\n" \
-              "  device(Devices::TemperatureSensor, as: 'a').can_id(1).prefer_deployed_tasks('a')\n" \
-              "  device(Devices::TemperatureSensor, as: 'wa').can_id(2).prefer_deployed_tasks('b')\nend\n"
+      robot = "com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\nthrough 'can0' do\n  " \
+              "device(Devices::TemperatureSensor, as: 'a').can_id(1).prefer_deployed_tasks('a')\n  " \
+              "device(Devices::TemperatureSensor, as: 'wa').can_id(2).prefer_deployed_tasks('b')\nend\n"
       errors = generation_error(robot)
       assert_reported errors.first, %r{device 'a' and device 'wa' both need a port named 'wa' on demux::Task \(input for a, output for wa; device 'a' is declared at models/profiles/base.rb:11\)},
                       at: 'models/profiles/base.rb:12', hint: /rename one of them/, root: @root
     end
 
     def test_device_name_clashes_with_a_static_port_of_the_bus_driver
-      robot = "com_bus CommonModels::Devices::Bus::CAN, as: 'can0', using: OroGen.canbus.Task\nthrough 'can0' do\n" \
-              "  device(Devices::TemperatureSensor, as: 'in').can_id(1)\nend\n"
+      robot = "com_bus CommonModels::Devices::Bus::CAN, as: 'can0', using: OroGen.canbus.Task\nthrough 'can0' do\n  " \
+              "device(Devices::TemperatureSensor, as: 'in').can_id(1)\nend\n"
       errors = generation_error(robot, { 'config/robots/default.rb' => "using_task_library 'sensor'\nSyskit.conf.use_deployment 'test_canbus'\nSyskit.conf.use_deployment OroGen.sensor.Task => 'in'\n" },
                                 libraries: %w[demux sensor canbus])
       assert_reported errors.first, /device 'in''s output port 'in' on canbus::Task collides with its input port 'in'/,
@@ -224,7 +224,7 @@ module Syskit
     def test_device_driver_with_several_ports_of_the_bus_type
       spec = FILES['models/orogen/sensor.orogen'].sub("output_port 'can_out'", "input_port 'diag_in', '/canbus/Message'\n  output_port 'can_out'")
       errors = generation_error(on_can0, 'models/orogen/sensor.orogen' => spec)
-      assert_reported errors.first, /sensor::Task, the driver of device 'a', has several input ports of type \/canbus\/Message: can_in, diag_in/,
+      assert_reported errors.first, %r{sensor::Task, the driver of device 'a', has several input ports of type /canbus/Message: can_in, diag_in},
                       at: 'models/profiles/base.rb:11',
                       hint: /provides CommonModels::Devices::Bus::CAN::ClientInSrv, as: 'bus_client', 'from_bus' => 'can_in' .* pass bus_to_client: 'bus_client'/, root: @root
     end
@@ -246,7 +246,7 @@ module Syskit
       files = { 'models/orogen/demux.orogen' => "name 'demux'\nimport_types_from 'canbus'\ntask_context 'Task' do\n  dynamic_output_port(/^\\w+$/, '/canbus/Message')\nend\n" }
       errors = generation_error(on_can0, files)
       assert_reported errors.first, /demux::Task, the driver of bus 'can0', has no way to receive device 'a''s frames/,
-                      at: 'models/profiles/base.rb:11', hint: /dynamic_input_port\(\/\^\\w\+\$\/, '\/canbus\/Message'\)/, root: @root
+                      at: 'models/profiles/base.rb:11', hint: %r{dynamic_input_port\(/\^\\w\+\$/, '/canbus/Message'\)}, root: @root
     end
 
     def test_no_deployment
@@ -297,7 +297,7 @@ module Syskit
 
     def test_value_of_the_wrong_type
       error = conf_error("--- name:default\nthreshold: high\n")
-      assert_reported error, /property 'threshold' of sensor::Task: expected a number for \/double, got "high"/,
+      assert_reported error, %r{property 'threshold' of sensor::Task: expected a number for /double, got "high"},
                       at: 'config/orogen/sensor::Task.yml:2', root: @root
     end
 

@@ -7,7 +7,7 @@ module Syskit
   # packages write them (SPEC 2).
   class TestSpecLoader < Minitest::Test
     # Statements and styles seen in real oroGen projects.
-    DRIVER_SPEC = <<~'RUBY'
+    DRIVER_SPEC = <<~RUBY
       # frozen_string_literal: true
 
       name "serial_imu"
@@ -109,7 +109,7 @@ module Syskit
     def test_deployments_are_registered
       app = load_spec
       deployment = app.orogen.find_deployment('serial_imu_test')
-      assert_equal [['imu', OroGen.serial_imu.Task]], deployment.tasks.map { |t| [t.name, t.model] }
+      assert_equal([['imu', OroGen.serial_imu.Task]], deployment.tasks.map { |t| [t.name, t.model] })
     end
 
     def test_the_bundled_canbus_library
@@ -117,8 +117,8 @@ module Syskit
       app.using_task_library('canbus')
       task = OroGen.canbus.Task
       assert task.find_port('in').multiplexes?
-      assert_equal [[/^\w+$/, :output, '/canbus/Message']],
-                   task.dynamic_ports.map { |p| [p.pattern, p.direction, p.type.name] }
+      assert_equal([[/^\w+$/, :output, '/canbus/Message']],
+                   task.dynamic_ports.map { |p| [p.pattern, p.direction, p.type.name] })
       assert_equal %w[bus_in can], task.services.keys.sort
     end
 
@@ -151,13 +151,13 @@ module Syskit
       error = spec_error("name 'broken'\ntask_context 'Task', subclasses: 'iodrivers_base::Task' do\nend\n")
       assert_reported error, /iodrivers_base::Task is unknown: task library 'iodrivers_base' is not loaded/,
                       at: 'models/orogen/broken.orogen:2',
-                                                                            hint: /add using_task_library 'iodrivers_base' before this line/, root: Syskit.app.root
+                      hint: /add using_task_library 'iodrivers_base' before this line/, root: Syskit.app.root
     end
 
     def test_duplicate_port
       error = spec_error("name 'broken'\ntask_context 'Task' do\n  output_port 'x', '/double'\n  input_port 'x', '/double'\nend\n")
       assert_reported error, /broken::Task declares the port 'x' twice/, at: 'models/orogen/broken.orogen:4',
-                                                                          root: Syskit.app.root
+                                                                         root: Syskit.app.root
     end
 
     def test_project_name_that_does_not_match_the_file
@@ -175,7 +175,7 @@ module Syskit
     def test_a_deployment_name_used_twice
       error = spec_error("name 'broken'\nusing_task_library 'canbus'\ndeployment 'test_canbus' do\nend\n")
       assert_reported error, /deployment 'test_canbus' is already declared/, at: 'models/orogen/broken.orogen:3',
-                                                                              root: Syskit.app.root
+                                                                             root: Syskit.app.root
     end
 
     def test_a_failed_library_can_be_reported_again

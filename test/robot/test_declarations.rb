@@ -40,7 +40,7 @@ module Syskit
     def test_a_bus_model_is_declared_with_com_bus
       error, root = problem("device(CommonModels::Devices::Bus::CAN, as: 'can0')\n")
       assert_reported error, /CommonModels::Devices::Bus::CAN is a communication bus/, at: ROBOT,
-                                                                                        hint: /com_bus CommonModels::Devices::Bus::CAN, as: 'name'/, root: root
+                                                                                       hint: /com_bus CommonModels::Devices::Bus::CAN, as: 'name'/, root: root
     end
 
     def test_com_bus_needs_a_bus_model
@@ -52,19 +52,19 @@ module Syskit
     def test_unknown_device_option_is_rejected
       error, root = problem("device(Devices::IMU, as: 'imu', period: 0.1)\n")
       assert_reported error, /unknown option\(s\) period:/, at: ROBOT, hint: /chained calls \(.with_conf, .period/,
-                                                                       root: root
+                                                            root: root
     end
 
     def test_client_to_bus_outside_a_bus
       error, root = problem("device(Devices::IMU, as: 'imu', client_to_bus: false)\n")
       assert_reported error, /client_to_bus: only applies to devices attached to a bus/, at: ROBOT,
-                                                                                          hint: /through 'bus_name' do/, root: root
+                                                                                         hint: /through 'bus_name' do/, root: root
     end
 
     def test_through_an_unknown_bus
       error, root = problem("com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\nthrough 'can1' do\nend\n")
       assert_reported error, /no bus named 'can1' \(did you mean 'can0'\?\)/, at: 'models/profiles/base.rb:10',
-                                                                               hint: /buses of this robot: can0/, root: root
+                                                                              hint: /buses of this robot: can0/, root: root
     end
 
     def test_through_a_device_that_is_not_a_bus
@@ -81,7 +81,7 @@ module Syskit
       RUBY
       error, root = problem(robot)
       assert_reported error, /would neither read from nor write to bus 'can0'/, at: 'models/profiles/base.rb:11',
-                                                                                 hint: /drop one of the two options/, root: root
+                                                                                hint: /drop one of the two options/, root: root
     end
 
     def test_a_bus_attached_through_itself
@@ -134,12 +134,12 @@ module Syskit
       RUBY
       error, root = problem(robot)
       assert_reported error, /device 't' has no 'can_id'/, at: 'models/profiles/base.rb:10',
-                                                          hint: /can_id is for devices attached to a CommonModels::Devices::Bus::CAN bus: declare t in a through 'bus_name' do \.\.\. end block/,
-                                                          root: root
+                                                           hint: /can_id is for devices attached to a CommonModels::Devices::Bus::CAN bus: declare t in a through 'bus_name' do \.\.\. end block/,
+                                                           root: root
     end
 
     def test_invalid_chained_values
-      { ".prefer_deployed_tasks(3)\n" => [/prefer_deployed_tasks expects regexps or names, got 3/, /prefer_deployed_tasks\(\/forward\/\)/],
+      { ".prefer_deployed_tasks(3)\n" => [/prefer_deployed_tasks expects regexps or names, got 3/, %r{prefer_deployed_tasks\(/forward/\)}],
         ".with_conf\n" => [/with_conf needs at least one section name/, /with_conf\('default', 'forward'\)/],
         ".period(-1)\n" => [/invalid period -1 for device 'imu'/, /positive number/] }.each do |call, (message, hint)|
         error, root = problem("device(Devices::IMU, as: 'imu')\n  #{call}")

@@ -28,7 +28,7 @@ module Syskit
       root = my_app("device(Devices::TemperatureSensor, as: 't')\n", { 'models/orogen/temp.rb' => "# no driver\n" })
       error = load_problem(root)
       assert_reported error, /no driver is known for device 't'/, at: 'models/profiles/base.rb:9',
-                                                                   hint: /declare driver_for MyApp::Devices::TemperatureSensor/, root: root
+                                                                  hint: /declare driver_for MyApp::Devices::TemperatureSensor/, root: root
     end
 
     def test_several_drivers_need_using

@@ -40,9 +40,9 @@ module Syskit
       port = can0.ports.find { |p| p.name == 'temperature_sensor' }
       assert_equal ['output', '/canbus/Message', true], [port.direction, port.type, port.dynamic]
 
-      assert_equal [['can0.temperature_sensor', 'temperature_sensor.can_in', { 'type' => 'buffer', 'size' => 20 }],
+      assert_equal([['can0.temperature_sensor', 'temperature_sensor.can_in', { 'type' => 'buffer', 'size' => 20 }],
                     ['temperature_sensor.can_out', 'can0.in', { 'type' => 'buffer', 'size' => 20 }]],
-                   plan.connections.map { |c| conn(c) }
+                   plan.connections.map { |c| conn(c) })
       steps = plan.order.map { |s| "#{s.step} #{s.task}" }
       assert_equal ['configure can0', 'start can0', 'configure temperature_sensor', 'start temperature_sensor'], steps
       assert_equal ['can0'], plan.find_task('temperature_sensor').depends_on
@@ -50,14 +50,14 @@ module Syskit
 
     def test_read_only_device_gets_only_the_bus_to_device_connection
       plan = plan_of('read_only', -> { MyApp::Profiles::Base })
-      assert_equal [['can0.temperature_sensor', 'temperature_sensor.can_in', { 'type' => 'buffer', 'size' => 20 }]],
-                   plan.connections.map { |c| conn(c) }
+      assert_equal([['can0.temperature_sensor', 'temperature_sensor.can_in', { 'type' => 'buffer', 'size' => 20 }]],
+                   plan.connections.map { |c| conn(c) })
     end
 
     def test_write_only_device_gets_only_the_device_to_bus_connection
       plan = plan_of('write_only', -> { MyApp::Profiles::Base })
-      assert_equal [['sync.can_out', 'can0.in', { 'type' => 'buffer', 'size' => 20 }]],
-                   plan.connections.map { |c| conn(c) }
+      assert_equal([['sync.can_out', 'can0.in', { 'type' => 'buffer', 'size' => 20 }]],
+                   plan.connections.map { |c| conn(c) })
       refute(plan.find_task('can0').ports.any? { |p| p.name == 'sync' })
       assert_equal [], plan.find_task('can0').properties['devices']
     end
@@ -91,7 +91,7 @@ module Syskit
       load_app(fixture('seed', 'new_bus'))
       robot = Robot::Definition.new(nil)
       bus = robot.add_device(Robot::ComBus, MyApp::Devices::Bus::CANWithID, 'bus', using: nil, options: {},
-                                                                                    location: nil)
+                                                                                   location: nil)
       dev = robot.add_device(Robot::Device, MyApp::Devices::ECU::Engine, 'engine', using: nil, options: {},
                                                                                    location: nil, bus: bus)
       assert_nil dev.can_id(1, 2)
@@ -114,11 +114,11 @@ module Syskit
 
     def test_non_demultiplexing_bus_shares_its_ports_and_devices_filter_themselves
       plan = plan_of('non_demux', -> { MyApp::Profiles::Base })
-      assert_equal [['can0.out', 'left_motor.can_in', { 'type' => 'data' }],
+      assert_equal([['can0.out', 'left_motor.can_in', { 'type' => 'data' }],
                     ['can0.out', 'right_motor.can_in', { 'type' => 'data' }],
                     ['left_motor.can_out', 'can0.in', { 'type' => 'buffer', 'size' => 20 }],
                     ['right_motor.can_out', 'can0.in', { 'type' => 'buffer', 'size' => 20 }]],
-                   plan.connections.map { |c| conn(c) }
+                   plan.connections.map { |c| conn(c) })
       assert_equal({ 'can_id' => 0x181, 'can_mask' => 0x7ff }, plan.find_task('left_motor').properties)
       assert_equal({ 'can_id' => 0x182, 'can_mask' => 0x7ff }, plan.find_task('right_motor').properties)
     end
@@ -127,25 +127,25 @@ module Syskit
       plan = plan_of('demux', -> { MyApp::Profiles::Base })
       can0 = plan.find_task('can0')
       assert_equal [{ 'name' => 'temperature_sensor', 'id' => 0x1234, 'mask' => 0xffff }], can0.properties['devices']
-      assert_equal [%w[temperature_sensor output], %w[wtemperature_sensor input]],
-                   can0.ports.map { |p| [p.name, p.direction] }
-      assert_equal [['can0.temperature_sensor', 'temperature_sensor.can_in', { 'type' => 'buffer', 'size' => 20 }],
+      assert_equal([%w[temperature_sensor output], %w[wtemperature_sensor input]],
+                   can0.ports.map { |p| [p.name, p.direction] })
+      assert_equal([['can0.temperature_sensor', 'temperature_sensor.can_in', { 'type' => 'buffer', 'size' => 20 }],
                     ['temperature_sensor.can_out', 'can0.wtemperature_sensor', { 'type' => 'buffer', 'size' => 20 }]],
-                   plan.connections.map { |c| conn(c) }
+                   plan.connections.map { |c| conn(c) })
     end
 
     def test_shared_input_port_replaces_the_per_device_inputs
       plan = plan_of('shared_input', -> { MyApp::Profiles::Base })
       assert_equal %w[msg_in temperature_sensor], plan.find_task('can0').ports.map(&:name)
-      assert_equal ['can0.msg_in'],
-                   plan.connections_from('temperature_sensor').map { |c| "#{c.to.task}.#{c.to.port}" }
+      assert_equal(['can0.msg_in'],
+                   plan.connections_from('temperature_sensor').map { |c| "#{c.to.task}.#{c.to.port}" })
     end
 
     def test_port_disambiguation_with_an_explicit_client_service
       plan = plan_of('disambiguation', -> { MyApp::Profiles::Base })
-      assert_equal [['bus0.from_bus', 'multiport.can_in', { 'type' => 'data' }],
+      assert_equal([['bus0.from_bus', 'multiport.can_in', { 'type' => 'data' }],
                     ['multiport.can_out', 'bus0.to_bus', { 'type' => 'buffer', 'size' => 20 }]],
-                   plan.connections.map { |c| conn(c) }
+                   plan.connections.map { |c| conn(c) })
       srv = OroGen.project.Task.find_service('client_in')
       assert_equal({ 'from_bus' => 'can_in', 'to_bus' => 'can_out' }, srv.port_mappings)
     end

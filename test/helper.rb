@@ -23,7 +23,9 @@ module Syskit
       app = App.new(root)
       (@loaded_apps ||= []) << app
       app.load(**options)
-      flunk "#{root} has problems:\n#{app.problems.map { |e| e.report(root) }.join("\n")}" if !problems && app.problems.any?
+      if !problems && app.problems.any?
+        flunk "#{root} has problems:\n#{app.problems.map { |e| e.report(root) }.join("\n")}"
+      end
       app
     end
 
@@ -143,8 +145,8 @@ module Syskit
 
     # Asserts the block raises a Syskit error reported as
     # "<at>: <message>" with a hint matching +hint+.
-    def assert_syskit_error(message, at: nil, hint: nil, root: nil, klass: Syskit::Error)
-      error = assert_raises(klass) { yield }
+    def assert_syskit_error(message, at: nil, hint: nil, root: nil, klass: Syskit::Error, &block)
+      error = assert_raises(klass, &block)
       error = error.errors.first if error.is_a?(ErrorList) && klass != ErrorList
       assert_match message, error.message
       assert_equal at, error.location&.to_s(root) if at
@@ -154,8 +156,10 @@ module Syskit
 
     # The problem of +app+ whose message matches +message+.
     def find_problem(app, message)
-      app.problems.find { |p| p.message.match?(message) } ||
-        flunk("no problem matching #{message.inspect} among:\n#{app.problems.map { |e| e.report(app.root) }.join("\n")}")
+      found = app.problems.find { |p| p.message.match?(message) }
+      return found if found
+
+      flunk("no problem matching #{message.inspect} among:\n#{app.problems.map { |e| e.report(app.root) }.join("\n")}")
     end
 
     def after_teardown

@@ -33,7 +33,8 @@ module Syskit
       'config/syskit.yml' => "name: MyApp\n",
       'models/devices/imu.rb' => "module MyApp\n  module Devices\n    device_type 'IMU'\n  end\nend\n",
       'models/orogen/imu.orogen' => "name 'imu'\ntask_context 'Task' do\nend\n",
-      'models/orogen/imu.rb' => "Syskit.extend_model OroGen.imu.Task do\n  driver_for MyApp::Devices::IMU, as: 'imu'\nend\n",
+      'models/orogen/imu.rb' => "Syskit.extend_model OroGen.imu.Task do\n  " \
+                                "driver_for MyApp::Devices::IMU, as: 'imu'\nend\n",
       'models/profiles/base.rb' => <<~RUBY,
         using_task_library 'imu'
 
@@ -68,7 +69,8 @@ module Syskit
       refute status.success?
       assert_match(/1 failures, 0 errors/, out)
       assert_match(%r{models/profiles/base\.rb:7: no deployed task can run imu::Task, the driver of device 'imu'}, out)
-      assert_match(%r{hint: add to config/robots/default\.rb: Syskit\.conf\.use_deployment OroGen\.imu\.Task => 'imu'}, out)
+      assert_match(%r{hint: add to config/robots/default\.rb: Syskit\.conf\.use_deployment OroGen\.imu\.Task => 'imu'},
+                   out)
     end
 
     def test_stubs_do_not_leak_from_one_test_to_the_next

@@ -11,7 +11,8 @@ module Syskit
       commands = README[/```sh\n(.*?)```/m, 1].lines.map(&:strip)
       assert_equal ['bundle install && bundle exec bin/syskit plan --app examples/awesome_robot',
                     'bundle install && bundle exec rake test'], commands
-      assert_equal 'bundle install && bundle exec rake test', File.read(File.join(GEM_ROOT, '.ci', 'run')).lines.last.strip
+      assert_equal 'bundle install && bundle exec rake test',
+                   File.read(File.join(GEM_ROOT, '.ci', 'run')).lines.last.strip
     end
 
     def test_the_example_plan_is_the_one_the_command_prints

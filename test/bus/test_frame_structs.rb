@@ -58,7 +58,8 @@ module Syskit
         frame = Frame.new(can_id: 0x1234 | Frame::EFF_FLAG, data: "\x08\x75".b, time: 1_436_509_053_252_905)
         message = FrameStructs.to_message(frame, type)
         stamp = { microseconds: 1_436_509_053_252_905 }
-        expected = type.new(time: stamp, can_time: stamp, can_id: 0x8000_1234, size: 2, data: [8, 0x75, 0, 0, 0, 0, 0, 0])
+        expected = type.new(time: stamp, can_time: stamp, can_id: 0x8000_1234, size: 2,
+                            data: [8, 0x75, 0, 0, 0, 0, 0, 0])
         assert_equal expected, message
         assert_equal frame, FrameStructs.from_message(message)
       end

@@ -77,8 +77,12 @@ module Syskit
       end
     RUBY
 
+    # Deploys the bus, and a temp::Task for each of the devices a, b and c.
+    EVERY_DEVICE_DEPLOYED = "using_task_library 'temp'\nSyskit.conf.use_deployment 'test_canbus'\n" \
+                            "%w[a b c].each { |n| Syskit.conf.use_deployment OroGen.temp.Task => n }\n"
+
     def overlap_app
-      my_app(OVERLAP + "device(Devices::IMU, as: 'imu', using: OroGen.temp.Task)\n",
+      my_app("#{OVERLAP}device(Devices::IMU, as: 'imu', using: OroGen.temp.Task)\n",
              'config/robots/default.rb' => "Syskit.conf.use_deployment 'test_canbus'\n",
              'config/robots/sim.rb' => "Syskit.conf.use_deployment 'test_canbus'\n")
     end
@@ -87,7 +91,9 @@ module Syskit
       out, _, status = run_cli('check', '--app', overlap_app)
       assert_equal 1, status
       lines = out.lines
-      assert_match(%r{\Amodels/profiles/base.rb:12: warning: device 'a' \(id 0x100 mask 0x700\) and device 'b' \(id 0x120 mask 0x7F0\) on bus 'can0' have overlapping filters}, lines[0])
+      assert_match(Regexp.new('\Amodels/profiles/base.rb:12: warning: device \'a\' \(id 0x100 mask 0x700\) and ' \
+                              'device \'b\' \(id 0x120 mask 0x7F0\) on bus \'can0\' have overlapping filters'),
+                   lines[0])
       assert_match(/^  hint: narrow one of the masks/, lines[1])
       assert_match(%r{^models/profiles/base.rb:15: temp::Task does not drive MyApp::Devices::IMU}, out)
       assert_equal "MyApp: 1 error(s), 1 warning(s)\n", lines.last
@@ -103,8 +109,7 @@ module Syskit
           device(Devices::TemperatureSensor, as: 'c').can_id(0x120, 0xfff).prefer_deployed_tasks('c')
         end
       RUBY
-      root = my_app(robot, 'config/robots/default.rb' => "using_task_library 'temp'\nSyskit.conf.use_deployment 'test_canbus'\n" \
-                                                         "%w[a b c].each { |n| Syskit.conf.use_deployment OroGen.temp.Task => n }\n")
+      root = my_app(robot, 'config/robots/default.rb' => EVERY_DEVICE_DEPLOYED)
       out, = run_cli('check', '--app', root)
       assert_match(/device 'b' \(id 0x120 mask 0x1FFFFFFF\) and device 'c' .* have overlapping filters/, out)
       refute_match(/device 'a' .* overlapping/, out)
@@ -116,8 +121,7 @@ module Syskit
         name, rest = Regexp.last_match.captures
         "as: '#{name}')#{rest}.prefer_deployed_tasks('#{name}')"
       end
-      root = my_app(robot, 'config/robots/default.rb' => "using_task_library 'temp'\nSyskit.conf.use_deployment 'test_canbus'\n" \
-                                                         "%w[a b c].each { |n| Syskit.conf.use_deployment OroGen.temp.Task => n }\n")
+      root = my_app(robot, 'config/robots/default.rb' => EVERY_DEVICE_DEPLOYED)
       out, err, status = run_cli('check', '--app', root)
       assert_equal 0, status, "#{out}#{err}"
       assert_match(/0 error\(s\), 1 warning\(s\)/, out)

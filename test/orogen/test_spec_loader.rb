@@ -87,10 +87,20 @@ module Syskit
       assert task < OroGen.iodrivers_base.Task
       assert_equal %w[commands io_raw_in io_raw_out io_read_listener io_write_listener samples status],
                    task.ports.keys.sort
+    end
+
+    def test_a_real_world_spec_declares_its_ports
+      load_spec
+      task = OroGen.serial_imu.Task
       assert_equal 10, task.find_port('commands').buffer_size
       assert task.find_port('io_raw_in').reliable?
       assert_equal '/base/samples/IMUSensors', task.find_port('samples').type.name
       assert task.find_port('status').type.opaque?, 'types from headers stay opaque'
+    end
+
+    def test_a_real_world_spec_declares_its_properties_states_and_operations
+      load_spec
+      task = OroGen.serial_imu.Task
       assert_equal 100.0, task.property_declarations['rate'].initial_value
       assert_includes task.property_declarations.keys, 'io_port'
       assert_equal 0.01, task.worstcase_processing_time
@@ -142,7 +152,8 @@ module Syskit
     end
 
     def test_unknown_type_without_header_imports
-      error = spec_error("name 'broken'\nimport_types_from 'canbus'\ntask_context 'Task' do\n  output_port 'x', '/canbus/Mesage'\nend\n")
+      error = spec_error("name 'broken'\nimport_types_from 'canbus'\n" \
+                         "task_context 'Task' do\n  output_port 'x', '/canbus/Mesage'\nend\n")
       assert_reported error, %r{unknown type /canbus/Mesage \(did you mean '/canbus/Message'},
                       at: 'models/orogen/broken.orogen:4', root: Syskit.app.root
     end
@@ -155,15 +166,16 @@ module Syskit
     end
 
     def test_duplicate_port
-      error = spec_error("name 'broken'\ntask_context 'Task' do\n  output_port 'x', '/double'\n  input_port 'x', '/double'\nend\n")
+      error = spec_error("name 'broken'\ntask_context 'Task' do\n  " \
+                         "output_port 'x', '/double'\n  input_port 'x', '/double'\nend\n")
       assert_reported error, /broken::Task declares the port 'x' twice/, at: 'models/orogen/broken.orogen:4',
                                                                          root: Syskit.app.root
     end
 
     def test_project_name_that_does_not_match_the_file
       error = spec_error("name 'other'\n")
-      assert_reported error, /broken.orogen declares the project name 'other'/, at: 'models/orogen/broken.orogen:1',
-                                                                                hint: /must be named other.orogen/, root: Syskit.app.root
+      assert_reported error, /broken.orogen declares the project name 'other'/,
+                      at: 'models/orogen/broken.orogen:1', hint: /must be named other.orogen/, root: Syskit.app.root
     end
 
     def test_a_deployment_of_an_unknown_task

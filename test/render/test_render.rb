@@ -27,7 +27,8 @@ module Syskit
                                        'type' => '/canbus/Message', 'dynamic' => true }
       assert_includes doc['connections'], { 'from' => { 'task' => 'can0', 'port' => 'temperature_sensor' },
                                             'to' => { 'task' => 'temperature_sensor', 'port' => 'can_in' },
-                                            'type' => '/canbus/Message', 'policy' => { 'type' => 'buffer', 'size' => 2 } }
+                                            'type' => '/canbus/Message',
+                                            'policy' => { 'type' => 'buffer', 'size' => 2 } }
       assert_equal({ 'step' => 'configure', 'task' => 'aft_camera' }, doc['order'].first)
     end
 

@@ -76,7 +76,13 @@ module Syskit
     end
 
     def test_a_device_cannot_provide_a_bus
-      error, root = problem_in("module MyApp\n  device_type 'Gateway' do\n    provides CommonModels::Devices::Bus::CAN\n  end\nend\n")
+      error, root = problem_in(<<~RUBY)
+        module MyApp
+          device_type 'Gateway' do
+            provides CommonModels::Devices::Bus::CAN
+          end
+        end
+      RUBY
       assert_reported error, /MyApp::Gateway is a device and cannot provide the communication bus/,
                       at: 'models/devices/things.rb:3', hint: /com_bus_type/, root: root
     end
@@ -98,8 +104,10 @@ module Syskit
         end
       RUBY
       error, root = problem_in(source)
-      assert_reported error, %r{MyApp::Pose's output port 'samples' \(/base/samples/RigidBodyState\) collides with MyApp::Gyro's output port 'samples' \(/double\)},
-                      at: 'models/devices/things.rb:5', hint: /provides MyApp::Pose, 'samples' => 'other_name'/, root: root
+      assert_reported error, Regexp.new('MyApp::Pose\'s output port \'samples\' \(/base/samples/RigidBodyState\) ' \
+                                        'collides with MyApp::Gyro\'s output port \'samples\' \(/double\)'),
+                      at: 'models/devices/things.rb:5', hint: /provides MyApp::Pose, 'samples' => 'other_name'/,
+                      root: root
     end
 
     def test_mapping_to_an_unknown_port
@@ -112,24 +120,37 @@ module Syskit
         end
       RUBY
       error, root = problem_in(source)
-      assert_reported error, /MyApp::Pose has no port named 'sample' or 'rate'/, at: 'models/devices/things.rb:4',
-                                                                                 hint: /write 'samples' => 'your_port'/, root: root
+      assert_reported error, /MyApp::Pose has no port named 'sample' or 'rate'/,
+                      at: 'models/devices/things.rb:4', hint: /write 'samples' => 'your_port'/, root: root
     end
 
     def test_unknown_port_type
-      error, root = problem_in("module MyApp\n  data_service_type 'Pose' do\n    output_port 'p', '/my/Pos'\n  end\nend\n")
+      error, root = problem_in(<<~RUBY)
+        module MyApp
+          data_service_type 'Pose' do
+            output_port 'p', '/my/Pos'
+          end
+        end
+      RUBY
       assert_reported error, %r{unknown type /my/Pos}, at: 'models/devices/things.rb:3', hint: /import_types_from/,
                                                        root: root
     end
 
     def test_bus_model_needs_a_message_type
       error, root = problem_in("module MyApp\n  com_bus_type 'Serial'\nend\n")
-      assert_reported error, /MyApp::Serial has no message type/, at: 'models/devices/things.rb:2',
-                                                                  hint: %r{com_bus_type 'Serial', message_type: '/canbus/Message'}, root: root
+      assert_reported error, /MyApp::Serial has no message type/,
+                      at: 'models/devices/things.rb:2',
+                      hint: %r{com_bus_type 'Serial', message_type: '/canbus/Message'}, root: root
     end
 
     def test_bus_model_inherits_the_message_type_and_device_configuration_of_the_bus_it_provides
-      _, app = models_app("module MyApp\n  com_bus_type 'J1939' do\n    provides CommonModels::Devices::Bus::CAN\n  end\nend\n")
+      _, app = models_app(<<~RUBY)
+        module MyApp
+          com_bus_type 'J1939' do
+            provides CommonModels::Devices::Bus::CAN
+          end
+        end
+      RUBY
       assert_empty app.problems
       j1939 = MyApp::J1939
       assert_same ::Types.canbus.Message, j1939.message_type
@@ -139,9 +160,16 @@ module Syskit
     end
 
     def test_bus_model_cannot_provide_a_bus_of_another_message_type
-      source = "module MyApp\n  com_bus_type 'Serial', message_type: '/std/string' do\n    provides CommonModels::Devices::Bus::CAN\n  end\nend\n"
+      source = <<~RUBY
+        module MyApp
+          com_bus_type 'Serial', message_type: '/std/string' do
+            provides CommonModels::Devices::Bus::CAN
+          end
+        end
+      RUBY
       error, root = problem_in(source)
-      assert_reported error, %r{MyApp::Serial \(message type /std/string\) cannot provide CommonModels::Devices::Bus::CAN \(message type /canbus/Message\)},
+      assert_reported error, Regexp.new('MyApp::Serial \(message type /std/string\) cannot provide ' \
+                                        'CommonModels::Devices::Bus::CAN \(message type /canbus/Message\)'),
                       at: 'models/devices/things.rb:3', hint: /same message type/, root: root
     end
 
@@ -161,9 +189,10 @@ module Syskit
       root = my_app("device(Lidar, as: 'lidar').range(30)\n", { 'models/devices/things.rb' => source })
       root = root.sub('base.rb', 'base.rb')
       File.write(File.join(root, 'models/orogen/lidar.orogen'), "name 'lidar'\ntask_context 'Task' do\nend\n")
-      File.write(File.join(root, 'models/orogen/lidar.rb'), "Syskit.extend_model(OroGen.lidar.Task) { driver_for MyApp::Lidar, as: 'lidar' }\n")
-      File.write(File.join(root, 'models/profiles/base.rb'),
-                 File.read(File.join(root, 'models/profiles/base.rb')).sub("using_task_library 'imu'", "using_task_library 'lidar'"))
+      File.write(File.join(root, 'models/orogen/lidar.rb'),
+                 "Syskit.extend_model(OroGen.lidar.Task) { driver_for MyApp::Lidar, as: 'lidar' }\n")
+      profile = File.join(root, 'models/profiles/base.rb')
+      File.write(profile, File.read(profile).sub("using_task_library 'imu'", "using_task_library 'lidar'"))
       load_app(root)
       device = MyApp::Profiles::Base.lidar_dev.device
       assert_equal 30, device.range
@@ -171,7 +200,14 @@ module Syskit
     end
 
     def test_timing_statements_are_accepted_and_recorded
-      _, app = models_app("module MyApp\n  device_type 'Gyro' do\n    worstcase_processing_time 0.2\n    output_port('rate', '/double').period(0.01)\n  end\nend\n")
+      _, app = models_app(<<~RUBY)
+        module MyApp
+          device_type 'Gyro' do
+            worstcase_processing_time 0.2
+            output_port('rate', '/double').period(0.01)
+          end
+        end
+      RUBY
       assert_empty app.problems
       assert_equal 0.2, MyApp::Gyro.worstcase_processing_time
       assert_equal 0.01, MyApp::Gyro.find_port('rate').period
@@ -216,7 +252,10 @@ module Syskit
       end
     RUBY
 
-    def driver_problem(extension, spec = "  output_port 'lat', '/double'\n  output_port 'lon', '/double'\n")
+    # Two ports of the same type, for the Gps's one port.
+    GPS_PORTS = "  output_port 'lat', '/double'\n  output_port 'lon', '/double'\n"
+
+    def driver_problem(extension, spec = GPS_PORTS)
       root = my_app(nil, { 'models/devices/gps.rb' => DRIVER,
                            'models/orogen/gps.orogen' => "name 'gps'\ntask_context 'Task' do\n#{spec}end\n",
                            'models/orogen/gps.rb' => "require 'models/devices/gps'\n#{extension}" })
@@ -226,42 +265,60 @@ module Syskit
       [errors.first, root]
     end
 
+    # An extension that declares the Gps driver without port mappings.
+    GPS_DRIVER = "Syskit.extend_model(OroGen.gps.Task) do\n  driver_for MyApp::Devices::Gps, as: 'gps'\nend\n"
+
     def test_driver_for_with_ambiguous_ports
-      error, root = driver_problem("Syskit.extend_model(OroGen.gps.Task) do\n  driver_for MyApp::Devices::Gps, as: 'gps'\nend\n")
-      assert_reported error, %r{gps::Task has several output ports of type /double for MyApp::Devices::Gps's port 'position': lat, lon},
+      error, root = driver_problem(GPS_DRIVER)
+      assert_reported error, Regexp.new('gps::Task has several output ports of type /double ' \
+                                        'for MyApp::Devices::Gps\'s port \'position\': lat, lon'),
                       at: 'models/orogen/gps.rb:3', hint: /'position' => 'lat'/, root: root
     end
 
     def test_driver_for_with_no_matching_port
-      error, root = driver_problem("Syskit.extend_model(OroGen.gps.Task) do\n  driver_for MyApp::Devices::Gps, as: 'gps'\nend\n", '')
+      error, root = driver_problem(GPS_DRIVER, '')
       assert_reported error, %r{gps::Task has no output port of type /double for MyApp::Devices::Gps's port 'position'},
                       at: 'models/orogen/gps.rb:3', root: root
     end
 
     def test_driver_for_with_an_explicit_mapping
+      extension = <<~RUBY
+        require 'models/devices/gps'
+        Syskit.extend_model(OroGen.gps.Task) do
+          driver_for MyApp::Devices::Gps, as: 'gps', 'position' => 'lat'
+        end
+      RUBY
       root = my_app(nil, { 'models/devices/gps.rb' => DRIVER,
-                           'models/orogen/gps.orogen' => "name 'gps'\ntask_context 'Task' do\n  output_port 'lat', '/double'\n  output_port 'lon', '/double'\nend\n",
-                           'models/orogen/gps.rb' => "require 'models/devices/gps'\nSyskit.extend_model(OroGen.gps.Task) do\n  driver_for MyApp::Devices::Gps, as: 'gps', 'position' => 'lat'\nend\n" })
+                           'models/orogen/gps.orogen' => "name 'gps'\ntask_context 'Task' do\n#{GPS_PORTS}end\n",
+                           'models/orogen/gps.rb' => extension })
       load_app(root, everything: true)
       assert_equal({ 'position' => 'lat' }, OroGen.gps.Task.find_service('gps').port_mappings)
     end
 
     def test_driver_for_a_data_service
-      error, root = driver_problem("Syskit.extend_model(OroGen.gps.Task) do\n  driver_for MyApp::Devices::Pose, as: 'pose'\nend\n")
+      error, root = driver_problem(<<~RUBY)
+        Syskit.extend_model(OroGen.gps.Task) do
+          driver_for MyApp::Devices::Pose, as: 'pose'
+        end
+      RUBY
       assert_reported error, /driver_for expects a device or bus model, got MyApp::Devices::Pose/,
                       at: 'models/orogen/gps.rb:3', hint: /use provides MyApp::Devices::Pose, as: 'name'/, root: root
     end
 
     def test_provides_without_a_name
       error, root = driver_problem("Syskit.extend_model(OroGen.gps.Task) do\n  provides MyApp::Devices::Pose\nend\n")
-      assert_reported error, /provides MyApp::Devices::Pose needs a service name/, at: 'models/orogen/gps.rb:3',
-                                                                                   hint: /provides MyApp::Devices::Pose, as: 'name'/, root: root
+      assert_reported error, /provides MyApp::Devices::Pose needs a service name/,
+                      at: 'models/orogen/gps.rb:3', hint: /provides MyApp::Devices::Pose, as: 'name'/, root: root
     end
 
     def test_driver_for_with_an_unknown_option
-      error, root = driver_problem("Syskit.extend_model(OroGen.gps.Task) do\n  driver_for MyApp::Devices::Gps, as: 'gps', using: 'x', 'position' => 'lat'\nend\n")
-      assert_reported error, /unknown option using:/, at: 'models/orogen/gps.rb:3', hint: /'service_port' => 'task_port'/,
-                                                      root: root
+      error, root = driver_problem(<<~RUBY)
+        Syskit.extend_model(OroGen.gps.Task) do
+          driver_for MyApp::Devices::Gps, as: 'gps', using: 'x', 'position' => 'lat'
+        end
+      RUBY
+      assert_reported error, /unknown option using:/,
+                      at: 'models/orogen/gps.rb:3', hint: /'service_port' => 'task_port'/, root: root
     end
 
     def test_extend_model_of_something_else

@@ -31,16 +31,22 @@ module Syskit
     end
 
     def test_a_data_service_is_not_a_device
-      root = my_app("device(Services::Pose, as: 'pose')\n",
-                    { 'models/services/pose.rb' => "module MyApp\n  module Services\n    data_service_type 'Pose'\n  end\nend\n" })
+      services = <<~RUBY
+        module MyApp
+          module Services
+            data_service_type 'Pose'
+          end
+        end
+      RUBY
+      root = my_app("device(Services::Pose, as: 'pose')\n", { 'models/services/pose.rb' => services })
       assert_reported load_problem(root), /device expects a device model.*got MyApp::Services::Pose \(a data service\)/,
                       at: ROBOT, root: root
     end
 
     def test_a_bus_model_is_declared_with_com_bus
       error, root = problem("device(CommonModels::Devices::Bus::CAN, as: 'can0')\n")
-      assert_reported error, /CommonModels::Devices::Bus::CAN is a communication bus/, at: ROBOT,
-                                                                                       hint: /com_bus CommonModels::Devices::Bus::CAN, as: 'name'/, root: root
+      assert_reported error, /CommonModels::Devices::Bus::CAN is a communication bus/,
+                      at: ROBOT, hint: /com_bus CommonModels::Devices::Bus::CAN, as: 'name'/, root: root
     end
 
     def test_com_bus_needs_a_bus_model
@@ -57,14 +63,14 @@ module Syskit
 
     def test_client_to_bus_outside_a_bus
       error, root = problem("device(Devices::IMU, as: 'imu', client_to_bus: false)\n")
-      assert_reported error, /client_to_bus: only applies to devices attached to a bus/, at: ROBOT,
-                                                                                         hint: /through 'bus_name' do/, root: root
+      assert_reported error, /client_to_bus: only applies to devices attached to a bus/,
+                      at: ROBOT, hint: /through 'bus_name' do/, root: root
     end
 
     def test_through_an_unknown_bus
       error, root = problem("com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\nthrough 'can1' do\nend\n")
-      assert_reported error, /no bus named 'can1' \(did you mean 'can0'\?\)/, at: 'models/profiles/base.rb:10',
-                                                                              hint: /buses of this robot: can0/, root: root
+      assert_reported error, /no bus named 'can1' \(did you mean 'can0'\?\)/,
+                      at: 'models/profiles/base.rb:10', hint: /buses of this robot: can0/, root: root
     end
 
     def test_through_a_device_that_is_not_a_bus
@@ -80,8 +86,8 @@ module Syskit
         end
       RUBY
       error, root = problem(robot)
-      assert_reported error, /would neither read from nor write to bus 'can0'/, at: 'models/profiles/base.rb:11',
-                                                                                hint: /drop one of the two options/, root: root
+      assert_reported error, /would neither read from nor write to bus 'can0'/,
+                      at: 'models/profiles/base.rb:11', hint: /drop one of the two options/, root: root
     end
 
     def test_a_bus_attached_through_itself
@@ -112,7 +118,8 @@ module Syskit
         end
       RUBY
       error, root = problem(robot)
-      assert_reported error, /can_id\(4660, 255\) on device 't': this filter can never match: id 0x1234 has bits outside mask 0xFF/,
+      assert_reported error, Regexp.new('can_id\(4660, 255\) on device \'t\': this filter can never match: ' \
+                                        'id 0x1234 has bits outside mask 0xFF'),
                       at: 'models/profiles/base.rb:12', hint: /can_id takes \(id, mask = \.\.\.\)/, root: root
     end
 
@@ -133,13 +140,16 @@ module Syskit
         device(Devices::TemperatureSensor, as: 't').can_id(0x12)
       RUBY
       error, root = problem(robot)
-      assert_reported error, /device 't' has no 'can_id'/, at: 'models/profiles/base.rb:10',
-                                                           hint: /can_id is for devices attached to a CommonModels::Devices::Bus::CAN bus: declare t in a through 'bus_name' do \.\.\. end block/,
-                                                           root: root
+      assert_reported error, /device 't' has no 'can_id'/,
+                      at: 'models/profiles/base.rb:10',
+                      hint: Regexp.new('can_id is for devices attached to a CommonModels::Devices::Bus::CAN bus: ' \
+                                       'declare t in a through \'bus_name\' do \.\.\. end block'),
+                      root: root
     end
 
     def test_invalid_chained_values
-      { ".prefer_deployed_tasks(3)\n" => [/prefer_deployed_tasks expects regexps or names, got 3/, %r{prefer_deployed_tasks\(/forward/\)}],
+      { ".prefer_deployed_tasks(3)\n" => [/prefer_deployed_tasks expects regexps or names, got 3/,
+                                          %r{prefer_deployed_tasks\(/forward/\)}],
         ".with_conf\n" => [/with_conf needs at least one section name/, /with_conf\('default', 'forward'\)/],
         ".period(-1)\n" => [/invalid period -1 for device 'imu'/, /positive number/] }.each do |call, (message, hint)|
         error, root = problem("device(Devices::IMU, as: 'imu')\n  #{call}")
@@ -150,18 +160,25 @@ module Syskit
 
     def test_unknown_statement_in_a_robot_block
       error, root = problem("devise(Devices::IMU, as: 'imu')\n")
-      assert_reported error, /unknown statement 'devise' in a robot block \(did you mean 'device'\?\)/, at: ROBOT,
-                                                                                                        hint: /device, com_bus and through/, root: root
+      assert_reported error, /unknown statement 'devise' in a robot block \(did you mean 'device'\?\)/,
+                      at: ROBOT, hint: /device, com_bus and through/, root: root
     end
 
     def test_com_bus_with_a_block_attaches_the_devices
-      root = my_app("com_bus(CommonModels::Devices::Bus::CAN, as: 'can0') do\n  device(Devices::TemperatureSensor, as: 't').can_id(1)\nend\n")
+      root = my_app(<<~RUBY)
+        com_bus(CommonModels::Devices::Bus::CAN, as: 'can0') do
+          device(Devices::TemperatureSensor, as: 't').can_id(1)
+        end
+      RUBY
       load_app(root)
       assert_equal 'can0', MyApp::Profiles::Base.t_dev.device.bus.name
     end
 
     def test_attach_to_does_what_through_does
-      root = my_app("com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\ndevice(Devices::TemperatureSensor, as: 't').attach_to('can0', client_to_bus: false).can_id(1)\n")
+      root = my_app(<<~RUBY)
+        com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+        device(Devices::TemperatureSensor, as: 't').attach_to('can0', client_to_bus: false).can_id(1)
+      RUBY
       load_app(root)
       device = MyApp::Profiles::Base.t_dev.device
       assert_equal ['can0', false, true], [device.bus.name, device.client_to_bus?, device.bus_to_client?]
@@ -169,7 +186,10 @@ module Syskit
     end
 
     def test_chainable_settings_are_recorded
-      root = my_app("device(Devices::IMU, as: 'imu').period(0.01).burst(3).sample_size(64).doc('the IMU')\n  .with_conf('default', 'fast').prefer_deployed_tasks(/imu/, 'imu2')\n")
+      root = my_app(<<~RUBY)
+        device(Devices::IMU, as: 'imu').period(0.01).burst(3).sample_size(64).doc('the IMU')
+          .with_conf('default', 'fast').prefer_deployed_tasks(/imu/, 'imu2')
+      RUBY
       load_app(root)
       device = MyApp::Profiles::Base.imu_dev.device
       assert_equal [0.01, 3, 64, 'the IMU', %w[default fast], [/imu/, 'imu2']],

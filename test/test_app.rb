@@ -19,7 +19,11 @@ module Syskit
     end
 
     def test_models_can_be_required_in_the_three_ways_the_seed_does
-      root = my_app(nil, 'models/devices/a.rb' => "require 'models/devices/imu'\nrequire 'devices/imu'\nrequire 'my_app/models/devices/imu'\n")
+      root = my_app(nil, 'models/devices/a.rb' => <<~RUBY)
+        require 'models/devices/imu'
+        require 'devices/imu'
+        require 'my_app/models/devices/imu'
+      RUBY
       app = load_app(root)
       assert_equal(1, $LOADED_FEATURES.count { |f| f.end_with?('my_app/models/devices/imu.rb') })
       assert app.problems.empty?
@@ -27,8 +31,15 @@ module Syskit
 
     def test_files_without_module_statements_are_evaluated_in_their_path_namespace
       root = my_app(nil, 'models/devices/imu/xsens.rb' => "device_type 'MTi'\n",
-                         'models/profiles/live/rover.rb' => "profile 'Rover' do\n  robot { device(Devices::IMU::MTi, as: 'imu') }\nend\n",
-                         'models/orogen/imu.rb' => "require 'models/devices/imu'\nSyskit.extend_model(OroGen.imu.Task) { driver_for Devices::IMU::MTi, as: 'imu' }\n",
+                         'models/profiles/live/rover.rb' => <<~RUBY,
+                           profile 'Rover' do
+                             robot { device(Devices::IMU::MTi, as: 'imu') }
+                           end
+                         RUBY
+                         'models/orogen/imu.rb' => <<~RUBY,
+                           require 'models/devices/imu'
+                           Syskit.extend_model(OroGen.imu.Task) { driver_for Devices::IMU::MTi, as: 'imu' }
+                         RUBY
                          'config/robots/default.rb' => "using_task_library 'imu'\n")
       load_app(root)
       assert_equal 'MyApp::Devices::IMU::MTi', MyApp::Devices::IMU::MTi.name
@@ -94,20 +105,23 @@ module Syskit
 
     def test_a_misspelled_constant
       root = my_app("device(Devices::IMUU, as: 'imu')\n")
-      assert_reported load_problem(root), /uninitialized constant MyApp::Devices::IMUU/, at: 'models/profiles/base.rb:9',
-                                                                                         hint: /did you mean 'MyApp::Devices::IMU'\?/, root: root
+      assert_reported load_problem(root), /uninitialized constant MyApp::Devices::IMUU/,
+                      at: 'models/profiles/base.rb:9', hint: /did you mean 'MyApp::Devices::IMU'\?/, root: root
     end
 
     def test_a_misspelled_task_library_in_the_orogen_namespace
       root = my_app("device(Devices::IMU, as: 'imu', using: OroGen.imuu.Task)\n")
-      assert_reported load_problem(root), /there is no task library 'imuu' \(did you mean 'imu'\?\) \(loaded: canbus, imu, temp\)/,
-                      at: 'models/profiles/base.rb:9', hint: /available task libraries: .*imu.*using_task_library 'name'/, root: root
+      assert_reported load_problem(root),
+                      /there is no task library 'imuu' \(did you mean 'imu'\?\) \(loaded: canbus, imu, temp\)/,
+                      at: 'models/profiles/base.rb:9',
+                      hint: /available task libraries: .*imu.*using_task_library 'name'/, root: root
     end
 
     def test_a_task_library_that_is_not_loaded
       root = my_app("device(Devices::IMU, as: 'imu', using: OroGen.imu.Task)\n", libraries: %w[temp])
       assert_reported load_problem(root, robots: []), /task library 'imu' is not loaded \(loaded: temp\)/,
-                      at: 'models/profiles/base.rb:7', hint: /add using_task_library 'imu' before using OroGen.imu/, root: root
+                      at: 'models/profiles/base.rb:7', hint: /add using_task_library 'imu' before using OroGen.imu/,
+                      root: root
     end
 
     def test_an_unknown_task_model
@@ -118,8 +132,11 @@ module Syskit
 
     def test_an_unknown_task_library
       root = my_app(nil, 'models/profiles/x.rb' => "using_task_library 'gps_ubloxx'\n")
-      assert_reported load_problem(root), /no task library 'gps_ubloxx'/, at: 'models/profiles/x.rb:1',
-                                                                          hint: %r{no gps_ubloxx.orogen in models/orogen, .*models/orogen; create models/orogen/gps_ubloxx.orogen or add its directory to SYSKIT_OROGEN_PATH}, root: root
+      assert_reported load_problem(root), /no task library 'gps_ubloxx'/,
+                      at: 'models/profiles/x.rb:1',
+                      hint: Regexp.new('no gps_ubloxx.orogen in models/orogen, .*models/orogen; create ' \
+                                       'models/orogen/gps_ubloxx.orogen or add its directory to SYSKIT_OROGEN_PATH'),
+                      root: root
     end
 
     def test_an_unknown_typekit_in_a_ruby_file
@@ -129,13 +146,24 @@ module Syskit
     end
 
     def test_a_misspelled_type
-      root = my_app(nil, 'models/devices/x.rb' => "module MyApp\n  import_types_from 'canbus'\n  Types.canbus.Mesage\nend\n")
+      root = my_app(nil, 'models/devices/x.rb' => <<~RUBY)
+        module MyApp
+          import_types_from 'canbus'
+          Types.canbus.Mesage
+        end
+      RUBY
       assert_reported load_problem(root), /Types.canbus has no 'Mesage' \(did you mean 'Message'\?\)/,
                       at: 'models/devices/x.rb:3', hint: /known under Types.canbus: .*Message/, root: root
     end
 
     def test_typekit_errors
-      root = my_app(nil, 'models/typekits/my_bus.rb' => "struct 'Device' do\n  field 'id', '/uint32_t'\n  field 'id', '/uint8_t'\nend\n",
+      typekit = <<~RUBY
+        struct 'Device' do
+          field 'id', '/uint32_t'
+          field 'id', '/uint8_t'
+        end
+      RUBY
+      root = my_app(nil, 'models/typekits/my_bus.rb' => typekit,
                          'models/devices/x.rb' => "module MyApp\n  import_types_from 'my_bus'\nend\n")
       assert_reported load_problem(root), /field 'id' is declared twice/, at: 'models/typekits/my_bus.rb:3', root: root
     end
@@ -166,14 +194,19 @@ module Syskit
     end
 
     def test_a_deployed_task_name_used_twice
-      root = my_app(nil, 'config/robots/default.rb' => "using_task_library 'imu'\nSyskit.conf.use_deployment OroGen.imu.Task => 'x'\nSyskit.conf.use_deployment OroGen.imu.Task => 'x'\n")
-      assert_reported load_problem(root), /deployed task name 'x' is used twice/, at: 'config/robots/default.rb:3',
-                                                                                  hint: /unique on a robot/, root: root
+      root = my_app(nil, 'config/robots/default.rb' => <<~RUBY)
+        using_task_library 'imu'
+        Syskit.conf.use_deployment OroGen.imu.Task => 'x'
+        Syskit.conf.use_deployment OroGen.imu.Task => 'x'
+      RUBY
+      assert_reported load_problem(root), /deployed task name 'x' is used twice/,
+                      at: 'config/robots/default.rb:3', hint: /unique on a robot/, root: root
     end
 
     def test_use_deployment_with_something_else
       root = my_app(nil, 'config/robots/default.rb' => "Syskit.conf.use_deployment 42\n")
-      assert_reported load_problem(root), /use_deployment does not understand 42/, at: 'config/robots/default.rb:1', root: root
+      assert_reported load_problem(root), /use_deployment does not understand 42/,
+                      at: 'config/robots/default.rb:1', root: root
     end
 
     def test_an_unknown_robot_configuration

@@ -76,21 +76,33 @@ module Syskit
       # The grouped lookup answers what testing every filter would.
       def test_agrees_with_testing_every_filter
         random = Random.new(1)
-        devices = Array.new(40) do |i|
-          mask = [0x7FF, 0x7F0, 0x700, 0x1FFFFFFF, 0x3FFFF00, 0x1FFFF000][random.rand(6)]
-          dev("d#{i}", [random.rand(0x2000_0000) & mask, mask])
-        end
+        devices = random_devices(random)
         d = Dispatcher.new('can0', devices)
         filters = d.devices.map { |x| [x.name, x.can_filter] }
         2000.times do
-          extended = random.rand(2).zero?
-          id = extended ? random.rand(0x2000_0000) : random.rand(0x800)
-          id = devices[random.rand(40)].attributes['can_id'][0] | (id & 0xF) if random.rand(2).zero?
+          id, extended = random_id(random, devices)
           next if !extended && id > 0x7FF
 
           expected = filters.select { |_, f| f.extended? == extended && f.match?(id) }.map(&:first).sort
           assert_equal expected, d.receivers(Frame.key(id, extended)), format('%<id>X', id: id)
         end
+      end
+
+      # 40 devices whose filters have six different masks, of both kinds.
+      def random_devices(random)
+        Array.new(40) do |i|
+          mask = [0x7FF, 0x7F0, 0x700, 0x1FFFFFFF, 0x3FFFF00, 0x1FFFF000][random.rand(6)]
+          dev("d#{i}", [random.rand(0x2000_0000) & mask, mask])
+        end
+      end
+
+      # An id and whether it is extended; half of them near a device's id,
+      # so that filters match often enough to test something.
+      def random_id(random, devices)
+        extended = random.rand(2).zero?
+        id = extended ? random.rand(0x2000_0000) : random.rand(0x800)
+        id = devices[random.rand(40)].attributes['can_id'][0] | (id & 0xF) if random.rand(2).zero?
+        [id, extended]
       end
 
       def test_from_plan_reads_the_devices_of_the_bus

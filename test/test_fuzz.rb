@@ -182,7 +182,7 @@ module Syskit
           output:
           #{(out + err).lines.first(8).map { |l| "  | #{l}" }.join.chomp}
           mutated #{target}:
-          #{content.lines.each_with_index.map { |l, i| format('  %3d| %s', i + 1, l) }.join.chomp}
+          #{content.lines.each_with_index.map { |l, i| format('  %<n>3d| %<line>s', n: i + 1, line: l) }.join.chomp}
         TEXT
       end
     end
@@ -212,15 +212,19 @@ module Syskit
         runs << run_iteration(iteration)
       end
       failed = runs.select { |r| r.problems.any? }
-      elapsed = now - started
-      puts format("\nfuzz: %<n>d iterations (seed %<seed>d) in %<t>.1fs, %<ok>d accepted, %<err>d located errors, " \
-                  '%<bad>d failures', n: runs.size, seed: SEED, t: elapsed, ok: runs.count { |r| r.status.zero? },
-                                      err: runs.count { |r| r.status == 1 && r.problems.empty? }, bad: failed.size)
+      print_summary(runs, failed, now - started)
       assert_operator runs.size, :>=, [50, iterations.size].min, 'too few iterations ran within the time budget'
       assert failed.empty?, failure_report(failed)
     end
 
     private
+
+    def print_summary(runs, failed, elapsed)
+      puts format("\nfuzz: %<n>d iterations (seed %<seed>d) in %<t>.1fs, %<ok>d accepted, %<err>d located errors, " \
+                  '%<bad>d failures',
+                  n: runs.size, seed: SEED, t: elapsed, ok: runs.count { |r| r.status.zero? },
+                  err: runs.count { |r| r.status == 1 && r.problems.empty? }, bad: failed.size)
+    end
 
     def now
       Process.clock_gettime(Process::CLOCK_MONOTONIC)
@@ -297,14 +301,19 @@ module Syskit
 
       errors = error_lines(text)
       problems << 'exit status 1 but no error printed' if errors.empty?
-      errors.each do |line|
-        problems << unlocated(line) unless (m = line.match(LOCATED))
-        next unless m
-
-        problems << "line 0: #{line}" if m[:line].to_i.zero?
-        problems << "located in syskit's own code: #{line}" if File.expand_path(m[:path], '/').start_with?(GEM_LIB)
-      end
+      errors.each { |line| problems.concat(line_problems(line)) }
       problems.uniq
+    end
+
+    # An error line must start with a line of the user's files.
+    def line_problems(line)
+      m = line.match(LOCATED)
+      return [unlocated(line)] unless m
+
+      problems = []
+      problems << "line 0: #{line}" if m[:line].to_i.zero?
+      problems << "located in syskit's own code: #{line}" if File.expand_path(m[:path], '/').start_with?(GEM_LIB)
+      problems
     end
 
     # The lines of the output that state problems: not hints, not the

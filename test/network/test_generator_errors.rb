@@ -153,9 +153,11 @@ module Syskit
     end
 
     def test_unknown_property_in_a_section
-      error = conf_error("--- name:default\nthreshold: 1.0\nthreshhold: 2.0\n")
-      assert_reported error, /sensor::Task has no property 'threshhold' \(did you mean 'threshold'\?\)/,
-                      at: 'config/orogen/sensor::Task.yml:3', hint: /its properties are limits, threshold/, root: @root
+      error = conf_error("--- name:default\nthreshold: 1.0\n--- name:hot\nthreshhold: 2.0\n",
+                         conf: ".with_conf('default', 'hot')")
+      assert_reported error, Regexp.new("sensor::Task has no property 'threshhold' \\(did you mean 'threshold'\\?\\) " \
+                                        "\\(section 'hot' of sensor::Task.yml\\)"),
+                      at: 'config/orogen/sensor::Task.yml:4', hint: /its properties are limits, threshold/, root: @root
     end
 
     def test_value_of_the_wrong_type

@@ -50,14 +50,16 @@ module Syskit
 
       # The location of +key+ in the section that set it last among +names+.
       def location_of(key, names)
-        names.reverse_each do |name|
-          section = sections[name]
-          next unless section&.settings&.key?(key)
+        section = section_of(key, names)
+        return Location.new(path, 1) unless section
 
-          offset = section.text.lines.index { |l| l.match?(/^#{Regexp.escape(key.to_s)}\s*:/) }
-          return Location.new(path, section.line + 1 + offset.to_i)
-        end
-        Location.new(path, 1)
+        offset = section.text.lines.index { |l| l.match?(/^#{Regexp.escape(key.to_s)}\s*:/) }
+        Location.new(path, section.line + 1 + offset.to_i)
+      end
+
+      # The section among +names+ whose value of +key+ is the one applied.
+      def section_of(key, names)
+        names.reverse_each.map { |name| sections[name] }.find { |section| section&.settings&.key?(key) }
       end
 
       def self.deep_merge(base, override)

@@ -53,8 +53,10 @@ module Syskit
       def apply_value(task, file, key, value)
         unless task.properties.key?(key)
           names = task.properties.names
+          section = file.section_of(key, task.conf).name
           raise ConfigurationError.new(
-            "#{task.model.name} has no property '#{key}'#{Naming.did_you_mean(key, names)}",
+            "#{task.model.name} has no property '#{key}'#{Naming.did_you_mean(key, names)} " \
+            "(section '#{section}' of #{File.basename(file.path)})",
             location: file.location_of(key, task.conf), hint: "its properties are #{names.sort.join(', ')}"
           )
         end

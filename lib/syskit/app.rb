@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'psych'
+require 'syskit/app/files'
 
 module Syskit
   # A Syskit app (a "bundle"): a directory with models/, config/ and test/.
@@ -9,6 +10,8 @@ module Syskit
   # task libraries, models, profiles, robot configurations) and removes it
   # all again on {#unload}, so that one process can load app after app.
   class App
+    include Files
+
     CONFIG_FILE = 'config/syskit.yml'
     BUNDLED_MODELS = File.expand_path('../../models', __dir__)
 
@@ -92,7 +95,6 @@ module Syskit
       raise Error, "#{Syskit.app} is still loaded, unload it first" if Syskit.app
 
       @constants_before = Object.constants
-      @features_before = $LOADED_FEATURES.size
       # 'models/devices/x' and 'devices/x' resolve from the app; 'app_name/models/x'
       # (the seed's NMEA2000 example) through its parent, searched last.
       @load_path = [root, File.join(root, 'models'), File.dirname(root)]
@@ -116,23 +118,6 @@ module Syskit
       $LOADED_FEATURES.reject! { |f| owned_file?(f) }
       @load_path.each { |dir| $LOAD_PATH.delete(dir) }
       Syskit.app = nil
-    end
-
-    # Loads a Ruby file of the app. A file that opens no module at its top
-    # level is evaluated inside the namespace its path names
-    # (models/profiles/live/base.rb in AppName::Profiles::Live), so the
-    # seed's short snippets work as written.
-    def load_file(path)
-      path = File.realpath(path)
-      return false if $LOADED_FEATURES.include?(path)
-
-      # Marked as loaded first, so that a file that fails is reported once
-      # rather than evaluated again by a later `require` of it.
-      $LOADED_FEATURES << path
-      source = File.read(path)
-      modules = source.match?(/^(module|class)\s+[A-Z]/) ? [] : namespace_for(path)
-      eval_in_namespace(source, path, modules)
-      true
     end
 
     # Loads task library +name+ (its .orogen file and extension files) once.
@@ -162,7 +147,8 @@ module Syskit
       path = typekit_search_dirs.map { |d| File.join(d, "#{name}.rb") }.find { |p| File.file?(p) }
       if path
         @typekits[name] = :typekit
-        Types::TypekitLoader.new(types, name, method(:import_types_for_typekit)).load(path)
+        importer = ->(typekit, at) { import_types(typekit, location: at) }
+        Types::TypekitLoader.new(types, name, importer).load(path)
       elsif from_spec
         types.opaque_typekit(name)
         @typekits[name] = :opaque
@@ -185,10 +171,6 @@ module Syskit
     # Records a profile defined by a file of this app.
     def register_profile(profile)
       @profiles[profile.name] = profile
-    end
-
-    def find_profile(name)
-      @profiles[name] || @profiles.values.find { |p| p.name.end_with?("::#{name}") }
     end
 
     # The deployments of robot +name+, loaded from config/robots/NAME.rb.
@@ -236,29 +218,31 @@ module Syskit
       load_file(File.join(BUNDLED_MODELS, 'devices', 'bus', 'can.rb'))
     end
 
-    # Model files in load order: devices first, then other model
-    # directories, then profiles. Task-library files (models/orogen) and
-    # typekits are loaded when something asks for them.
-    def each_model_file
-      models = File.join(root, 'models', '')
-      Dir[File.join(models, '**', '*.rb')].filter_map do |path|
-        kind = path.delete_prefix(models).split('/').first
-        next if %w[orogen typekits].include?(kind)
-
-        [{ 'devices' => 0, 'profiles' => 2 }.fetch(kind, 1), path]
-      end.sort.map(&:last)
-    end
-
     def load_everything
-      orogen.available_library_names.each do |lib|
-        next unless File.file?(File.join(root, 'models', 'orogen', "#{lib}.orogen")) ||
-                    File.file?(File.join(root, 'models', 'orogen', "#{lib}.rb"))
+      app_orogen = File.join(root, 'models', 'orogen')
+      app_libraries = Dir[File.join(app_orogen, '*.{orogen,rb}')].map do |f|
+        File.basename(f).sub(/\.(orogen|rb)\z/, '')
+      end
+      app_libraries.uniq.sort.each do |lib|
+        spec = orogen.spec_path(lib)
+        collect_problems do
+          raise extension_without_library(lib) unless spec
 
-        collect_problems { using_task_library(lib, location: Location.new(orogen.spec_path(lib) || root, 1)) }
+          using_task_library(lib, location: Location.new(spec, 1))
+        end
       end
       Dir[File.join(root, 'models', 'typekits', '*.rb')].each do |path|
         collect_problems { import_types(File.basename(path, '.rb'), location: Location.new(path, 1)) }
       end
+    end
+
+    def extension_without_library(lib)
+      FileLoadError.new(
+        "this file extends task library '#{lib}', but there is no #{lib}.orogen" \
+        "#{Naming.did_you_mean(lib, orogen.available_library_names)}",
+        location: Location.new(File.join(root, 'models', 'orogen', "#{lib}.rb"), 1),
+        hint: "name the file after its task library, or add models/orogen/#{lib}.orogen"
+      )
     end
 
     def load_robot_config(name)
@@ -279,28 +263,6 @@ module Syskit
         @loading_robot_config = nil
       end
       config
-    end
-
-    def eval_in_namespace(source, path, modules)
-      prefix = modules.map { |m| "module #{m};" }.join(' ')
-      suffix = "\nend" * modules.size
-      # The prefix shares the first line with the file, so line numbers hold.
-      TOPLEVEL_BINDING.eval(modules.empty? ? source : "#{prefix} #{source}#{suffix}", path, 1)
-    rescue ScriptError, StandardError => e
-      raise UserCode.translate(e, path: path, root: root)
-    end
-
-    # Module names a file without module statements is evaluated in.
-    def namespace_for(path)
-      relative = path.delete_prefix("#{root}/")
-      dirs = File.dirname(relative).split('/')
-      return [name] unless dirs.first == 'models' && !%w[orogen typekits].include?(dirs[1])
-
-      [name] + dirs.drop(1).map { |d| Naming.camelize(d, acronyms) }
-    end
-
-    def import_types_for_typekit(name, location)
-      import_types(name, location: location)
     end
 
     def replace_constant(name, value)

@@ -1,0 +1,58 @@
+# frozen_string_literal: true
+
+module Syskit
+  class App
+    # Evaluating the app's Ruby files. A file that opens no module at its
+    # top level is evaluated inside the namespace its path names
+    # (models/profiles/live/base.rb in AppName::Profiles::Live), so the
+    # seed's short snippets work as written.
+    module Files
+      # Loads a Ruby file of the app, once.
+      def load_file(path)
+        path = File.realpath(path)
+        return false if $LOADED_FEATURES.include?(path)
+
+        # Marked as loaded first, so that a file that fails is reported once
+        # rather than evaluated again by a later `require` of it.
+        $LOADED_FEATURES << path
+        source = File.read(path)
+        modules = source.match?(/^(module|class)\s+[A-Z]/) ? [] : namespace_for(path)
+        eval_in_namespace(source, path, modules)
+        true
+      end
+
+      private
+
+      # Model files in load order: devices first, then other model
+      # directories, then profiles. Task-library files (models/orogen) and
+      # typekits are loaded when something asks for them.
+      def each_model_file
+        models = File.join(root, 'models', '')
+        Dir[File.join(models, '**', '*.rb')].filter_map do |path|
+          kind = path.delete_prefix(models).split('/').first
+          next if %w[orogen typekits].include?(kind)
+
+          [{ 'devices' => 0, 'profiles' => 2 }.fetch(kind, 1), path]
+        end.sort.map(&:last)
+      end
+
+      def eval_in_namespace(source, path, modules)
+        prefix = modules.map { |m| "module #{m};" }.join(' ')
+        suffix = "\nend" * modules.size
+        # The prefix shares the first line with the file, so line numbers hold.
+        TOPLEVEL_BINDING.eval(modules.empty? ? source : "#{prefix} #{source}#{suffix}", path, 1)
+      rescue ScriptError, StandardError => e
+        raise UserCode.translate(e, path: path, root: root)
+      end
+
+      # Module names a file without module statements is evaluated in.
+      def namespace_for(path)
+        relative = path.delete_prefix("#{root}/")
+        dirs = File.dirname(relative).split('/')
+        return [name] unless dirs.first == 'models' && !%w[orogen typekits].include?(dirs[1])
+
+        [name] + dirs.drop(1).map { |d| Naming.camelize(d, acronyms) }
+      end
+    end
+  end
+end

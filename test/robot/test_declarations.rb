@@ -151,7 +151,8 @@ module Syskit
       { ".prefer_deployed_tasks(3)\n" => [/prefer_deployed_tasks expects regexps or names, got 3/,
                                           %r{prefer_deployed_tasks\(/forward/\)}],
         ".with_conf\n" => [/with_conf needs at least one section name/, /with_conf\('default', 'forward'\)/],
-        ".period(-1)\n" => [/invalid period -1 for device 'imu'/, /positive number/] }.each do |call, (message, hint)|
+        ".period(-1)\n" => [/invalid period -1 for device 'imu'/, /period takes a positive number of seconds/],
+        ".doc(3)\n" => [/invalid doc 3 for device 'imu'/, /doc takes a string/] }.each do |call, (message, hint)|
         error, root = problem("device(Devices::IMU, as: 'imu')\n  #{call}")
         assert_reported error, message, at: 'models/profiles/base.rb:10', hint: hint, root: root
         @loaded_apps.pop.unload

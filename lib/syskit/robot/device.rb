@@ -10,6 +10,8 @@ module Syskit
     # Chainable calls configure it; bus attributes (+can_id+) come from the
     # modules of its device model and of the bus it is attached to.
     class Device
+      DEFAULT_CONF = ['default'].freeze
+
       attr_reader :name, :robot, :declared_at, :requested_model, :using, :bus,
                   :deployment_hints, :dsl_attributes, :client_to_bus, :bus_to_client
 
@@ -19,7 +21,7 @@ module Syskit
         @requested_model = requested_model
         @using = using
         @declared_at = location
-        @conf = ['default']
+        @conf = DEFAULT_CONF
         @deployment_hints = []
         @dsl_attributes = {}
         @settings = {}
@@ -95,21 +97,21 @@ module Syskit
 
       # Expected time between two messages of the device, in seconds.
       def period(seconds = nil)
-        setting(:period, seconds) { |v| v.is_a?(Numeric) && v.positive? }
+        setting(:period, seconds, 'a positive number of seconds') { |v| v.is_a?(Numeric) && v.positive? }
       end
 
       # How many messages the device may send at once.
       def burst(count = nil)
-        setting(:burst, count) { |v| v.is_a?(Integer) && v.positive? }
+        setting(:burst, count, 'a positive integer') { |v| v.is_a?(Integer) && v.positive? }
       end
 
       # Size of one message, for drivers that size their buffers.
       def sample_size(size = nil)
-        setting(:sample_size, size) { |v| v.is_a?(Integer) && v.positive? }
+        setting(:sample_size, size, 'a positive integer') { |v| v.is_a?(Integer) && v.positive? }
       end
 
       def doc(text = nil)
-        setting(:doc, text) { |v| v.is_a?(String) }
+        setting(:doc, text, 'a string') { |v| v.is_a?(String) }
       end
 
       # Attaches the device to a bus (the same as declaring it in a
@@ -204,12 +206,12 @@ module Syskit
         models.first if models.size == 1
       end
 
-      def setting(key, value)
+      def setting(key, value, expected)
         return @settings[key] if value.nil?
 
         unless yield(value)
           raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}",
-                                     location: Location.of_caller, hint: "#{key} takes a positive number")
+                                     location: Location.of_caller, hint: "#{key} takes #{expected}")
         end
 
         @settings[key] = value

@@ -153,8 +153,8 @@ module Syskit
         types.opaque_typekit(name)
         @typekits[name] = :opaque
       else
-        raise FileLoadError.new("no typekit '#{name}'", location: location,
-                                                        hint: "declare its types in models/typekits/#{name}.rb")
+        raise FileLoadError.new("no typekit '#{name}'",
+                                location: location, hint: "declare its types in models/typekits/#{name}.rb")
       end
     end
 

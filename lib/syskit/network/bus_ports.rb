@@ -70,9 +70,9 @@ module Syskit
         candidates = ports_of_type(model, direction)
         return candidates.first.name if candidates.size == 1
 
-        raise candidates.empty? ? no_client_port(direction,
-                                                 option) : ambiguous_client_ports(direction, option, candidates,
-                                                                                  service_model)
+        raise no_client_port(direction, option) if candidates.empty?
+
+        raise ambiguous_client_ports(direction, option, candidates, service_model)
       end
 
       def single_port(model, direction)

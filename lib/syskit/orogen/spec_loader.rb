@@ -30,8 +30,8 @@ module Syskit
       def define_task(name, parent_name, location, &block)
         full_name = "#{library.name}::#{name}"
         if library.tasks.key?(full_name)
-          raise SpecError.new("task_context '#{name}' is declared twice", location: location,
-                                                                          hint: 'give each task context its own name')
+          raise SpecError.new("task_context '#{name}' is declared twice",
+                              location: location, hint: 'give each task context its own name')
         end
 
         spec = TaskSpec.new(full_name, library, location: location)

@@ -101,8 +101,8 @@ module Syskit
 
       def check_name(name, location)
         if name.nil?
-          raise DeclarationError.new('a device needs a name', location: location,
-                                                              hint: "write device(Model, as: 'name')")
+          raise DeclarationError.new('a device needs a name',
+                                     location: location, hint: "write device(Model, as: 'name')")
         end
         name = name.to_s
         unless name.match?(/\A[a-z_][a-zA-Z0-9_]*\z/)

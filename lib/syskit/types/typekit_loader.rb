@@ -63,8 +63,8 @@ module Syskit
         def field(name, type)
           location = Location.of_caller
           if @fields.key?(name.to_s)
-            raise TypeError.new("field '#{name}' is declared twice", location: location,
-                                                                     hint: 'give each field its own name')
+            raise TypeError.new("field '#{name}' is declared twice",
+                                location: location, hint: 'give each field its own name')
           end
 
           @fields[name.to_s] = @loader.registry.resolve(type, location: location)
@@ -86,8 +86,8 @@ module Syskit
       def define(relative)
         full = relative.start_with?('/') ? relative : "/#{name}/#{relative}"
         if registry.find(full)
-          raise TypeError.new("type #{full} is already defined", location: Location.of_caller,
-                                                                 hint: 'remove the second definition')
+          raise TypeError.new("type #{full} is already defined",
+                              location: Location.of_caller, hint: 'remove the second definition')
         end
 
         registry.register(yield(full))

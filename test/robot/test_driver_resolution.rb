@@ -85,6 +85,12 @@ module Syskit
                       hint: /declare driver_for DeviceModel, as: 'name' in the extension file of imu::Task/, root: root
     end
 
+    def test_a_bus_driver_task_model_is_not_a_device
+      root = my_app("device(OroGen.canbus.Task, as: 'x')\n")
+      assert_reported load_problem(root), /canbus::Task drives no device/,
+                      at: 'models/profiles/base.rb:9', hint: /declare driver_for DeviceModel/, root: root
+    end
+
     def test_load_order_does_not_matter
       # The profile is loaded before the file that loads the driver library.
       root = my_app("device(Devices::IMU, as: 'imu')\n",

@@ -164,6 +164,12 @@ module Syskit
         driver_services.map(&:driven_device_model).uniq
       end
 
+      # The device models a `device(ThisTask, ...)` declaration can mean
+      # (buses are declared with com_bus and their model).
+      def declarable_device_models
+        driven_device_models.grep_v(ComBusModel)
+      end
+
       # The class of this model's +properties+ objects.
       def properties_class
         @properties_class ||= Properties.for(self)

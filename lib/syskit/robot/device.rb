@@ -199,10 +199,12 @@ module Syskit
         modules.each { |mod| extend(mod) unless is_a?(mod) }
       end
 
+      # The device model a driver task model stands for, when it is already
+      # known (DriverIndex resolves the others, with errors, after loading).
       def single_driven_model
         return unless requested_model.is_a?(Class) && requested_model <= TaskContext
 
-        models = requested_model.driven_device_models
+        models = requested_model.declarable_device_models
         models.first if models.size == 1
       end
 

@@ -33,7 +33,7 @@ module Syskit
 
       def model_from_task(device)
         task = device.requested_model
-        models = task.driven_device_models
+        models = task.declarable_device_models
         return models.first if models.size == 1
 
         if models.empty?

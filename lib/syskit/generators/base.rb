@@ -54,6 +54,12 @@ module Syskit
         FileWriter.new(root, allowed: ALLOWED, force: @force, dry_run: @dry_run).write(files)
       end
 
+      # The modules a generated file of +kind+ ('Devices', 'Profiles') for
+      # +name+ is nested in: AppName::Kind::Name's namespace.
+      def self.modules_for(app_name, kind, name)
+        Template::Modules.new([*app_name.split('::'), kind, *name.namespace])
+      end
+
       private
 
       def check_app_name
@@ -65,7 +71,7 @@ module Syskit
 
       # The nested modules a model file of +kind+ (Devices, Profiles) opens.
       def modules_for(kind, name)
-        Template::Modules.new([*app_name.split('::'), kind, *name.namespace])
+        self.class.modules_for(app_name, kind, name)
       end
     end
   end

@@ -22,7 +22,7 @@ module Syskit
 
       # The files of profile +name+ in app +app_name+ (also used by gen app).
       def self.files(app_name, name)
-        locals = { name: name, modules: Template::Modules.new([*app_name.split('::'), 'Profiles', *name.namespace]) }
+        locals = { name: name, modules: modules_for(app_name, 'Profiles', name) }
         {
           name.model_path('profiles') => Template.render('profile', **locals),
           name.test_path('profiles') => Template.render('profile_test', **locals)

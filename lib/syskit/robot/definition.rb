@@ -31,8 +31,10 @@ module Syskit
         name = check_name(name, location)
         check_model(klass, model, location)
         check_using(using, location)
-        unknown = options.keys - DEVICE_OPTIONS
-        raise unknown_options(unknown, location) unless unknown.empty?
+        unless options.empty?
+          unknown = options.keys - DEVICE_OPTIONS
+          raise unknown_options(unknown, location) unless unknown.empty?
+        end
         if !bus && !options.empty?
           raise DeclarationError.new(
             "#{options.keys.map { |k| "#{k}:" }.join(', ')} only applies to devices attached to a bus",

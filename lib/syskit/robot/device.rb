@@ -81,13 +81,14 @@ module Syskit
       # Chooses among the deployed tasks that could run this device's driver:
       # names matching a regexp or equal to a string.
       def prefer_deployed_tasks(*hints)
-        hints.flatten.each do |hint|
+        hints = hints.flatten
+        hints.each do |hint|
           next if hint.is_a?(Regexp) || hint.is_a?(String)
 
           raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{hint.inspect}",
                                      location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
         end
-        @deployment_hints.concat(hints.flatten)
+        @deployment_hints.concat(hints)
         @deployment_hints_location = Location.of_caller
         self
       end

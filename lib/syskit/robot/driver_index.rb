@@ -16,11 +16,15 @@ module Syskit
             srv.driven_device_model.fullfilled_models.each { |m| @drivers[m] |= [task_model] }
           end
         end
+        # Sorted once here: every device asks for the drivers of its model.
+        @drivers.each_value { |drivers| drivers.sort_by!(&:name).freeze }
       end
+
+      NONE = [].freeze
 
       # Task models that can drive devices of +device_model+, by name.
       def drivers_for(device_model)
-        @drivers.fetch(device_model, []).sort_by(&:name)
+        @drivers.fetch(device_model, NONE)
       end
 
       # Sets the model and driver of +device+, or raises a DriverError.

@@ -58,6 +58,22 @@ module Syskit
       assert_match(/<svg/, svg)
     end
 
+    # Padding comes from a table of widths up to 79; longer names still line up.
+    def test_text_aligns_connections_of_any_width
+      long = 'x' * 100
+      connections = [['a', 'out', 'b', 'in'], [long, 'out', 'b', 'in']].map do |from, from_port, to, to_port|
+        Network::Plan::Connection.new(Network::Plan::Endpoint.new(from, from_port),
+                                      Network::Plan::Endpoint.new(to, to_port), '/int', { 'type' => 'data' })
+      end
+      plan = Network::Plan.new(profile: 'P', robot: 'r', tasks: [], devices: [], connections: connections, order: [])
+      lines = Render::Text.render(plan).lines.grep(/ -> /)
+      assert_equal ["  a.out#{' ' * 99} -> b.in  /int  data\n", "  #{long}.out -> b.in  /int  data\n"], lines
+    end
+
+    def test_dot_escapes_quotes_backslashes_and_line_breaks
+      assert_equal '"a\\"b\\\\c\\nd"', Render::Dot.quote("a\"b\\c\nd", +'')
+    end
+
     def test_text_lists_tasks_connections_and_order
       text = Render::Text.render(example_plan)
       assert_match(/^Plan of AwesomeRobot::Profiles::Live::Base on robot 'default'$/, text)

@@ -3,39 +3,58 @@
 module Syskit
   module Render
     # The plan as a Graphviz graph: a box per task, grouped by deployment,
-    # an edge per connection labelled with its ports and policy.
+    # an edge per connection labelled with its ports and policy. Written
+    # into one string, as Text is.
     module Dot
       module_function
 
       def render(plan)
-        out = "digraph #{quote(plan.profile.to_s)} {\n"
+        out = quote(plan.profile.to_s, +'digraph ') << " {\n"
         out << "  rankdir=LR;\n  node [shape=box, fontname=\"Helvetica\"];\n"
         out << "  edge [fontname=\"Helvetica\", fontsize=10];\n"
-        plan.tasks.group_by(&:deployment).sort.each_with_index do |(deployment, tasks), i|
-          out << cluster(deployment, tasks, i)
+        plan.tasks.group_by(&:deployment).sort_by(&:first).each_with_index do |(deployment, tasks), i|
+          cluster(deployment, tasks, i, out)
         end
-        plan.connections.each { |c| out << edge(c) }
+        plan.connections.each { |c| edge(c, out) }
         out << "}\n"
       end
 
       # Graphviz draws the tasks of one deployment (one process) together.
-      def cluster(deployment, tasks, index)
-        out = "  subgraph cluster_#{index} {\n    label=#{quote("deployment #{deployment}")};\n"
+      def cluster(deployment, tasks, index, out)
+        out << '  subgraph cluster_' << index.to_s << " {\n    label=\"deployment "
+        escape(deployment, out) << "\";\n"
         tasks.each do |t|
-          out << "    #{quote(t.name)} [label=#{quote("#{t.name}\n#{t.model}")}];\n"
+          quote(t.name, out << '    ') << ' [label="'
+          escape(t.model, escape(t.name, out) << NEWLINE) << "\"];\n"
         end
         out << "  }\n"
       end
 
-      def edge(connection)
+      # The label: from port -> to port, then the policy.
+      def edge(connection, out)
+        quote(connection.from.task, out << '  ') << ' -> '
+        quote(connection.to.task, out) << ' [label="'
+        escape(connection.from.port, out) << ' -> '
+        escape(connection.to.port, out) << NEWLINE
         policy = connection.policy
-        policy = policy['type'] == 'buffer' ? "buffer #{policy['size']}" : policy['type']
-        label = "#{connection.from.port} -> #{connection.to.port}\n#{policy}"
-        "  #{quote(connection.from.task)} -> #{quote(connection.to.task)} [label=#{quote(label)}];\n"
+        escape(policy['type'], out)
+        out << ' ' << policy['size'].to_s if policy['type'] == 'buffer'
+        out << "\"];\n"
       end
 
-      def quote(text)
-        "\"#{text.gsub('\\', '\\\\\\\\').gsub('"', '\\"').gsub("\n", '\\n')}\""
+      SPECIAL = /[\\"\n]/
+      ESCAPES = { '\\' => '\\\\', '"' => '\\"', "\n" => '\\n' }.freeze
+      # A line break inside a label.
+      NEWLINE = '\\n'
+
+      # +text+ as a double-quoted Graphviz string, appended to +out+.
+      def quote(text, out)
+        escape(text, out << '"') << '"'
+      end
+
+      # +text+ with Graphviz's escapes, appended to +out+.
+      def escape(text, out)
+        out << (text.match?(SPECIAL) ? text.gsub(SPECIAL, ESCAPES) : text)
       end
     end
   end

@@ -3,67 +3,112 @@
 module Syskit
   module Render
     # The plan for people reading a terminal.
+    #
+    # Everything is appended to one string, padding included, rather than
+    # built from a formatted string per line: a plan of 10,000 devices has
+    # some 700,000 lines.
     module Text
+      # The title column of a task's details, and its continuation lines.
+      DETAIL_WIDTH = 16
+      DEVICES = '    devices     '
+      DEPENDS_ON = '    depends on  '
+      PROPERTIES = '    properties  '
+      PORTS = '    ports       '
+      CONTINUED = (' ' * DETAIL_WIDTH).freeze
+      STEP_WIDTH = 9
+
       module_function
 
       def render(plan)
-        out = "Plan of #{plan.profile} on robot '#{plan.robot}'\n"
+        out = +"Plan of #{plan.profile} on robot '#{plan.robot}'\n"
         out << "\nTasks (#{plan.tasks.size})\n"
-        plan.tasks.each { |task| out << task_text(task) }
+        plan.tasks.each { |task| task_text(task, out) }
         out << "\nConnections (#{plan.connections.size})\n"
-        out << connections_text(plan.connections)
+        connections_text(plan.connections, out)
         out << "\nOrder\n"
-        width = plan.order.size.to_s.size
-        plan.order.each_with_index do |step, i|
-          out << format("  %<i>#{width}d. %<step>-9s %<task>s\n", i: i + 1, step: step.step, task: step.task)
-        end
-        out
+        order_text(plan.order, out)
       end
 
-      def task_text(task)
-        out = "  #{task.name}  #{task.model}  (deployment #{task.deployment}, conf #{task.conf.join(', ')})\n"
-        out << "    devices     #{task.devices.join(', ')}\n" unless task.devices.empty?
-        out << "    depends on  #{task.depends_on.join(', ')}\n" unless task.depends_on.empty?
-        out << block('properties', task.properties.map { |k, v| "#{k}: #{plain(v)}" })
-        out << block('ports', task.ports.map do |p|
-          "#{p.name}  #{p.direction} #{p.type}#{' (dynamic)' if p.dynamic}"
-        end)
+      def task_text(task, out)
+        out << '  ' << task.name << '  ' << task.model << '  (deployment ' << task.deployment << ', conf '
+        list(task.conf, out) << ")\n"
+        list(task.devices, out << DEVICES) << "\n" unless task.devices.empty?
+        list(task.depends_on, out << DEPENDS_ON) << "\n" unless task.depends_on.empty?
+        details(PROPERTIES, task.properties, out) { |(name, value)| plain(value, out << name << ': ') }
+        details(PORTS, task.ports, out) do |port|
+          out << port.name << '  ' << port.direction << ' ' << port.type
+          out << ' (dynamic)' if port.dynamic
+        end
+      end
+
+      # One line per entry, the title on the first.
+      def details(title, entries, out)
+        entries.each_with_index do |entry, i|
+          out << (i.zero? ? title : CONTINUED)
+          yield entry
+          out << "\n"
+        end
+      end
+
+      # Names separated by commas.
+      def list(names, out)
+        names.each_with_index { |name, i| (i.zero? ? out : out << ', ') << name }
+        out
       end
 
       # Plain data written as compact JSON, without loading the json library
       # (whose Kernel#j would then be callable from user files).
-      def plain(value)
+      def plain(value, out)
         case value
-        when Hash then "{#{value.map { |k, v| "#{k.to_s.inspect}:#{plain(v)}" }.join(',')}}"
-        when Array then "[#{value.map { |v| plain(v) }.join(',')}]"
-        when String then value.inspect
-        when nil then 'null'
-        else value.to_s
+        when Hash
+          out << '{'
+          value.each_with_index { |(k, v), i| plain(v, (i.zero? ? out : out << ',') << k.to_s.inspect << ':') }
+          out << '}'
+        when Array
+          out << '['
+          value.each_with_index { |v, i| plain(v, i.zero? ? out : out << ',') }
+          out << ']'
+        when String then out << value.inspect
+        when nil then out << 'null'
+        else out << value.to_s
         end
       end
 
-      def block(title, lines)
-        return '' if lines.empty?
-
-        lines.each_with_index.map do |line, i|
-          format("    %-11<title>s %<line>s\n", title: i.zero? ? title : '', line: line)
-        end.join
+      # Columns: from, to, type (padded to their widest entry), then policy.
+      def connections_text(connections, out)
+        from = connections.map { |c| c.from.task.size + c.from.port.size + 1 }.max.to_i
+        to = connections.map { |c| c.to.task.size + c.to.port.size + 1 }.max.to_i
+        type = connections.map { |c| c.type.size }.max.to_i
+        connections.each do |c|
+          out << '  ' << c.from.task << '.' << c.from.port
+          pad(from - c.from.task.size - c.from.port.size - 1, out) << ' -> ' << c.to.task << '.' << c.to.port
+          pad(to - c.to.task.size - c.to.port.size - 1, out) << '  ' << c.type
+          policy(c.policy, pad(type - c.type.size, out) << '  ') << "\n"
+        end
+        out
       end
 
-      def connections_text(connections)
-        rows = connections.map { |c| connection_row(c) }
-        widths = (0..2).map { |i| rows.map { |r| r[i].size }.max.to_i }
-        rows.map do |r|
-          "  #{r[0].ljust(widths[0])} -> #{r[1].ljust(widths[1])}  #{r[2].ljust(widths[2])}  #{r[3]}\n"
-        end.join
+      def policy(policy, out)
+        policy['type'] == 'buffer' ? out << 'buffer ' << policy['size'].to_s : out << policy['type']
       end
 
-      def connection_row(conn)
-        ["#{conn.from.task}.#{conn.from.port}", "#{conn.to.task}.#{conn.to.port}", conn.type, policy_text(conn.policy)]
+      # Numbered steps, numbers right-aligned.
+      def order_text(order, out)
+        width = order.size.to_s.size
+        order.each_with_index do |step, i|
+          number = (i + 1).to_s
+          pad(width - number.size, out << '  ') << number << '. ' << step.step
+          pad(STEP_WIDTH - step.step.size, out) << ' ' << step.task << "\n"
+        end
+        out
       end
 
-      def policy_text(policy)
-        policy['type'] == 'buffer' ? "buffer #{policy['size']}" : policy['type']
+      # Padding up to this width is made once.
+      SPACES = Array.new(80) { |width| (' ' * width).freeze }.freeze
+      private_constant :SPACES
+
+      def pad(width, out)
+        width.positive? ? out << (SPACES[width] || ' ' * width) : out
       end
     end
   end

@@ -8,6 +8,7 @@ module Syskit
   class Location
     # The gem's own code; frames in here are never "the user's line".
     GEM_LIB = File.expand_path('..', __dir__)
+    SEPARATOR = '/'.ord
 
     # The first frame of the current call stack that is outside the gem's
     # library code, i.e. the user's DSL call that led here.
@@ -51,8 +52,9 @@ module Syskit
     def relative_path(root = Syskit.app&.root)
       return path unless root
 
-      prefix = "#{root.start_with?('/') ? root : File.expand_path(root)}/"
-      path.start_with?(prefix) ? path.delete_prefix(prefix) : path
+      root = File.expand_path(root) unless root.start_with?('/')
+      inside = path.start_with?(root) && path.getbyte(root.size) == SEPARATOR
+      inside ? path[(root.size + 1)..] : path
     end
 
     def to_s(root = Syskit.app&.root)

@@ -68,7 +68,9 @@ module Syskit
 
     # Values as plain data (hashes, arrays, numbers, strings), sorted by name.
     def to_plain
-      self.class.sorted_names.to_h { |k| [k, declarations[k].type.to_plain(@values[k])] }
+      plain = {}
+      self.class.sorted_names.each { |k| plain[k] = declarations[k].type.to_plain(@values[k]) }
+      plain
     end
 
     def to_h

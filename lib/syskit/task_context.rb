@@ -13,8 +13,8 @@ module Syskit
   class TaskContext
     extend Models::TaskModel
 
-    attr_reader :arguments, :properties, :created_ports
-    attr_accessor :conf, :deployed_task
+    attr_reader :arguments, :properties, :created_ports, :deployed_task
+    attr_accessor :conf
     # The requirement (a profile's device action) the generator made this
     # task for.
     attr_accessor :requirement
@@ -32,9 +32,15 @@ module Syskit
       self.class
     end
 
-    # The deployed task name, which names the task in plans.
-    def name
-      deployed_task&.name
+    # The deployed task name, which names the task in plans (nil until the
+    # task is deployed).
+    attr_reader :name
+
+    # Binds the task to a deployed task of the robot configuration. The name
+    # is kept here: plans, sorts and connections ask for it many times.
+    def deployed_task=(deployed)
+      @deployed_task = deployed
+      @name = deployed&.name
     end
 
     # Configuration hook: user extension files override it and call super.
@@ -42,9 +48,11 @@ module Syskit
 
     # The devices this task drives, from its +<name>_dev+ arguments.
     def devices
-      @devices ||= arguments.each_value.with_object([]) do |value, found|
-        found << value if value.is_a?(Robot::Device) && !found.include?(value)
-      end.freeze
+      @devices ||= begin
+        found = []
+        arguments.each_value { |value| found << value if value.is_a?(Robot::Device) && !found.include?(value) }
+        found.freeze
+      end
     end
 
     # The device this task drives, when it drives only one.

@@ -90,7 +90,7 @@ module Syskit
       # DSL attributes by name, sorted.
       def self.plain_attributes(attributes)
         plain = {}
-        attributes.keys.sort!.each { |k| plain[k.to_s] = attributes[k] }
+        attributes.keys.sort!.each { |k| plain[k.name] = attributes[k] }
         freeze_plain(plain)
       end
 

@@ -45,7 +45,9 @@ module Syskit
       end
 
       def to_plain(value)
-        fields.to_h { |fname, ftype| [fname, ftype.to_plain(value[fname])] }
+        plain = {}
+        fields.each { |fname, ftype| plain[fname] = ftype.to_plain(value[fname]) }
+        plain
       end
 
       private

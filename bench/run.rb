@@ -22,13 +22,18 @@ module Syskit
       SIZES = (ENV['SYSKIT_BENCH_SIZES'] || '100,1000,10000').split(',').map { |s| Integer(s) }
       PHASES = %w[drivers buses deploy order configure connect plan].freeze
       RENDERERS = { 'json' => Render::JSON, 'text' => Render::Text, 'dot' => Render::Dot }.freeze
-      RUNS = Integer(ENV.fetch('SYSKIT_BENCH_RUNS', '3'))
+      # Each size runs generation and rendering at least RUNS times and for
+      # at least SECONDS: small robots get many runs, so their best is not a
+      # moment of a noisy machine.
+      RUNS = Integer(ENV.fetch('SYSKIT_BENCH_RUNS', '5'))
+      SECONDS = Float(ENV.fetch('SYSKIT_BENCH_SECONDS', '2'))
       BIN = File.expand_path('../bin/syskit', __dir__)
 
       module_function
 
       def run(out = $stdout)
-        out.puts "Network generation on #{RUBY_DESCRIPTION} (best of #{RUNS} runs)"
+        out.puts "Network generation on #{RUBY_DESCRIPTION} " \
+                 "(best of at least #{RUNS} runs and #{SECONDS} s per size)"
         rows = SIZES.map { |n| measure_size(n) }
         print_table(out, rows)
         print_exponents(out, rows)
@@ -61,25 +66,37 @@ module Syskit
         best.merge('devices' => devices, 'load' => load_time, 'load_objects' => load_objects, 'rss_mb' => peak_rss_mb)
       end
 
-      # Generation and rendering run RUNS times; each figure is the best
-      # run, the usual way to keep other processes' noise out.
+      # Each figure is the best of the runs, the usual way to keep other
+      # processes' noise out.
       def best_run(app, profile)
-        runs = Array.new(RUNS) do
-          result = nil
-          time, objects = measure { result = Network::Generator.plan_profile(app, profile) }
-          run = { 'generate' => time, 'objects' => objects }.merge(result.timings.slice(*PHASES))
-          RENDERERS.each { |name, renderer| run[name], = measure { renderer.render(result.plan) } }
-          run.merge('tasks' => result.plan.tasks.size)
+        runs = []
+        started = now
+        runs << one_run(app, profile) while runs.size < RUNS || now - started < SECONDS
+        runs.first.keys.to_h { |k| [k, runs.map { |r| r[k] }.min] }.merge('runs' => runs.size)
+      end
+
+      def one_run(app, profile)
+        result = nil
+        time, objects = measure { result = Network::Generator.plan_profile(app, profile) }
+        run = { 'generate' => time, 'objects' => objects }.merge(result.timings.slice(*PHASES))
+        # Rendering as `syskit plan` does it: written to an IO (here the
+        # null device, so the disk is not measured).
+        File.open(File::NULL, 'w') do |null|
+          RENDERERS.each { |name, renderer| run[name], = measure { renderer.write(result.plan, null) } }
         end
-        runs.first.keys.to_h { |k| [k, runs.map { |r| r[k] }.min] }
+        run.merge('tasks' => result.plan.tasks.size)
+      end
+
+      def now
+        Process.clock_gettime(Process::CLOCK_MONOTONIC)
       end
 
       def measure
         GC.start
         objects = GC.stat(:total_allocated_objects)
-        start = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+        start = now
         yield
-        [Process.clock_gettime(Process::CLOCK_MONOTONIC) - start, GC.stat(:total_allocated_objects) - objects]
+        [now - start, GC.stat(:total_allocated_objects) - objects]
       end
 
       def peak_rss_mb
@@ -88,14 +105,14 @@ module Syskit
 
       # The whole `syskit plan --format json` process, Ruby start-up included.
       def process_wall_time(app_dir)
-        start = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+        start = now
         ok = system(RbConfig.ruby, BIN, 'plan', '--app', app_dir, '--format', 'json', out: File::NULL)
         raise "syskit plan failed on #{app_dir}" unless ok
 
-        Process.clock_gettime(Process::CLOCK_MONOTONIC) - start
+        now - start
       end
 
-      COLUMNS = [['devices', 'devices', '%d'], ['tasks', 'tasks', '%d'], ['load', 'load s', '%.3f']] +
+      COLUMNS = [['devices', 'devices', '%d'], ['tasks', 'tasks', '%d'], %w[runs runs %d], ['load', 'load s', '%.3f']] +
                 PHASES.map { |p| [p, p, '%.4f'] } +
                 [['generate', 'generate s', '%.3f'], %w[objects objects %d], ['json', 'json s', '%.3f'],
                  ['text', 'text s', '%.3f'], ['dot', 'dot s', '%.3f'], ['rss_mb', 'peak RSS MB', '%.0f'],

@@ -45,7 +45,7 @@ module Syskit
       with_app(robots: [options[:robot]]) do |app|
         profile = find_profile(app, profile_name)
         result = Network::Generator.plan_profile(app, profile, actions: actions, robot: options[:robot])
-        $stdout.write(RENDERERS.fetch(options[:format]).render(result.plan))
+        RENDERERS.fetch(options[:format]).write(result.plan, $stdout)
       end
     end
 

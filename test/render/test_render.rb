@@ -32,6 +32,53 @@ module Syskit
       assert_equal({ 'step' => 'configure', 'task' => 'aft_camera' }, doc['order'].first)
     end
 
+    # Lists are written by the json library a slice at a time; the document
+    # is still the one it makes of the whole plan.
+    def test_json_is_the_pretty_json_of_the_plan
+      [example_plan, long_plan, long_plan(profile: nil, steps: 0)].each do |plan|
+        assert_equal "#{JSON.pretty_generate(plan.to_h)}\n", Render::JSON.render(plan)
+      end
+    end
+
+    # Renderers hand their output to the IO a chunk at a time (a 10,000
+    # device plan is 16 MB of JSON), and write the bytes render returns.
+    def test_renderers_write_in_chunks
+      plan = long_plan(steps: 20_000)
+      [Render::JSON, Render::Text, Render::Dot].each do |renderer|
+        io = ChunkRecorder.new
+        assert_same io, renderer.write(plan, io)
+        assert_operator io.chunks.size, :>, 2, renderer
+        assert_operator io.chunks.map(&:bytesize).max, :<, 2 * Render::Output::CHUNK, renderer
+        assert_equal renderer.render(plan), io.chunks.join, renderer
+      end
+    end
+
+    # Records what is written, copying it: renderers reuse their buffer.
+    class ChunkRecorder
+      attr_reader :chunks
+
+      def initialize
+        @chunks = []
+      end
+
+      def write(data)
+        @chunks << data.dup
+        data.bytesize
+      end
+    end
+
+    # A plan whose order has +steps+ steps (more than a JSON slice).
+    def long_plan(profile: 'P', steps: 600)
+      order = Array.new(steps) { |i| Network::Plan::Step.new(i.even? ? 'configure' : 'start', "task#{i / 2}") }
+      connections = Array.new(steps / 2) do |i|
+        Network::Plan::Connection.new(Network::Plan::Endpoint.new("bus#{i % 3}", "dev#{i}"),
+                                      Network::Plan::Endpoint.new("dev#{i}", 'can_in'), '/canbus/Message',
+                                      { 'type' => 'buffer', 'size' => 20 })
+      end
+      Network::Plan.new(profile: profile, robot: 'default', tasks: [], devices: [], connections: connections,
+                        order: order)
+    end
+
     def test_generating_twice_gives_byte_identical_json
       first, = run_cli('plan', '--app', EXAMPLE, '--format', 'json')
       second, = run_cli('plan', '--app', EXAMPLE, '--format', 'json')
@@ -61,7 +108,7 @@ module Syskit
     # Padding comes from a table of widths up to 79; longer names still line up.
     def test_text_aligns_connections_of_any_width
       long = 'x' * 100
-      connections = [['a', 'out', 'b', 'in'], [long, 'out', 'b', 'in']].map do |from, from_port, to, to_port|
+      connections = [%w[a out b in], [long, 'out', 'b', 'in']].map do |from, from_port, to, to_port|
         Network::Plan::Connection.new(Network::Plan::Endpoint.new(from, from_port),
                                       Network::Plan::Endpoint.new(to, to_port), '/int', { 'type' => 'data' })
       end

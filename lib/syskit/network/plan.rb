@@ -143,16 +143,28 @@ module Syskit
         connections.select { |c| c.to.task == task && (port.nil? || c.to.port == port) }
       end
 
+      # The parts of the plan that are lists of entries, in document order
+      # (after 'profile' and 'robot').
+      LISTS = %w[tasks devices connections order].freeze
+
       # The plan as plain data, the JSON document's content.
       def to_h
         port_hashes = {}.compare_by_identity # port entries are shared by tasks of a model
-        {
-          'profile' => profile, 'robot' => robot,
-          'tasks' => tasks.map { |t| task_hash(t, port_hashes) },
-          'devices' => devices.map { |d| device_hash(d) },
-          'connections' => connections.map { |c| connection_hash(c) },
-          'order' => order.map { |s| { 'step' => s.step, 'task' => s.task } }
-        }
+        LISTS.each_with_object({ 'profile' => profile, 'robot' => robot }) do |list, plain|
+          plain[list] = plain_entries(list, public_send(list), port_hashes)
+        end
+      end
+
+      # +entries+ of list +list+ (one of LISTS) as plain data: hashes with
+      # string keys, as in #to_h. +port_hashes+ keeps one hash per port entry.
+      def plain_entries(list, entries, port_hashes = {}.compare_by_identity)
+        case list
+        when 'tasks' then entries.map { |t| task_hash(t, port_hashes) }
+        when 'devices' then entries.map { |d| device_hash(d) }
+        when 'connections' then entries.map { |c| connection_hash(c) }
+        when 'order' then entries.map { |s| { 'step' => s.step, 'task' => s.task } }
+        else raise ArgumentError, "#{list} is not one of #{LISTS.join(', ')}"
+        end
       end
 
       private

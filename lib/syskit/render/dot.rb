@@ -1,22 +1,28 @@
 # frozen_string_literal: true
 
+require 'syskit/render/output'
+
 module Syskit
   module Render
     # The plan as a Graphviz graph: a box per task, grouped by deployment,
-    # an edge per connection labelled with its ports and policy. Written
-    # into one string, as Text is.
+    # an edge per connection labelled with its ports and policy. Written as
+    # Text is, a chunk at a time (see Output).
     module Dot
+      extend Output
+
       module_function
 
-      def render(plan)
+      # Writes the graph to +io+; returns +io+.
+      def write(plan, io)
         out = quote(plan.profile.to_s, +'digraph ') << " {\n"
         out << "  rankdir=LR;\n  node [shape=box, fontname=\"Helvetica\"];\n"
         out << "  edge [fontname=\"Helvetica\", fontsize=10];\n"
         plan.tasks.group_by(&:deployment).sort_by(&:first).each_with_index do |(deployment, tasks), i|
-          cluster(deployment, tasks, i, out)
+          Output.flush(cluster(deployment, tasks, i, out), io)
         end
-        plan.connections.each { |c| edge(c, out) }
-        out << "}\n"
+        plan.connections.each { |c| Output.flush(edge(c, out), io) }
+        io.write(out << "}\n")
+        io
       end
 
       # Graphviz draws the tasks of one deployment (one process) together.

@@ -1,16 +1,64 @@
 # frozen_string_literal: true
 
+require 'syskit/render/output'
+
 module Syskit
   module Render
-    # The plan as a JSON document, for programs. Same plan, same bytes.
+    # The plan as a JSON document, for programs: the document
+    # JSON.pretty_generate makes of Plan#to_h. Same plan, same bytes.
+    #
+    # The json library writes the lists (tasks, devices, connections,
+    # order) SLICE entries at a time and the slices go to the IO as they
+    # are made (see Output), so neither the whole document nor the plain
+    # data of the whole plan is ever held in memory.
     module JSON
+      extend Output
+
+      # Entries written by one call to the json library: enough for the
+      # library to do the work, few enough to keep memory flat.
+      SLICE = 256
+      # A list at the document's second level, as the json library writes
+      # it: "[\n" + entries joined by ",\n" + "\n  ]".
+      OPEN = "[\n"
+      CLOSE = "\n  ]"
+
       module_function
 
-      # json is required here, not at start-up: it adds Kernel#j and #jj,
-      # which user files could then call by mistake.
-      def render(plan)
+      # Writes the document to +io+; returns +io+.
+      def write(plan, io)
+        # json is required here, not at start-up: it adds Kernel#j and #jj,
+        # which user files could then call by mistake.
         require 'json'
-        "#{::JSON.pretty_generate(plan.to_h)}\n"
+        state = ::JSON::State.new(indent: '  ', space: ' ', object_nl: "\n", array_nl: "\n")
+        state.depth = 1
+        out = +"{\n  \"profile\": " << state.generate(plan.profile) << ",\n  \"robot\": " << state.generate(plan.robot)
+        port_hashes = {}.compare_by_identity
+        Network::Plan::LISTS.each do |list|
+          out << ",\n  " << state.generate(list) << ': '
+          entries(plan.public_send(list), state, out, io) { |slice| plan.plain_entries(list, slice, port_hashes) }
+        end
+        io.write(out << "\n}\n")
+        io
+      end
+
+      # Writes a list whose entries the block makes plain, a slice at a time.
+      def entries(entries, state, out, io)
+        return out << state.generate([]) if entries.empty?
+
+        out << OPEN
+        entries.each_slice(SLICE).with_index do |slice, i|
+          out << ",\n" unless i.zero?
+          Output.flush(inner(state.generate(yield(slice)), out), io)
+        end
+        out << CLOSE
+      end
+
+      # Appends a slice's entries, without the list's brackets, and frees
+      # the slice's string now rather than at the next garbage collection.
+      def inner(slice, out)
+        out << slice.byteslice(OPEN.bytesize, slice.bytesize - OPEN.bytesize - CLOSE.bytesize)
+        slice.clear
+        out
       end
     end
   end

@@ -1,13 +1,18 @@
 # frozen_string_literal: true
 
+require 'syskit/render/output'
+
 module Syskit
   module Render
     # The plan for people reading a terminal.
     #
     # Everything is appended to one string, padding included, rather than
     # built from a formatted string per line: a plan of 10,000 devices has
-    # some 700,000 lines.
+    # some 700,000 lines. The string goes to the IO a chunk at a time (see
+    # Output).
     module Text
+      extend Output
+
       # The title column of a task's details, and its continuation lines.
       DETAIL_WIDTH = 16
       DEVICES = '    devices     '
@@ -19,26 +24,37 @@ module Syskit
 
       module_function
 
-      def render(plan)
-        out = +"Plan of #{plan.profile} on robot '#{plan.robot}'\n"
+      # Writes the plan to +io+; returns +io+.
+      def write(plan, io)
+        out = "Plan of #{plan.profile} on robot '#{plan.robot}'\n"
         out << "\nTasks (#{plan.tasks.size})\n"
-        plan.tasks.each { |task| task_text(task, out) }
+        plan.tasks.each { |task| Output.flush(task_text(task, out), io) }
         out << "\nConnections (#{plan.connections.size})\n"
-        connections_text(plan.connections, out)
+        connections_text(plan.connections, out, io)
         out << "\nOrder\n"
-        order_text(plan.order, out)
+        io.write(order_text(plan.order, out, io))
+        io
       end
 
+      # The task's line, its devices and dependencies, then its properties
+      # and ports.
       def task_text(task, out)
-        out << '  ' << task.name << '  ' << task.model << '  (deployment ' << task.deployment << ', conf '
-        list(task.conf, out) << ")\n"
+        out << '  ' << task.name << '  ' << task.model << '  (deployment ' << task.deployment
+        list(task.conf, out << ', conf ') << ")\n"
         list(task.devices, out << DEVICES) << "\n" unless task.devices.empty?
         list(task.depends_on, out << DEPENDS_ON) << "\n" unless task.depends_on.empty?
+        details_text(task, out)
+      end
+
+      def details_text(task, out)
         details(PROPERTIES, task.properties, out) { |(name, value)| plain(value, out << name << ': ') }
-        details(PORTS, task.ports, out) do |port|
-          out << port.name << '  ' << port.direction << ' ' << port.type
-          out << ' (dynamic)' if port.dynamic
-        end
+        details(PORTS, task.ports, out) { |port| port_text(port, out) }
+        out
+      end
+
+      def port_text(port, out)
+        out << port.name << '  ' << port.direction << ' ' << port.type
+        port.dynamic ? out << ' (dynamic)' : out
       end
 
       # One line per entry, the title on the first.
@@ -75,17 +91,26 @@ module Syskit
       end
 
       # Columns: from, to, type (padded to their widest entry), then policy.
-      def connections_text(connections, out)
-        from = connections.map { |c| c.from.task.size + c.from.port.size + 1 }.max.to_i
-        to = connections.map { |c| c.to.task.size + c.to.port.size + 1 }.max.to_i
-        type = connections.map { |c| c.type.size }.max.to_i
-        connections.each do |c|
-          out << '  ' << c.from.task << '.' << c.from.port
-          pad(from - c.from.task.size - c.from.port.size - 1, out) << ' -> ' << c.to.task << '.' << c.to.port
-          pad(to - c.to.task.size - c.to.port.size - 1, out) << '  ' << c.type
-          policy(c.policy, pad(type - c.type.size, out) << '  ') << "\n"
-        end
+      def connections_text(connections, out, io)
+        widths = [connections.map { |c| width(c.from) }.max.to_i, connections.map { |c| width(c.to) }.max.to_i,
+                  connections.map { |c| c.type.size }.max.to_i]
+        connections.each { |c| Output.flush(connection_text(c, widths, out), io) }
         out
+      end
+
+      def connection_text(conn, (from, to, type), out)
+        pad(from - width(conn.from), endpoint(conn.from, out << '  ')) << ' -> '
+        pad(to - width(conn.to), endpoint(conn.to, out)) << '  ' << conn.type
+        policy(conn.policy, pad(type - conn.type.size, out) << '  ') << "\n"
+      end
+
+      # task.port
+      def endpoint(endpoint, out)
+        out << endpoint.task << '.' << endpoint.port
+      end
+
+      def width(endpoint)
+        endpoint.task.size + endpoint.port.size + 1
       end
 
       def policy(policy, out)
@@ -93,12 +118,12 @@ module Syskit
       end
 
       # Numbered steps, numbers right-aligned.
-      def order_text(order, out)
+      def order_text(order, out, io)
         width = order.size.to_s.size
         order.each_with_index do |step, i|
           number = (i + 1).to_s
           pad(width - number.size, out << '  ') << number << '. ' << step.step
-          pad(STEP_WIDTH - step.step.size, out) << ' ' << step.task << "\n"
+          Output.flush(pad(STEP_WIDTH - step.step.size, out) << ' ' << step.task << "\n", io)
         end
         out
       end
@@ -108,7 +133,7 @@ module Syskit
       private_constant :SPACES
 
       def pad(width, out)
-        width.positive? ? out << (SPACES[width] || ' ' * width) : out
+        width.positive? ? out << (SPACES[width] || (' ' * width)) : out
       end
     end
   end

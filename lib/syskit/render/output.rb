@@ -1,0 +1,35 @@
+# frozen_string_literal: true
+
+require 'stringio'
+
+module Syskit
+  module Render
+    # How renderers write: into a String, handed to the IO a chunk at a
+    # time. The plan of 10,000 devices is 16 MB of JSON; building it as one
+    # string makes Ruby's garbage collector run over the whole heap each
+    # time the string outgrows the collector's malloc limit, a cost that
+    # grows with both the output and the heap.
+    #
+    # A renderer defines +write(plan, io)+ and gets +render(plan)+ (the same
+    # bytes as a String) by extending this module.
+    module Output
+      CHUNK = 1 << 16
+
+      # Writes +out+ to +io+ and empties it once it holds a chunk; returns
+      # +out+.
+      def self.flush(out, io)
+        return out if out.bytesize < CHUNK
+
+        io.write(out)
+        out.clear
+      end
+
+      # The plan as a String.
+      def render(plan)
+        io = StringIO.new(+'')
+        write(plan, io)
+        io.string
+      end
+    end
+  end
+end

@@ -130,6 +130,16 @@ module Syskit
       assert_same MyApp::Profiles::Base.a_dev, MyApp::Profiles::Base.a_dev
     end
 
+    # The benchmark empties the CPU caches there, outside of the timings.
+    def test_before_step_is_called_before_each_step_and_the_plan
+      app = generate(on_can0).context.app
+      calls = 0
+      result = Network::Generator.plan_profile(app, MyApp::Profiles::Base.syskit_profile,
+                                               before_step: -> { calls += 1 })
+      assert_equal %w[drivers buses deploy order configure connect plan], result.timings.keys
+      assert_equal 7, calls
+    end
+
     def test_a_subset_of_actions
       plan = generate("#{on_can0}device(Devices::IMU, as: 'imu')\n", actions: ['a_dev']).plan
       assert_equal %w[a can0], plan.tasks.map(&:name)

@@ -32,15 +32,16 @@ module Syskit
       end
 
       # The plan of +profile+ on +robot+: every device, or the given actions
-      # ('gps_dev', 'gps').
-      def self.plan_profile(app, profile, actions: [], robot: 'default')
+      # ('gps_dev', 'gps'). +before_step+: see #generate.
+      def self.plan_profile(app, profile, actions: [], robot: 'default', before_step: nil)
         requirements =
           if actions.empty?
             profile.all_requirements
           else
             actions.map { |a| profile.find_action(a) || raise(unknown_action(profile, a)) }
           end
-        new(app, requirements, profile: profile, robot_config: app.robot_config(robot)).generate
+        new(app, requirements, profile: profile, robot_config: app.robot_config(robot))
+          .generate(before_step: before_step)
       end
 
       def self.unknown_action(profile, name)
@@ -55,15 +56,19 @@ module Syskit
       end
 
       # Runs the steps (all of them, or up to and including +through+) and
-      # builds the plan when all ran.
-      def generate(through: STEPS.last)
+      # builds the plan when all ran. +before_step+, when given, is called
+      # before each step and before the plan is built, outside of the
+      # timings (the benchmark empties the CPU caches there).
+      def generate(through: STEPS.last, before_step: nil)
         timings = {}
         STEPS[0..STEPS.index(through)].each do |step|
+          before_step&.call
           timings[Naming.underscore(step.name.split('::').last)] = measure { step.new(@context).run }
           @context.raise_errors
         end
         return Result.new(nil, @context, timings) unless through == STEPS.last
 
+        before_step&.call
         plan = nil
         timings['plan'] = measure { plan = Plan.build(@context) }
         Result.new(plan, @context, timings)

@@ -3,30 +3,28 @@
 # rake bench: load, generation (each phase) and rendering times, allocated
 # objects and peak RSS on synthetic robots of 100, 1,000 and 10,000 devices,
 # the wall time of the whole `syskit plan --format json` process, and the
-# scaling exponent between 1,000 and 10,000 devices. Every figure printed is
-# measured on this run.
+# scaling exponent between 1,000 and 10,000 devices, as measured and with
+# the CPU caches emptied before each phase. Every figure printed is measured
+# on this run.
 
 require 'json'
 require 'rbconfig'
 require 'tmpdir'
-require 'syskit'
-require 'syskit/render/json'
-require 'syskit/render/text'
-require 'syskit/render/dot'
 require_relative 'synthetic_app'
+require_relative 'worker'
 
 module Syskit
   module Bench
     # Runs the generation benchmark and prints its table.
     module Generation
       SIZES = (ENV['SYSKIT_BENCH_SIZES'] || '100,1000,10000').split(',').map { |s| Integer(s) }
-      PHASES = %w[drivers buses deploy order configure connect plan].freeze
-      RENDERERS = { 'json' => Render::JSON, 'text' => Render::Text, 'dot' => Render::Dot }.freeze
-      # Each size runs generation and rendering at least RUNS times and for
-      # at least SECONDS: small robots get many runs, so their best is not a
-      # moment of a noisy machine.
-      RUNS = Integer(ENV.fetch('SYSKIT_BENCH_RUNS', '5'))
-      SECONDS = Float(ENV.fetch('SYSKIT_BENCH_SECONDS', '2'))
+      PHASES = Worker::PHASES
+      RENDERERS = Worker::RENDERERS.keys
+      # Each size's worker is asked for ROUNDS rounds of runs, in turn, and
+      # runs for at least ROUND_SECONDS each time: small robots get many
+      # runs, large ones at least ROUNDS. Every figure is the best run.
+      ROUNDS = Integer(ENV.fetch('SYSKIT_BENCH_ROUNDS', '5'))
+      ROUND_SECONDS = Float(ENV.fetch('SYSKIT_BENCH_ROUND_SECONDS', '0.3'))
       # The CPU caches are emptied by reading a buffer larger than the
       # last-level cache (32 MB on the machine of the README's figures).
       EVICTION_MB = Integer(ENV.fetch('SYSKIT_BENCH_EVICTION_MB', '128'))
@@ -39,123 +37,75 @@ module Syskit
 
       def run(out = $stdout)
         out.puts "Network generation on #{RUBY_DESCRIPTION} " \
-                 "(best of at least #{RUNS} runs and #{SECONDS} s per size)"
-        rows = SIZES.map { |n| measure_size(n) }
+                 "(best of #{ROUNDS} interleaved rounds of at least #{ROUND_SECONDS} s per size)"
+        rows = Dir.mktmpdir('syskit-bench') do |dir|
+          apps = SIZES.to_h { |n| [n, SyntheticApp.write(File.join(dir, "bench#{n}"), n)] }
+          measure_sizes(apps)
+        end
         print_table(out, rows)
         print_exponents(out, rows)
         rows
       end
 
-      # Measures one size in a child process, so its peak RSS is its own.
-      def measure_size(devices)
-        Dir.mktmpdir('syskit-bench') do |dir|
-          app_dir = SyntheticApp.write(File.join(dir, 'bench'), devices)
-          row = in_child { in_process(app_dir, devices) }
-          loads = Array.new(PROCESS_RUNS - 1) { in_child { load_app(App.new(app_dir)).first } }
-          row.merge('load' => [row['load'], *loads].min,
-                    'process' => Array.new(PROCESS_RUNS) { process_wall_time(app_dir) }.min)
+      # One worker per size (its own process: its peak RSS is its own),
+      # asked in turn: warm rounds, peak RSS, cold rounds; then loading and
+      # the plan process, in turn again.
+      def measure_sizes(apps)
+        workers = apps.transform_values { |app_dir| Worker.new(app_dir, eviction_mb: EVICTION_MB) }
+        rows = workers.to_h { |n, worker| [n, worker.ask('loaded').merge('devices' => n)] }
+        best_of(rounds(workers, cold: false)).each { |n, best| rows[n].merge!(best) }
+        workers.each { |n, worker| rows[n]['rss_mb'] = worker.ask('rss') }
+        best_of(rounds(workers, cold: true)).each { |n, best| rows[n].merge!(best.transform_keys { |k| "cold #{k}" }) }
+        workers.each_value(&:stop)
+        processes(apps, rows)
+        rows.values
+      end
+
+      # The runs of every size, by size.
+      def rounds(workers, cold:)
+        runs = workers.transform_values { [] }
+        ROUNDS.times { workers.each { |n, worker| runs[n].concat(worker.ask('runs', ROUND_SECONDS, cold)) } }
+        runs
+      end
+
+      def best_of(runs_by_size)
+        runs_by_size.transform_values do |runs|
+          runs.first.keys.to_h { |k| [k, runs.map { |r| r[k] }.min] }.merge('runs' => runs.size)
         end
       end
 
-      # The block's value, computed in a child process.
-      def in_child
-        reader, writer = IO.pipe
-        pid = fork do
-          reader.close
-          writer.write(JSON.generate(yield))
-          writer.close
-          exit!(0)
-        end
-        writer.close
-        output = reader.read
-        reader.close
-        _, status = Process.wait2(pid)
-        raise "a benchmark process failed (#{status})" unless status.success?
-
-        JSON.parse(output)
-      end
-
-      def load_app(app)
-        GC.start
-        measure { app.load!(robots: ['default']) }
-      end
-
-      def in_process(app_dir, devices)
-        app = App.new(app_dir)
-        load_time, load_objects = load_app(app)
-        profile = app.profiles.values.first
-        row = best_run(app, profile)
-        # Peak RSS before the cold runs allocate their eviction buffer.
-        row.merge!('devices' => devices, 'load' => load_time, 'load_objects' => load_objects, 'rss_mb' => peak_rss_mb)
-        row.merge(cold_run(app, profile).transform_keys { |k| "cold #{k}" })
-      end
-
-      # Each figure is the best of the runs, the usual way to keep other
-      # processes' noise out.
-      def best_run(app, profile)
-        runs = []
-        started = now
-        runs << one_run(app, profile) while runs.size < RUNS || now - started < SECONDS
-        best(runs).merge('runs' => runs.size)
-      end
-
-      def best(runs)
-        runs.first.keys.to_h { |k| [k, runs.map { |r| r[k] }.min] }
-      end
-
-      def one_run(app, profile, empty_caches = nil)
-        result = nil
-        time, objects = measure { result = Network::Generator.plan_profile(app, profile, before_step: empty_caches) }
-        run = { 'generate' => time, 'objects' => objects }.merge(result.timings.slice(*PHASES))
-        # Rendering as `syskit plan` does it: written to an IO (here the
-        # null device, so the disk is not measured).
-        File.open(File::NULL, 'w') do |null|
-          RENDERERS.each do |name, renderer|
-            run[name], = measure(empty_caches) { renderer.write(result.plan, null) }
+      # Loading in fresh processes (the worker's own load is one more) and
+      # the whole `syskit plan --format json` process.
+      def processes(apps, rows)
+        PROCESS_RUNS.times do |i|
+          apps.each do |n, app_dir|
+            rows[n]['load'] = [rows[n]['load'], load_time(app_dir)].min unless i.zero?
+            rows[n]['process'] = [rows[n]['process'], process_wall_time(app_dir)].compact.min
           end
         end
-        run.merge('tasks' => result.plan.tasks.size)
       end
 
-      # The runs again with the CPU caches emptied before each phase: 1,000
-      # devices then start from memory as 10,000 do, and the exponent
-      # between them shows how the work grows rather than what fits in the
-      # caches. (A warm 1,000-device network fits in them; 10,000 does not.)
-      def cold_run(app, profile)
-        buffer = "\1" * (EVICTION_MB << 20)
-        empty_caches = -> { buffer.sum }
-        best(Array.new(RUNS) { one_run(app, profile, empty_caches) }).slice(*PHASES, *RENDERERS.keys)
-      end
-
-      def now
-        Process.clock_gettime(Process::CLOCK_MONOTONIC)
-      end
-
-      def measure(before = nil)
-        GC.start
-        before&.call
-        objects = GC.stat(:total_allocated_objects)
-        start = now
-        yield
-        [now - start, GC.stat(:total_allocated_objects) - objects]
-      end
-
-      def peak_rss_mb
-        File.read('/proc/self/status')[/^VmHWM:\s+(\d+) kB/, 1].to_i / 1024.0
+      def load_time(app_dir)
+        worker = Worker.new(app_dir, eviction_mb: EVICTION_MB)
+        worker.ask('loaded')['load']
+      ensure
+        worker&.stop
       end
 
       # The whole `syskit plan --format json` process, Ruby start-up included.
       def process_wall_time(app_dir)
-        start = now
+        start = Process.clock_gettime(Process::CLOCK_MONOTONIC)
         ok = system(RbConfig.ruby, BIN, 'plan', '--app', app_dir, '--format', 'json', out: File::NULL)
         raise "syskit plan failed on #{app_dir}" unless ok
 
-        now - start
+        Process.clock_gettime(Process::CLOCK_MONOTONIC) - start
       end
 
       COLUMNS = [['devices', 'devices', '%d'], ['tasks', 'tasks', '%d'], %w[runs runs %d], ['load', 'load s', '%.3f']] +
                 PHASES.map { |p| [p, p, '%.4f'] } +
-                [['generate', 'generate s', '%.3f'], %w[objects objects %d], ['json', 'json s', '%.3f'],
+                [['generate', 'generate s', '%.3f'], ['gc', 'of it GC s', '%.3f'], %w[objects objects %d],
+                 ['filters', 'filters s', '%.4f'],
+                 ['json', 'json s', '%.3f'],
                  ['text', 'text s', '%.3f'], ['dot', 'dot s', '%.3f'], ['rss_mb', 'peak RSS MB', '%.0f'],
                  ['process', 'plan process s', '%.2f']].freeze
 
@@ -174,9 +124,9 @@ module Syskit
           next if small['devices'] < 1000
 
           sizes = "#{delimited(small['devices'])} -> #{delimited(large['devices'])} devices"
-          warm = %w[load] + PHASES + %w[generate objects] + RENDERERS.keys
+          warm = %w[load] + PHASES + ['generate', 'generate without GC', 'objects', 'filters'] + RENDERERS
           out.puts "scaling exponent #{sizes}: #{exponents(small, large, warm)}"
-          cold = (PHASES + RENDERERS.keys).map { |k| "cold #{k}" }
+          cold = (PHASES + %w[filters] + RENDERERS).map { |k| "cold #{k}" }
           out.puts "  with the CPU caches emptied before each phase: #{exponents(small, large, cold)}"
         end
       end

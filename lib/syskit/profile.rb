@@ -57,16 +57,22 @@ module Syskit
       robot.device_names.map { |n| "#{n}_dev" }
     end
 
-    # The requirement of action +name+ ('gps_dev' or 'gps'), the same object
-    # every time.
+    # The requirement of action +name+ ('gps_dev', or the device name 'gps'),
+    # the same object every time. The action of a device named 'gps_dev' is
+    # 'gps_dev_dev'.
     def find_action(name)
-      device = robot.find_device(name.to_s.delete_suffix('_dev'))
-      (@requirements ||= {})[device] ||= Network::Requirement.new(device, self) if device
+      name = name.to_s
+      device = (robot.find_device(name.delete_suffix('_dev')) if name.end_with?('_dev')) || robot.find_device(name)
+      requirement_for(device) if device
     end
 
     # The requirements of every device, for plans of the whole profile.
     def all_requirements
-      robot.devices.map { |d| find_action(d.name) }
+      robot.devices.map { |d| requirement_for(d) }
+    end
+
+    def requirement_for(device)
+      (@requirements ||= {}.compare_by_identity)[device] ||= Network::Requirement.new(device, self)
     end
 
     # Methods of profile modules.

@@ -140,6 +140,17 @@ module Syskit
       assert_equal 7, calls
     end
 
+    # The action of a device named 'a_dev' is 'a_dev_dev'; its name works too.
+    def test_device_names_ending_in_dev
+      robot = on_can0.sub("as: 'a'", "as: 'a_dev'")
+      files = { 'config/robots/default.rb' => FILES['config/robots/default.rb'].sub("=> 'a'", "=> 'a_dev'") }
+      plan = generate(robot.sub("prefer_deployed_tasks('a')", "prefer_deployed_tasks('a_dev')"), files).plan
+      assert_equal %w[a_dev b can0], plan.tasks.map(&:name)
+      profile = MyApp::Profiles::Base.syskit_profile
+      assert_same profile.find_action('a_dev_dev'), profile.find_action('a_dev')
+      assert_equal 'a_dev', MyApp::Profiles::Base.a_dev_dev.device.name
+    end
+
     def test_a_subset_of_actions
       plan = generate("#{on_can0}device(Devices::IMU, as: 'imu')\n", actions: ['a_dev']).plan
       assert_equal %w[a can0], plan.tasks.map(&:name)

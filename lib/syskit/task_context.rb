@@ -25,7 +25,7 @@ module Syskit
       @created_ports = {}
       @children = []
       @child_tasks = []
-      @conf = ['default']
+      @conf = Robot::Device::DEFAULT_CONF
     end
 
     def model

@@ -47,7 +47,8 @@ module Syskit
 
       # The dynamic port pattern +name+ of +type+ would be created from.
       def dynamic_port_for(direction, name, type)
-        all_dynamic_ports.find { |p| p.direction == direction && p.match?(name, type) }
+        all_dynamic_ports.each { |p| return p if p.direction == direction && p.match?(name, type) }
+        nil
       end
 
       # Called once the task_context block is evaluated: the inherited views

@@ -9,18 +9,17 @@ module Syskit
     #
     # The json library writes the lists (tasks, devices, connections,
     # order) SLICE entries at a time and the slices go to the IO as they
-    # are made (see Output), so neither the whole document nor the plain
-    # data of the whole plan is ever held in memory.
+    # are made (see Output), so the document is never held in memory.
     module JSON
       extend Output
 
       # Entries written by one call to the json library: enough for the
       # library to do the work, few enough to keep memory flat.
       SLICE = 256
-      # A list at the document's second level, as the json library writes
-      # it: "[\n" + entries joined by ",\n" + "\n  ]".
-      OPEN = "[\n"
+      # The end of a list at the document's second level, as the json
+      # library writes it ("[\n" + entries joined by ",\n" + "\n  ]").
       CLOSE = "\n  ]"
+      COMMA = ','.ord
 
       module_function
 
@@ -45,18 +44,22 @@ module Syskit
       def entries(entries, state, out, io)
         return out << state.generate([]) if entries.empty?
 
-        out << OPEN
         entries.each_slice(SLICE).with_index do |slice, i|
-          out << ",\n" unless i.zero?
-          Output.flush(inner(state.generate(yield(slice)), out), io)
+          Output.flush(continue_list(state.generate(yield(slice)), i.zero?, out), io)
         end
         out << CLOSE
       end
 
-      # Appends a slice's entries, without the list's brackets, and frees
-      # the slice's string now rather than at the next garbage collection.
-      def inner(slice, out)
-        out << slice.byteslice(OPEN.bytesize, slice.bytesize - OPEN.bytesize - CLOSE.bytesize)
+      # The json library writes a slice as a list of its own. Its end is
+      # dropped (the next slice, or the end of the list, follows), and the
+      # "[" of every slice but the first becomes the "," after the previous
+      # one. Both are done in place: a substring would share the slice's
+      # memory, which would then wait for the garbage collector instead of
+      # being freed by #clear.
+      def continue_list(slice, first, out)
+        slice.setbyte(0, COMMA) unless first
+        slice.delete_suffix!(CLOSE)
+        out << slice
         slice.clear
         out
       end

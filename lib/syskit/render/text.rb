@@ -21,6 +21,9 @@ module Syskit
       PORTS = '    ports       '
       CONTINUED = (' ' * DETAIL_WIDTH).freeze
       STEP_WIDTH = 9
+      # Padding up to this width is made once.
+      SPACES = Array.new(80) { |width| (' ' * width).freeze }.freeze
+      private_constant :SPACES
 
       module_function
 
@@ -127,10 +130,6 @@ module Syskit
         end
         out
       end
-
-      # Padding up to this width is made once.
-      SPACES = Array.new(80) { |width| (' ' * width).freeze }.freeze
-      private_constant :SPACES
 
       def pad(width, out)
         width.positive? ? out << (SPACES[width] || (' ' * width)) : out

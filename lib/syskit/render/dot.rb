@@ -42,10 +42,7 @@ module Syskit
         quote(connection.to.task, out) << ' [label="'
         escape(connection.from.port, out) << ' -> '
         escape(connection.to.port, out) << NEWLINE
-        policy = connection.policy
-        escape(policy['type'], out)
-        out << ' ' << policy['size'].to_s if policy['type'] == 'buffer'
-        out << "\"];\n"
+        Output.policy(connection.policy, out) << "\"];\n"
       end
 
       SPECIAL = /[\\"\n]/

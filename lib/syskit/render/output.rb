@@ -24,6 +24,12 @@ module Syskit
         out.clear
       end
 
+      # A connection's policy as people read it: "buffer 20" or "data".
+      def self.policy(policy, out)
+        out << policy['type']
+        policy['type'] == 'buffer' ? out << ' ' << policy['size'].to_s : out
+      end
+
       # The plan as a String.
       def render(plan)
         io = StringIO.new(+'')

@@ -104,7 +104,7 @@ module Syskit
       def connection_text(conn, (from, to, type), out)
         pad(from - width(conn.from), endpoint(conn.from, out << '  ')) << ' -> '
         pad(to - width(conn.to), endpoint(conn.to, out)) << '  ' << conn.type
-        policy(conn.policy, pad(type - conn.type.size, out) << '  ') << "\n"
+        Output.policy(conn.policy, pad(type - conn.type.size, out) << '  ') << "\n"
       end
 
       # task.port
@@ -114,10 +114,6 @@ module Syskit
 
       def width(endpoint)
         endpoint.task.size + endpoint.port.size + 1
-      end
-
-      def policy(policy, out)
-        policy['type'] == 'buffer' ? out << 'buffer ' << policy['size'].to_s : out << policy['type']
       end
 
       # Numbered steps, numbers right-aligned.

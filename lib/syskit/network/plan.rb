@@ -7,10 +7,9 @@ module Syskit
     # from a generated network; renderers only read it.
     class Plan
       # A task of the plan, named after its deployed task.
-      Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on,
-                        keyword_init: true)
+      Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on)
       # A port of a task; dynamic ports are created at configure time.
-      Port = Struct.new(:name, :direction, :type, :dynamic, keyword_init: true)
+      Port = Struct.new(:name, :direction, :type, :dynamic)
       # One end of a connection.
       Endpoint = Struct.new(:task, :port)
       # A connection and its policy ({'type' => 'buffer', 'size' => n} or {'type' => 'data'}).
@@ -20,19 +19,22 @@ module Syskit
       # A device of the network: its driver task, its bus and what it
       # declared (attributes such as can_id, period, burst).
       Device = Struct.new(:name, :model, :task, :bus, :bus_to_client, :client_to_bus, :attributes,
-                          :period, :burst, :sample_size, :declared_at, keyword_init: true)
+                          :period, :burst, :sample_size, :declared_at)
 
       attr_reader :profile, :robot, :tasks, :devices, :connections, :order
 
       NO_ATTRIBUTES = {}.freeze
+      NO_DEPENDENCIES = [].freeze
 
       def self.build(context)
-        # The plan entries of a model's static ports are shared by its tasks.
+        # The plan entries of a model's static ports are shared by its
+        # tasks; a file's path relative to the app is computed once.
         static_ports = {}
+        paths = {}
         new(
           profile: context.profile&.name, robot: context.robot_config&.name,
           tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports) },
-          devices: context.tasks.map { |t| device_entry(context.device_of(t), t) }.sort_by(&:name),
+          devices: context.tasks.map { |t| device_entry(context.device_of(t), t, paths) }.sort_by(&:name),
           connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
           order: context.order.map { |s| Step.new(s.step, s.task.name).freeze }
         )
@@ -41,12 +43,13 @@ module Syskit
       # Entries are frozen as they are built, so the plan is a frozen value
       # without walking it again.
       def self.task_entry(task, static_ports)
-        ports = task_ports(task, static_ports)
+        children = task.children
         Task.new(
-          name: task.name, model: task.model.name, deployment: task.deployed_task.deployment.name,
-          devices: task.devices.map(&:name).freeze, conf: task.conf.dup.freeze,
-          properties: freeze_plain(task.properties.to_plain), ports: ports,
-          depends_on: task.children.map(&:name).sort!.freeze
+          task.name, task.model.name, task.deployed_task.deployment.name,     # name, model, deployment
+          task.devices.map(&:name).freeze, task.conf,                         # devices, conf (frozen)
+          freeze_plain(task.properties.to_plain),                             # properties
+          task_ports(task, static_ports),                                     # ports
+          children.empty? ? NO_DEPENDENCIES : children.map(&:name).sort!.freeze # depends_on
         ).freeze
       end
 
@@ -60,23 +63,30 @@ module Syskit
         (ports + task.created_ports.each_value.map { |p| port_entry(p) }).sort_by!(&:name).freeze
       end
 
-      def self.device_entry(device, task)
+      def self.device_entry(device, task, paths = {})
         attributes = device.dsl_attributes
-        attributes = attributes.empty? ? NO_ATTRIBUTES : plain_attributes(attributes)
+        attached = device.attached?
         Device.new(
-          name: device.name, model: device.model.name, task: task.name, bus: device.bus&.name,
-          bus_to_client: device.attached? ? device.bus_to_client? : nil,
-          client_to_bus: device.attached? ? device.client_to_bus? : nil, attributes: attributes,
-          period: device.period, burst: device.burst, sample_size: device.sample_size,
-          declared_at: device.declared_at&.to_s
+          device.name, device.model.name, task.name, device.bus&.name,        # name, model, task, bus
+          attached ? device.bus_to_client? : nil,                             # bus_to_client
+          attached ? device.client_to_bus? : nil,                             # client_to_bus
+          attributes.empty? ? NO_ATTRIBUTES : plain_attributes(attributes),   # attributes
+          device.period, device.burst, device.sample_size,                    # period, burst, sample_size
+          declared_at(device.declared_at, paths)                              # declared_at
         ).freeze
+      end
+
+      # "path:line", the path relative to the app (computed once per file).
+      def self.declared_at(location, paths)
+        return unless location
+
+        "#{paths[location.path] ||= location.relative_path}:#{location.lineno}"
       end
 
       DIRECTIONS = { input: 'input', output: 'output' }.freeze
 
       def self.port_entry(port)
-        Port.new(name: port.name, direction: DIRECTIONS.fetch(port.direction), type: port.type.name,
-                 dynamic: port.dynamic?).freeze
+        Port.new(port.name, DIRECTIONS.fetch(port.direction), port.type.name, port.dynamic?).freeze
       end
 
       def self.connection_entry(conn)

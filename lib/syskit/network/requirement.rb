@@ -24,7 +24,7 @@ module Syskit
       end
 
       def with_conf(*names)
-        Requirement.new(device, profile, conf: names.flatten.map(&:to_s), deployment_hints: @deployment_hints)
+        Requirement.new(device, profile, conf: names.flatten.map(&:to_s).freeze, deployment_hints: @deployment_hints)
       end
 
       def prefer_deployed_tasks(*hints)

@@ -70,7 +70,7 @@ module Syskit
                                      location: Location.of_caller, hint: "write with_conf('default', 'forward')")
         end
 
-        @conf = names
+        @conf = names.freeze
         @conf_location = Location.of_caller
         self
       end

@@ -99,8 +99,8 @@ module Syskit
       end
 
       def plan_device(name, bus_to_client, attributes)
-        Network::Plan::Device.new(name: name, bus: 'can0', bus_to_client: bus_to_client, client_to_bus: true,
-                                  attributes: attributes)
+        Network::Plan::Device.with(name: name, bus: 'can0', bus_to_client: bus_to_client, client_to_bus: true,
+                                   attributes: attributes)
       end
 
       # 600 distinct keys: 70 % standard, 30 % extended, some unclaimed.

@@ -29,14 +29,6 @@ module Syskit
       app
     end
 
-    # A plan's device entry with only the given fields set (the others nil).
-    def plan_device(**fields)
-      unknown = fields.keys - Network::Plan::Device.members
-      raise ArgumentError, "Plan::Device has no #{unknown.join(', ')}" unless unknown.empty?
-
-      Network::Plan::Device.new(*Network::Plan::Device.members.map { |m| fields[m] })
-    end
-
     # Writes +files+ (relative path => content) into a new app directory.
     def write_app(files, name: 'test_app')
       dir = File.join(Dir.mktmpdir('syskit-test'), name)

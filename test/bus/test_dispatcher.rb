@@ -8,8 +8,8 @@ module Syskit
     # Which devices receive a frame.
     class TestDispatcher < Minitest::Test
       def dev(name, can_id = nil, bus_to_client: true)
-        plan_device(name: name, bus: 'can0', bus_to_client: bus_to_client, client_to_bus: true,
-                    attributes: can_id ? { 'can_id' => can_id } : {})
+        Network::Plan::Device.with(name: name, bus: 'can0', bus_to_client: bus_to_client, client_to_bus: true,
+                                   attributes: can_id ? { 'can_id' => can_id } : {})
       end
 
       def std(id)

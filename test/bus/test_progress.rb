@@ -36,8 +36,8 @@ module Syskit
       def test_a_long_replay_shows_the_bar_on_a_terminal
         path = File.join(Dir.mktmpdir('syskit-test').tap { |d| (@tmpdirs ||= []) << d }, 'big.log')
         File.write(path, Array.new(Replay::PROGRESS_EVERY + 10) { |i| format("(1.%06d) can0 123#00\n", i) }.join)
-        dev = plan_device(name: 'a', bus: 'can0', bus_to_client: true,
-                          attributes: { 'can_id' => [0x123, 0x7FF] })
+        dev = Network::Plan::Device.with(name: 'a', bus: 'can0', bus_to_client: true,
+                                         attributes: { 'can_id' => [0x123, 0x7FF] })
         out = Terminal.new
         report = Replay.new(Dispatcher.new('can0', [dev]), path, progress_out: out, progress_min_bytes: 0).run
         assert_equal Replay::PROGRESS_EVERY + 10, report.devices.first.frames

@@ -21,6 +21,21 @@ module Syskit
       Device = Struct.new(:name, :model, :task, :bus, :bus_to_client, :client_to_bus, :attributes,
                           :period, :burst, :sample_size, :declared_at)
 
+      # Entries are built by position, the fast way; tests and tools name
+      # the fields they need (the others are nil):
+      # +Plan::Device.with(name: 'gps', bus: 'can0')+.
+      module ByField
+        def with(**fields)
+          unknown = fields.keys - members
+          unless unknown.empty?
+            raise ArgumentError, "#{name} has no #{unknown.join(', ')}; its fields are #{members.join(', ')}"
+          end
+
+          new(*members.map { |m| fields[m] })
+        end
+      end
+      [Task, Port, Device].each { |entry| entry.extend(ByField) }
+
       attr_reader :profile, :robot, :tasks, :devices, :connections, :order
 
       NO_ATTRIBUTES = {}.freeze

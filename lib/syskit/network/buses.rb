@@ -7,8 +7,13 @@ module Syskit
     # Step 2: for every attached device in the network, its bus driver task
     # (one per bus, itself attached to its own bus if any) becomes a
     # dependency of the device's task, and the ports that link them are
-    # chosen (see BusPorts).
+    # chosen (see BusPorts). A bus attached through itself never gets here:
+    # the robot refuses it where it is declared.
     class Buses
+      # What a device's task knows of the bus it depends on (see
+      # TaskContext#each_child).
+      BUS_CHILD = { role: 'bus' }.freeze
+
       def initialize(context)
         @context = context
         @drivers = Drivers.new(context)
@@ -22,9 +27,8 @@ module Syskit
           next unless device.attached?
 
           begin
-            check_cycle(device)
             bus_task = bus_task_for(device.bus, queue)
-            task.add_child(bus_task, role: 'bus')
+            task.add_child(bus_task, BUS_CHILD)
             @context.bus_links << BusPorts.new(device, bus_task, task, @context.expected_ports[bus_task]).link
           rescue Syskit::Error => e
             @context.error(e)
@@ -42,21 +46,6 @@ module Syskit
         task = @drivers.instantiate(Requirement.new(bus, @context.profile))
         queue << task
         task
-      end
-
-      def check_cycle(device)
-        seen = [device]
-        bus = device.bus
-        while bus
-          if seen.include?(bus)
-            raise NetworkError.new("#{bus} is attached through itself: #{(seen + [bus]).map(&:name).join(' -> ')}",
-                                   location: bus.declared_at,
-                                   hint: 'a bus cannot be attached to itself, directly or not')
-          end
-
-          seen << bus
-          bus = bus.bus
-        end
       end
 
       # Per-device ports of one bus driver must not collide with each other

@@ -52,14 +52,23 @@ module Syskit
                                hint: 'the port should have been created at configure time')
       end
 
+      # Only the connections into a port written more than once are
+      # gathered, to report them.
       def check_multiplexing
-        by_sink = Hash.new { |h, task| h[task] = Hash.new { |ports, name| ports[name] = [] } }.compare_by_identity
-        @context.connections.each { |c| by_sink[c.to_task][c.to_port.name] << c }
-        by_sink.each_value.flat_map(&:values).each do |into|
-          next if into.size == 1 || into.first.to_port.multiplexes?
-
+        writers = writer_counts
+        shared = @context.connections.select do |c|
+          writers[c.to_task][c.to_port.name] > 1 && !c.to_port.multiplexes?
+        end
+        shared.group_by { |c| [c.to_task, c.to_port.name] }.each_value do |into|
           @context.error(multiplexing_error(into))
         end
+      end
+
+      # How many connections write to each input port, by task and port name.
+      def writer_counts
+        writers = Hash.new { |h, task| h[task] = Hash.new(0) }.compare_by_identity
+        @context.connections.each { |c| writers[c.to_task][c.to_port.name] += 1 }
+        writers
       end
 
       # +into+: the connections that write to one input port.

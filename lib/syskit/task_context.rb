@@ -13,7 +13,11 @@ module Syskit
   class TaskContext
     extend Models::TaskModel
 
-    attr_reader :arguments, :properties, :created_ports, :deployed_task
+    # Most tasks never create a port: they share this until they do.
+    NO_PORTS = {}.freeze
+    private_constant :NO_PORTS
+
+    attr_reader :arguments, :properties, :deployed_task
     attr_accessor :conf
     # The requirement (a profile's device action) the generator made this
     # task for.
@@ -22,7 +26,7 @@ module Syskit
     def initialize(arguments = {})
       @arguments = arguments
       @properties = model.properties_class.new
-      @created_ports = {}
+      @created_ports = NO_PORTS
       @children = []
       @child_tasks = []
       @conf = Robot::Device::DEFAULT_CONF
@@ -31,6 +35,9 @@ module Syskit
     def model
       self.class
     end
+
+    # The ports created at configure time, by name.
+    attr_reader :created_ports
 
     # The deployed task name, which names the task in plans (nil until the
     # task is deployed).
@@ -120,7 +127,8 @@ module Syskit
       pattern = model.spec&.dynamic_port_for(direction, name, type)
       raise no_dynamic_port(direction, name, type, location) unless pattern
 
-      created_ports[name] = pattern.instantiate(name)
+      @created_ports = {} if @created_ports.frozen?
+      @created_ports[name] = pattern.instantiate(name)
     end
 
     def to_s

@@ -78,8 +78,8 @@ module Syskit
       # Per-device ports the bus driver must have: created by its stub blocks
       # when it has some (checked here), else by the component (created here).
       def create_expected_ports(task)
-        expected = @context.expected_ports.fetch(task, [])
-        return if expected.empty?
+        expected = @context.expected_ports.fetch(task, nil)
+        return unless expected
 
         stubs = task.model.stub_blocks
         expected.each do |port|

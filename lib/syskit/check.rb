@@ -72,13 +72,15 @@ module Syskit
       private
 
       def bus_warnings(bus)
-        filtered = bus.each_attached_device.filter_map do |dev|
-          next unless dev.bus_to_client? && dev.respond_to?(:can_id) && dev.can_id
-
-          [dev, CAN::Filter.new(*dev.can_id)]
-        end
         # Standard and extended filters never match the same frame.
-        pairs = filtered.partition { |_, f| f.extended? }.flat_map { |kind| overlapping_pairs(kind) }
+        by_kind = { false => [], true => [] }
+        bus.each_attached_device do |dev|
+          next unless dev.bus_to_client? && dev.respond_to?(:can_id) && (can_id = dev.can_id)
+
+          filter = CAN::Filter.new(*can_id)
+          by_kind[filter.extended?] << [dev, filter]
+        end
+        pairs = by_kind.each_value.flat_map { |filtered| overlapping_pairs(filtered) }
         pairs.sort_by { |a, b| [a.declared_at.to_a, b.declared_at.to_a] }.map { |a, b| warning(bus, a, b) }
       end
 
@@ -86,13 +88,25 @@ module Syskit
         by_mask = filtered.group_by { |_, f| f.mask }.to_a
         pairs = []
         by_mask.each_with_index do |(mask, group), i|
-          # Same mask: ids lie within the mask, so only equal ids overlap.
-          group.group_by { |_, f| f.id }.each_value do |same|
-            same.combination(2) { |(a, _), (b, _)| pairs << [a, b] }
-          end
+          same_mask_pairs(group, pairs)
           by_mask.drop(i + 1).each { |other_mask, other| pairs.concat(cross_pairs(group, other, mask & other_mask)) }
         end
         pairs
+      end
+
+      # Same mask: ids lie within the mask, so only equal ids overlap. Most
+      # ids are unique: a list is made only for an id seen twice.
+      def same_mask_pairs(group, pairs)
+        first = {}
+        more = {}
+        group.each do |dev, filter|
+          if (seen = first[filter.id])
+            (more[filter.id] ||= [seen]) << dev
+          else
+            first[filter.id] = dev
+          end
+        end
+        more.each_value { |same| same.combination(2) { |a, b| pairs << [a, b] } }
       end
 
       # Pairs across two masks: equal ids once both masks are applied.

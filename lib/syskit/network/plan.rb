@@ -78,7 +78,7 @@ module Syskit
         (ports + task.created_ports.each_value.map { |p| port_entry(p) }).sort_by!(&:name).freeze
       end
 
-      def self.device_entry(device, task, paths = {})
+      def self.device_entry(device, task, paths)
         attributes = device.dsl_attributes
         attached = device.attached?
         Device.new(

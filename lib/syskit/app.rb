@@ -2,6 +2,9 @@
 
 require 'psych'
 require 'syskit/app/files'
+require 'syskit/app/environment'
+require 'syskit/types/typekit_search'
+require 'syskit/config/robot_config_loader'
 
 module Syskit
   # A Syskit app (a "bundle"): a directory with models/, config/ and test/.
@@ -15,7 +18,7 @@ module Syskit
     CONFIG_FILE = 'config/syskit.yml'
     BUNDLED_MODELS = File.expand_path('../../models', __dir__)
 
-    attr_reader :root, :name, :acronyms, :types, :orogen, :profiles, :robot_configs, :problems
+    attr_reader :root, :name, :acronyms, :types, :orogen, :profiles, :problems
 
     # The app containing +dir+: the closest parent with a models/ directory
     # or a config/syskit.yml file.
@@ -38,10 +41,11 @@ module Syskit
       @name = name || config['name'] || Naming.camelize(File.basename(@root), @acronyms)
       @orogen_path = orogen_path.split(File::PATH_SEPARATOR).reject(&:empty?).map { |d| File.expand_path(d) }
       @types = Types::Registry.new
+      @typekits = Types::TypekitSearch.new(@types, typekit_search_dirs)
+      @robot_config_loader = Config::RobotConfigLoader.new(self)
+      @environment = Environment.new(self)
       @profiles = {}
-      @robot_configs = {}
       @problems = []
-      @typekits = {}
     end
 
     def to_s
@@ -73,10 +77,8 @@ module Syskit
     def load(robots: ['default'], everything: false)
       activate
       load_bundled_models
-      each_model_file.each { |path| collect_problems { load_file(path) } }
-      # A missing robot configuration is reported when a plan needs it.
-      robot_names(robots).select { |r| robot_config_names.include?(r) }
-                         .each { |robot| collect_problems { robot_config(robot) } }
+      load_model_files
+      load_robot_configs(robots)
       collect_problems { resolve_devices }
       load_everything if everything
       self
@@ -91,33 +93,17 @@ module Syskit
     # Makes this app the one DSL statements (device_type, using_task_library,
     # Syskit.conf, OroGen, Types...) act on.
     def activate
-      return self if Syskit.app.equal?(self)
-      raise Error, "#{Syskit.app} is still loaded, unload it first" if Syskit.app
+      return self if @environment.active?
 
-      @constants_before = Object.constants
-      # 'models/devices/x' and 'devices/x' resolve from the app; 'app_name/models/x'
-      # (the seed's NMEA2000 example) through its parent, searched last.
-      @load_path = [root, File.join(root, 'models'), File.dirname(root)]
-      $LOAD_PATH.unshift(*@load_path.first(2))
-      $LOAD_PATH.push(@load_path.last)
-      Syskit.app = self
+      @environment.activate
       @orogen = Orogen::Loader.new(self)
-      replace_constant(:OroGen, @orogen.namespace)
-      replace_constant(:Types, types.namespace)
+      @environment.install_constants
       self
     end
 
     # Removes everything the app defined: constants, loaded files, load path.
     def unload
-      return unless Syskit.app.equal?(self)
-
-      (Object.constants - @constants_before).each do |const|
-        Object.send(:remove_const, const) if owned_constant?(const)
-      end
-      %i[OroGen Types].each { |c| Object.send(:remove_const, c) if Object.const_defined?(c, false) }
-      $LOADED_FEATURES.reject! { |f| owned_file?(f) }
-      @load_path.each { |dir| $LOAD_PATH.delete(dir) }
-      Syskit.app = nil
+      @environment.deactivate
     end
 
     # Loads task library +name+ (its .orogen file and extension files) once.
@@ -136,26 +122,9 @@ module Syskit
         .uniq.select { |p| File.file?(p) }
     end
 
-    # import_types_from: returns :typekit when the typekit's types are known,
-    # :header for C/C++ headers and, in .orogen files, :opaque for typekits the
-    # gem has no description of (their types are then accepted as opaque).
+    # import_types_from (see Types::TypekitSearch#import).
     def import_types(name, location: Location.of_caller, from_spec: false)
-      return :header if name.match?(/\.(h|hh|hpp|hxx)\z/i)
-      return @typekits[name] if @typekits.key?(name)
-      return @typekits[name] = :typekit if Types::Registry::BUILTIN_TYPEKITS.include?(name)
-
-      path = typekit_search_dirs.map { |d| File.join(d, "#{name}.rb") }.find { |p| File.file?(p) }
-      if path
-        @typekits[name] = :typekit
-        importer = ->(typekit, at) { import_types(typekit, location: at) }
-        Types::TypekitLoader.new(types, name, importer).load(path)
-      elsif from_spec
-        types.opaque_typekit(name)
-        @typekits[name] = :opaque
-      else
-        raise FileLoadError.new("no typekit '#{name}'",
-                                location: location, hint: "declare its types in models/typekits/#{name}.rb")
-      end
+      @typekits.import(name, location: location, from_spec: from_spec)
     end
 
     # The configuration file of +task_model+ (config/orogen/<lib>::<Task>.yml),
@@ -175,14 +144,21 @@ module Syskit
 
     # The deployments of robot +name+, loaded from config/robots/NAME.rb.
     def robot_config(name = 'default')
-      @robot_configs[name] ||= load_robot_config(name)
+      @robot_config_loader[name]
+    end
+
+    # The robot configurations loaded so far, by name.
+    def robot_configs
+      @robot_config_loader.loaded
     end
 
     # The robot configuration file being evaluated, for Syskit.conf.
-    attr_reader :loading_robot_config
+    def loading_robot_config
+      @robot_config_loader.loading
+    end
 
     def robot_config_names
-      Dir[File.join(root, 'config', 'robots', '*.rb')].map { |p| File.basename(p, '.rb') }.sort
+      @robot_config_loader.names
     end
 
     # Resolves the model and driver of every device of every profile.
@@ -202,8 +178,14 @@ module Syskit
       raise FileLoadError.new("cannot read #{CONFIG_FILE}: #{e.message}", location: Location.new(path, 1))
     end
 
-    def robot_names(robots)
-      robots == :all ? robot_config_names : Array(robots)
+    def load_model_files
+      each_model_file.each { |path| collect_problems { load_file(path) } }
+    end
+
+    # A missing robot configuration is reported when a plan needs it.
+    def load_robot_configs(robots)
+      names = robots == :all ? robot_config_names : Array(robots)
+      names.select { |r| robot_config_names.include?(r) }.each { |robot| collect_problems { robot_config(robot) } }
     end
 
     def collect_problems
@@ -243,40 +225,6 @@ module Syskit
         location: Location.new(File.join(root, 'models', 'orogen', "#{lib}.rb"), 1),
         hint: "name the file after its task library, or add models/orogen/#{lib}.orogen"
       )
-    end
-
-    def load_robot_config(name)
-      path = File.join(root, 'config', 'robots', "#{name}.rb")
-      config = Config::RobotConfig.new(self, name)
-      unless File.file?(path)
-        raise FileLoadError.new(
-          "no configuration for robot '#{name}'#{Naming.did_you_mean(name, robot_config_names)}",
-          location: Location.new(path, 0),
-          hint: "create config/robots/#{name}.rb with Syskit.conf.use_deployment statements"
-        )
-      end
-
-      @loading_robot_config = config
-      begin
-        eval_in_namespace(File.read(path), path, namespace_for(path))
-      ensure
-        @loading_robot_config = nil
-      end
-      config
-    end
-
-    def replace_constant(name, value)
-      Object.send(:remove_const, name) if Object.const_defined?(name, false)
-      Object.const_set(name, value)
-    end
-
-    def owned_constant?(const)
-      path, = Object.const_source_location(const)
-      path.nil? || owned_file?(path)
-    end
-
-    def owned_file?(path)
-      path.start_with?("#{root}/", "#{BUNDLED_MODELS}/")
     end
   end
 end

@@ -21,6 +21,12 @@ module Syskit
         true
       end
 
+      # Evaluates a file that is not a model file (a robot configuration)
+      # in the app's namespace, each time it is asked to.
+      def eval_file(path)
+        eval_in_namespace(File.read(path), path, namespace_for(path))
+      end
+
       private
 
       # Model files in load order: devices first, then other model

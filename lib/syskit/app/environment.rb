@@ -1,0 +1,82 @@
+# frozen_string_literal: true
+
+module Syskit
+  class App
+    # What an active app installs in the Ruby process, and takes back on
+    # unload: the top-level constants its files write (+OroGen+, +Types+,
+    # and the Rock names listed in {#constants}), its load path, and the
+    # files and constants its code defined.
+    #
+    # Only one app is active at a time (DSL statements act on Syskit.app).
+    class Environment
+      def initialize(app)
+        @app = app
+        @active = false
+      end
+
+      def active?
+        @active
+      end
+
+      # The top-level constants an active app installs, by name. Each is
+      # replaced while the app is active and removed on {#deactivate}.
+      def constants
+        { OroGen: @app.orogen.namespace, Types: @app.types.namespace }
+      end
+
+      # Directories on $LOAD_PATH while the app is active: 'models/devices/x'
+      # and 'devices/x' resolve from the app (searched first); 'app_name/models/x'
+      # (the seed's NMEA2000 example) through its parent, searched last.
+      def load_path
+        [[@app.root, File.join(@app.root, 'models')], [File.dirname(@app.root)]]
+      end
+
+      def activate
+        raise Error, "#{Syskit.app} is still loaded, unload it first" if Syskit.app && !Syskit.app.equal?(@app)
+        return if @active
+
+        @constants_before = Object.constants
+        @first, @last = load_path
+        $LOAD_PATH.unshift(*@first)
+        $LOAD_PATH.push(*@last)
+        Syskit.app = @app
+        @active = true
+      end
+
+      # Installs the constants; called once the objects they name exist.
+      def install_constants
+        constants.each do |name, value|
+          Object.send(:remove_const, name) if Object.const_defined?(name, false)
+          Object.const_set(name, value)
+        end
+      end
+
+      # Removes everything the app defined: constants, loaded files, load path.
+      def deactivate
+        return unless @active
+
+        (Object.constants - @constants_before).each do |const|
+          Object.send(:remove_const, const) if owned_constant?(const)
+        end
+        constants.each_key { |c| Object.send(:remove_const, c) if Object.const_defined?(c, false) }
+        $LOADED_FEATURES.reject! { |f| owned_file?(f) }
+        (@first + @last).each { |dir| $LOAD_PATH.delete(dir) }
+        Syskit.app = nil
+        @active = false
+      end
+
+      # Whether +path+ belongs to the app or the gem's bundled models (and is
+      # forgotten on unload).
+      def owned_file?(path)
+        path.start_with?("#{@app.root}/", "#{BUNDLED_MODELS}/")
+      end
+
+      private
+
+      def owned_constant?(const)
+        path, = Object.const_source_location(const)
+        path.nil? || owned_file?(path)
+      end
+    end
+  end
+end

@@ -1,0 +1,62 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Config
+    # The robot configurations of an app, config/robots/NAME.rb, each loaded
+    # once, when a plan or a check asks for it. While one is evaluated,
+    # +Syskit.conf+ is its {RobotConfig}.
+    class RobotConfigLoader
+      # The configuration file being evaluated, for Syskit.conf.
+      attr_reader :loading
+
+      def initialize(app)
+        @app = app
+        @configs = {}
+      end
+
+      # The configurations loaded so far, by robot name.
+      def loaded
+        @configs
+      end
+
+      # Robot names that have a configuration file, sorted.
+      def names
+        Dir[File.join(dir, '*.rb')].map { |p| File.basename(p, '.rb') }.sort
+      end
+
+      # The deployments of robot +name+, loaded from config/robots/NAME.rb.
+      def [](name)
+        @configs[name] ||= load(name)
+      end
+
+      private
+
+      def dir
+        File.join(@app.root, 'config', 'robots')
+      end
+
+      def load(name)
+        path = File.join(dir, "#{name}.rb")
+        # A name is a file of config/robots/, never a path leading elsewhere.
+        raise missing(name, path) unless names.include?(name)
+
+        config = RobotConfig.new(@app, name)
+        @loading = config
+        begin
+          @app.eval_file(path)
+        ensure
+          @loading = nil
+        end
+        config
+      end
+
+      def missing(name, path)
+        FileLoadError.new(
+          "no configuration for robot '#{name}'#{Naming.did_you_mean(name, names)}",
+          location: Location.new(path, 0),
+          hint: "create config/robots/#{name}.rb with Syskit.conf.use_deployment statements"
+        )
+      end
+    end
+  end
+end

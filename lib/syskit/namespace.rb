@@ -1,26 +1,30 @@
 # frozen_string_literal: true
 
 module Syskit
-  # The objects behind the +Types+ and +OroGen+ constants: +Types.canbus.Message+
-  # walks one namespace per segment of +/canbus/Message+, +OroGen.canbus.Task+
-  # one per segment of +canbus::Task+. Each segment is a singleton method
-  # defined when something is registered, so +Types.canbus.names+ lists them.
-  class Namespace
-    attr_reader :root, :path
+  # The modules behind the +Types+ and +OroGen+ constants. Each entry is
+  # reachable in both forms Rock code writes: a method named as the entry
+  # (+OroGen.gps_ublox.Task+, +Types.canbus.Message+) and a constant
+  # (+OroGen::GpsUblox::Task+, +Types::Canbus::Message+). Both are defined
+  # when something is registered, so they are the same object, and
+  # +class OroGen::GpsUblox::Task ... end+ reopens the task model.
+  class Namespace < Module
+    # Segments of the path from the root ('canbus', 'Message').
+    attr_reader :segments
 
-    def initialize(root, path = [])
-      @root = root
-      @path = path.freeze
+    def initialize(root, segments = [])
+      super()
+      @root_name = root
+      @segments = segments.freeze
       @entries = {}
     end
 
-    # Makes +value+ reachable at +segments+ (e.g. ['canbus', 'Message']).
-    def add(segments, value)
-      head, *rest = segments
+    # Makes +value+ reachable at +path+ (e.g. ['canbus', 'Message']).
+    def add(path, value)
+      head, *rest = path
       return define_entry(head, value) if rest.empty?
 
       child = @entries[head]
-      child = define_entry(head, self.class.new(root, path + [head])) unless child.is_a?(Namespace)
+      child = define_entry(head, self.class.new(@root_name, segments + [head])) unless child.is_a?(Namespace)
       child.add(rest, value)
     end
 
@@ -29,26 +33,41 @@ module Syskit
       @entries.keys.sort
     end
 
+    # The entry called +name+ (its method name, 'gps_ublox'), nil if none.
     def entry(name)
       @entries[name.to_s]
     end
 
     def to_s
-      ([root] + path).join('.')
+      ([@root_name] + segments).join('.')
     end
+    alias inspect to_s
 
-    # Why +name+ is not here, for errors about a misspelled +Types.x.Y+.
+    # Why +name+ (a method or constant name) is not here, for errors about
+    # a misspelled +Types.x.Y+ or +OroGen::X::Y+.
     def explain_missing(name)
       ["#{self} has no '#{name}'#{Naming.did_you_mean(name, names)}",
        names.empty? ? "nothing is registered under #{self}" : "known under #{self}: #{names.join(', ')}"]
     end
-    alias inspect to_s
+
+    # The constant an entry called +name+ is reachable as ('gps_ublox' is
+    # GpsUblox), nil when it cannot be one.
+    def self.constant_for(name)
+      constant = Naming.camelize(name)
+      constant if Naming.constant_name?(constant)
+    end
 
     private
 
     def define_entry(name, value)
       @entries[name] = value
-      define_singleton_method(name) { value } if name.match?(/\A[A-Za-z_]\w*\z/)
+      # An entry never hides a public method every module has (name, hash,
+      # ...): it stays reachable as a constant and through #entry.
+      if name.match?(/\A[A-Za-z_]\w*\z/) && !Module.public_method_defined?(name)
+        define_singleton_method(name) { value }
+      end
+      constant = Namespace.constant_for(name)
+      const_set(constant, value) if constant && !const_defined?(constant, false)
       value
     end
   end

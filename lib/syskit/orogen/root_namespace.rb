@@ -28,8 +28,16 @@ module Syskit
         end
       end
 
+      # +name+ is a method name (OroGen.gps_ubox) or a constant name
+      # (OroGen::GpsUblox, of a library that is not loaded).
       def explain_missing(name)
         available = @loader.available_library_names
+        library = available.find { |lib| Namespace.constant_for(lib) == name }
+        if library
+          return ["task library '#{library}' is not loaded (loaded: #{loaded_list})",
+                  "add using_task_library '#{library}' before using OroGen::#{name}"]
+        end
+
         ["there is no task library '#{name}'#{Naming.did_you_mean(name, available)} (loaded: #{loaded_list})",
          "available task libraries: #{available.join(', ')}; load one with using_task_library 'name'"]
       end

@@ -86,8 +86,21 @@ module Syskit
 
     def load!(**options)
       load(**options)
-      ErrorList.raise_if_any(problems)
+      ErrorList.raise_if_any(errors)
       self
+    end
+
+    # The problems found so far that are errors (not warnings).
+    def errors
+      problems.grep_v(Warning)
+    end
+
+    # Records a construct of a real Rock file that this gem does not model,
+    # once per place.
+    def not_modelled(what, location)
+      return if problems.any? { |p| p.is_a?(NotModelled) && p.location == location && p.message.start_with?(what) }
+
+      problems << NotModelled.new(what, location: location)
     end
 
     # Makes this app the one DSL statements (device_type, using_task_library,

@@ -115,4 +115,15 @@ module Syskit
       location ? text.sub(': ', ': warning: ') : "warning: #{text}"
     end
   end
+
+  # A construct of real Rock files that this gem does not model
+  # (compositions, Roby tasks and actions, runtime-only blocks): accepted,
+  # with no effect on plans. `syskit check` lists them.
+  class NotModelled < Warning
+    def initialize(what, location: nil)
+      super("#{what}: not modelled by this gem, ignored in the plan",
+            location: location,
+            hint: 'syskit plans devices, buses and their drivers; this has no effect on the plan')
+    end
+  end
 end

@@ -63,9 +63,7 @@ module Syskit
       @entries[name] = value
       # An entry never hides a public method every module has (name, hash,
       # ...): it stays reachable as a constant and through #entry.
-      if name.match?(/\A[A-Za-z_]\w*\z/) && !Module.public_method_defined?(name)
-        define_singleton_method(name) { value }
-      end
+      define_singleton_method(name) { value } if name.match?(/\A[A-Za-z_]\w*\z/) && !Module.public_method_defined?(name)
       constant = Namespace.constant_for(name)
       const_set(constant, value) if constant && !const_defined?(constant, false)
       value

@@ -90,43 +90,4 @@ module Syskit
       )
     end
   end
-
-  # What a +stub do ... end+ block is evaluated on: the task's properties
-  # as methods, plus +create_input_port+ and +create_output_port+.
-  class StubContext
-    def self.for(task_model)
-      klass = Class.new(self)
-      task_model.property_declarations.each_key do |name|
-        next if method_defined?(name) || private_method_defined?(name)
-
-        klass.define_method(name) { @task.properties[name] }
-      end
-      klass
-    end
-
-    def initialize(task)
-      @task = task
-    end
-
-    def properties
-      @task.properties
-    end
-
-    def create_input_port(name, type)
-      create_port(:input, name, type)
-    end
-
-    def create_output_port(name, type)
-      create_port(:output, name, type)
-    end
-
-    private
-
-    # The caller's location is only looked up when there is an error.
-    def create_port(direction, name, type)
-      @task.create_port(direction, name, type)
-    rescue Syskit::Error => e
-      raise e.location ? e : e.at(Location.of_caller)
-    end
-  end
 end

@@ -15,7 +15,8 @@ module Syskit
 
     # Most tasks never create a port: they share this until they do.
     NO_PORTS = {}.freeze
-    private_constant :NO_PORTS
+    NO_CALLS = [].freeze
+    private_constant :NO_PORTS, :NO_CALLS
 
     attr_reader :arguments, :properties, :deployed_task
     attr_accessor :conf
@@ -52,6 +53,17 @@ module Syskit
 
     # Configuration hook: user extension files override it and call super.
     def configure; end
+
+    # The component this task stands for (see Component): its properties
+    # and operations, as configure methods and stub blocks use them.
+    def orocos_task
+      @orocos_task ||= model.component_class.new(self)
+    end
+
+    # The operations called on the component so far (see Component).
+    def operation_calls
+      @orocos_task ? @orocos_task.operation_calls : NO_CALLS
+    end
 
     # The devices this task drives, from its +<name>_dev+ arguments.
     def devices

@@ -48,10 +48,10 @@ module Syskit
 
         app = App.new(root)
         app.load(robots: [robot], everything: true)
-        return app if app.problems.empty?
+        return app if app.errors.empty?
 
-        warn app.problems.map { |e| e.report(app.root) }.join("\n")
-        abort "syskit/test: #{app.name} has #{app.problems.size} problem(s), fix them first (see above)"
+        warn app.errors.map { |e| e.report(app.root) }.join("\n")
+        abort "syskit/test: #{app.name} has #{app.errors.size} problem(s), fix them first (see above)"
       end
     end
   end

@@ -21,7 +21,7 @@ module Syskit
       # The top-level constants an active app installs, by name. Each is
       # replaced while the app is active and removed on {#deactivate}.
       def constants
-        { OroGen: @app.orogen.namespace, Types: @app.types.namespace }
+        { OroGen: @app.orogen.namespace, Types: @app.types.namespace }.merge(Compat.constants)
       end
 
       # Directories on $LOAD_PATH while the app is active: 'models/devices/x'

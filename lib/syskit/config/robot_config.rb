@@ -8,6 +8,15 @@ module Syskit
     #   Syskit.conf.use_deployment 'test_canbus'              # a deployment of an .orogen file
     #   Syskit.conf.use_deployment OroGen.gps_ublox.Task => 'gps'  # one task, named 'gps'
     class RobotConfig
+      # Options of use_deployment that only matter to a running system
+      # (where and how processes are started): accepted, no effect on plans.
+      RUNTIME_OPTIONS = %i[on simulation loader process_managers read_only logger_name wait valgrind
+                           valgrind_options gdb gdb_options log_level output oro_logfile working_directory
+                           cmdline_args].freeze
+
+      # A Robot.init/requires/config/controller/actions block of the file.
+      PhaseBlock = Struct.new(:phase, :block, :location)
+
       attr_reader :name, :deployments
 
       def initialize(app, name)
@@ -15,22 +24,36 @@ module Syskit
         @name = name
         @deployments = []
         @deployed_tasks = {}
+        @phase_blocks = []
       end
 
-      # +on:+ (the host) is accepted and has no effect on plans.
-      def use_deployment(*specs, **options)
+      # Deploys task instances, as Syskit's use_deployment does:
+      #
+      #   use_deployment 'test_canbus'                    # a deployment of an .orogen file
+      #   use_deployment 'test_canbus' => 'left_'         # ... its task names prefixed
+      #   use_deployment 'test_canbus', prefix: 'left_'   # the same
+      #   use_deployment OroGen.gps_ublox.Task => 'gps'   # one task, named gps
+      #   use_deployment 'gps_ublox::Task' => 'gps'       # the same, by model name
+      #
+      # Where and how processes start (+on:+, +valgrind:+, ...) does not
+      # change a plan: those options are accepted and ignored.
+      def use_deployment(*specs, prefix: nil, **options)
         location = Location.of_caller
-        options.delete(:on)
         # Ruby passes a trailing `Model => 'name'` as keywords.
-        specs << options unless options.empty?
-        specs.each do |spec|
-          case spec
-          when String, Symbol then add(named_deployment(spec.to_s, location), location)
-          when Hash then spec.each { |model, name| add(task_deployment(model, name, location), location) }
-          else raise usage_error(spec, location)
-          end
-        end
+        mappings = options.reject { |key, _| key.is_a?(Symbol) }
+        check_options(options.keys.grep(Symbol), location)
+        specs.each { |spec| add_spec(spec, prefix, location) }
+        mappings.each { |spec, value| add_mapping(spec, value, prefix, location) }
         self
+      end
+
+      # Records a Robot.init/requires/... block (see Config::RobotDSL).
+      def add_phase_block(phase, block, location)
+        @phase_blocks << PhaseBlock.new(phase, block, location)
+      end
+
+      def phase_blocks(phase)
+        @phase_blocks.select { |entry| entry.phase == phase }
       end
 
       # Deployed tasks by name.
@@ -96,6 +119,60 @@ module Syskit
 
           @deployed_tasks[task.name] = task
         end
+      end
+
+      def check_options(keys, location)
+        unknown = keys - RUNTIME_OPTIONS
+        return if unknown.empty?
+
+        raise DeploymentError.new(
+          "use_deployment does not know the option#{'s' if unknown.size > 1} #{unknown.map { |k| "#{k}:" }.join(', ')}",
+          location: location,
+          hint: 'options that change the plan: prefix:; accepted and ignored: ' \
+                "#{RUNTIME_OPTIONS.map { |o| "#{o}:" }.join(', ')}"
+        )
+      end
+
+      def add_spec(spec, prefix, location)
+        case spec
+        when String, Symbol then add(prefixed(named_deployment(spec.to_s, location), prefix), location)
+        when Hash then spec.each { |key, value| add_mapping(key, value, prefix, location) }
+        else raise usage_error(spec, location)
+        end
+      end
+
+      # +Model => 'name'+, +'lib::Task' => 'name'+ or +'deployment' => 'prefix'+.
+      def add_mapping(key, value, prefix, location)
+        unless (value.is_a?(String) || value.is_a?(Symbol)) && !value.to_s.empty?
+          raise DeploymentError.new(
+            "use_deployment #{key.inspect} => #{value.inspect}: the task name must be a non-empty string",
+            location: location, hint: "write use_deployment #{key.inspect} => 'task_name'"
+          )
+        end
+
+        model = key.is_a?(String) ? task_model_named(key, location) : key
+        return add(task_deployment(model, "#{prefix}#{value}", location), location) if model
+
+        add(prefixed(named_deployment(key, location), "#{prefix}#{value}"), location)
+      end
+
+      # The task model called +name+ ('lib::Task'), loading its library;
+      # nil when +name+ is not a task model name (but a deployment's).
+      def task_model_named(name, location)
+        library, = name.split('::', 2)
+        return unless name.include?('::') && @app.orogen.available_library_names.include?(library)
+
+        @app.using_task_library(library, location: location)
+        found = @app.orogen.find_task_model(name)
+        return found if found
+
+        raise DeploymentError.new("task library '#{library}' has no task model '#{name}'",
+                                  location: location,
+                                  hint: "its task models: #{@app.orogen.library(library).tasks.keys.sort.join(', ')}")
+      end
+
+      def prefixed(deployment, prefix)
+        prefix ? deployment.with_prefix(prefix.to_s) : deployment
       end
 
       def named_deployment(name, location)

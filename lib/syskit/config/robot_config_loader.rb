@@ -43,11 +43,45 @@ module Syskit
         config = RobotConfig.new(@app, name)
         @loading = config
         begin
-          @app.eval_file(path)
+          # Methods the file defines (helpers its blocks call) stay on this
+          # object instead of becoming methods of every object.
+          context = Object.new.extend(DSL::TopLevelStatements)
+          UserCode.evaluate(path, context, root: @app.root)
+          run_phases(config)
         ensure
           @loading = nil
         end
         config
+      end
+
+      # Runs the blocks the file recorded, phase by phase. What init and
+      # config blocks do is mostly Roby's business: an exception there that
+      # is not a Syskit error ends the block with a warning, not an error.
+      def run_phases(config)
+        RobotDSL::PHASES.each do |phase, mode|
+          next unless mode == :run
+
+          config.phase_blocks(phase).each do |entry|
+            phase == :requires ? run_block(entry) : run_lenient_block(entry)
+          end
+        end
+      end
+
+      def run_block(entry)
+        entry.block.call
+      rescue Syskit::Error
+        raise
+      rescue ScriptError, StandardError => e
+        raise UserCode.translate(e, root: @app.root)
+      end
+
+      def run_lenient_block(entry)
+        entry.block.call
+      rescue Syskit::Error
+        raise
+      rescue ScriptError, StandardError => e
+        error = UserCode.translate(e, root: @app.root)
+        @app.not_modelled("Robot.#{entry.phase} from this line on (#{error.message})", error.location)
       end
 
       def missing(name, path)

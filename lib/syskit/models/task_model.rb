@@ -94,8 +94,9 @@ module Syskit
       # Declares that this task drives devices of +model+; the device is given
       # to the task as its +<as>_dev+ argument. Ports of the device model are
       # bound by name and type, or by +'device_port' => 'task_port'+ mappings.
-      def driver_for(model, as: nil, **mappings)
+      def driver_for(model, positional_mappings = {}, as: nil, **mappings)
         location = Location.of_caller
+        mappings = positional_mappings.merge(mappings)
         unless model.is_a?(DeviceModel)
           raise DeclarationError.new(
             "driver_for expects a device or bus model, got #{model.inspect}",
@@ -109,9 +110,11 @@ module Syskit
       end
 
       # Declares that this task provides the data service +model+ under the
-      # name +as+, with optional +'service_port' => 'task_port'+ mappings.
-      def provides(model, as: nil, **mappings)
+      # name +as+, with optional +'service_port' => 'task_port'+ mappings
+      # (also given as a hash: +provides Srv, { 'a' => 'b' }, as: 'x'+).
+      def provides(model, positional_mappings = {}, as: nil, **mappings)
         location = Location.of_caller
+        mappings = positional_mappings.merge(mappings)
         unless model.is_a?(DataServiceModel)
           raise DeclarationError.new("provides expects a data service model, got #{model.inspect}",
                                      location: location)
@@ -137,6 +140,42 @@ module Syskit
         cached(:stub_blocks) do
           inherited = superclass.respond_to?(:stub_blocks) ? superclass.stub_blocks : []
           (inherited + (@stub_blocks || [])).freeze
+        end
+      end
+
+      # Declares a task argument, readable in configure as a method of the
+      # task: +argument :port, default: '/dev/ttyS0'+. Profiles set
+      # arguments through compositions, which are not modelled: every
+      # task has its arguments' defaults.
+      def argument(name, default: nil, doc: nil) # rubocop:disable Lint/UnusedMethodArgument -- Syskit's signature
+        name = name.to_sym
+        if name.end_with?('_dev') || !name.match?(/\A[a-z_]\w*\z/)
+          raise DeclarationError.new("'#{name}' is not a valid argument name",
+                                     location: Location.of_caller,
+                                     hint: 'arguments are lower-case names not ending in _dev')
+        end
+
+        (@argument_defaults ||= {})[name] = default
+        define_method(name) { arguments.fetch(name) { self.class.argument_defaults[name] } }
+        name
+      end
+
+      # Default values of the arguments declared with {#argument}, inherited ones included.
+      def argument_defaults
+        inherited = superclass.respond_to?(:argument_defaults) ? superclass.argument_defaults : {}
+        inherited.merge(@argument_defaults || {})
+      end
+
+      # Statements of real extension files about what a running component
+      # does (the transformer's frames, polling, event handlers, scripts):
+      # accepted, with a "not modelled" warning each (see Compat).
+      RUNTIME_STATEMENTS = %i[transformer poll on script event terminates forward signal
+                              stream_aligner on_exception].freeze
+
+      RUNTIME_STATEMENTS.each do |statement|
+        define_method(statement) do |*_args, **_options, &_block|
+          Syskit.app&.not_modelled("#{statement} in #{name}", Location.of_caller)
+          Compat::Ignored.instance
         end
       end
 
@@ -175,9 +214,15 @@ module Syskit
         @properties_class ||= Properties.for(self)
       end
 
-      # The class of the objects +stub+ blocks are evaluated on.
-      def stub_context_class
-        @stub_context_class ||= StubContext.for(self)
+      # Operations by name (inherited ones included).
+      def operations
+        spec ? spec.all_operations : {}
+      end
+
+      # The class of the task's component (+orocos_task+, and what +stub+
+      # blocks are evaluated on).
+      def component_class
+        @component_class ||= Component.for(self)
       end
 
       private

@@ -22,10 +22,11 @@ module Syskit
         device = @context.device_of(task)
         apply_sections(task, device)
         user_code(task, device, 'configure') { task.configure }
+        component = task.orocos_task
         task.model.stub_blocks.each do |block|
-          context = task.model.stub_context_class.new(task)
-          user_code(task, device, 'stub') { context.instance_exec(&block) }
+          user_code(task, device, 'stub') { component.instance_exec(&block) }
         end
+        user_code(task, device, 'stub') { component.run_stubbed_operations }
         create_expected_ports(task)
       rescue Syskit::Error => e
         @context.error(e)

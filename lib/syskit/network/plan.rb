@@ -7,7 +7,10 @@ module Syskit
     # from a generated network; renderers only read it.
     class Plan
       # A task of the plan, named after its deployed task.
-      Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on)
+      # +operations+: the operations its configure called, in call order.
+      Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on, :operations)
+      # A call of an operation of a task's component, and its arguments as plain data.
+      Operation = Struct.new(:name, :arguments)
       # A port of a task; dynamic ports are created at configure time.
       Port = Struct.new(:name, :direction, :type, :dynamic)
       # One end of a connection.
@@ -40,6 +43,7 @@ module Syskit
 
       NO_ATTRIBUTES = {}.freeze
       NO_DEPENDENCIES = [].freeze
+      NO_OPERATIONS = [].freeze
 
       def self.build(context)
         # The plan entries of a model's static ports are shared by its
@@ -64,8 +68,26 @@ module Syskit
           task.devices.map(&:name).freeze, task.conf,                         # devices, conf (frozen)
           freeze_plain(task.properties.to_plain),                             # properties
           task_ports(task, static_ports),                                     # ports
-          children.empty? ? NO_DEPENDENCIES : children.map(&:name).sort!.freeze # depends_on
+          children.empty? ? NO_DEPENDENCIES : children.map(&:name).sort!.freeze, # depends_on
+          operation_entries(task) # operations
         ).freeze
+      end
+
+      def self.operation_entries(task)
+        calls = task.operation_calls
+        return NO_OPERATIONS if calls.empty?
+
+        calls.map { |c| Operation.new(c.name, freeze_plain(c.arguments.map { |a| plain_argument(a) })).freeze }.freeze
+      end
+
+      # An operation's argument as plain data (typed values through their type).
+      def self.plain_argument(value)
+        case value
+        when Types::StructValue then value.class.type.to_plain(value)
+        when Array then value.map { |v| plain_argument(v) }
+        when Symbol then value.to_s
+        else value
+        end
       end
 
       # The model's static ports, then those the task's configure created.
@@ -199,7 +221,8 @@ module Syskit
           'name' => task.name, 'model' => task.model, 'deployment' => task.deployment,
           'devices' => task.devices, 'conf' => task.conf, 'properties' => task.properties,
           'ports' => task.ports.map { |p| port_hashes[p] ||= port_hash(p) },
-          'depends_on' => task.depends_on
+          'depends_on' => task.depends_on,
+          'operations' => task.operations.map { |op| { 'name' => op.name, 'arguments' => op.arguments } }
         }
       end
 

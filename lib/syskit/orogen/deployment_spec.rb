@@ -21,6 +21,14 @@ module Syskit
         @declared_at = location
       end
 
+      # A copy whose task names start with +prefix+ (use_deployment's
+      # 'deployment' => 'prefix' form).
+      def with_prefix(prefix)
+        copy = DeploymentSpec.new("#{prefix}#{name}", location: declared_at)
+        tasks.each { |t| copy.add_task("#{prefix}#{t.name}", t.model, location: t.declared_at) }
+        copy
+      end
+
       def add_task(name, model, location: nil)
         task = DeployedTask.new(name: name, model: model, deployment: self, declared_at: location)
         @tasks << task

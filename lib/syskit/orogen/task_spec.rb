@@ -41,6 +41,11 @@ module Syskit
         @all_properties || (superclass ? superclass.all_properties : {}).merge(properties)
       end
 
+      # Operations, including those inherited from the parent task, by name.
+      def all_operations
+        @all_operations || (superclass ? superclass.all_operations : {}).merge(operations)
+      end
+
       def find_port(name)
         all_ports[name.to_s]
       end
@@ -57,6 +62,7 @@ module Syskit
         @all_ports = all_ports.freeze
         @all_dynamic_ports = all_dynamic_ports.freeze
         @all_properties = all_properties.freeze
+        @all_operations = all_operations.freeze
       end
 
       def to_s

@@ -19,6 +19,7 @@ module Syskit
       DEPENDS_ON = '    depends on  '
       PROPERTIES = '    properties  '
       PORTS = '    ports       '
+      OPERATIONS = '    operations  '
       CONTINUED = (' ' * DETAIL_WIDTH).freeze
       STEP_WIDTH = 9
       # Padding up to this width is made once.
@@ -52,12 +53,20 @@ module Syskit
       def details_text(task, out)
         details(PROPERTIES, task.properties, out) { |(name, value)| plain(value, out << name << ': ') }
         details(PORTS, task.ports, out) { |port| port_text(port, out) }
+        details(OPERATIONS, task.operations, out) { |op| operation_text(op, out) }
         out
       end
 
       def port_text(port, out)
         out << port.name << '  ' << port.direction << ' ' << port.type
         port.dynamic ? out << ' (dynamic)' : out
+      end
+
+      # +watch("gps", 16, 255)+: the call as it was written.
+      def operation_text(operation, out)
+        out << operation.name << '('
+        operation.arguments.each_with_index { |arg, i| plain(arg, i.zero? ? out : out << ', ') }
+        out << ')'
       end
 
       # One line per entry, the title on the first.

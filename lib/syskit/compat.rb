@@ -1,0 +1,73 @@
+# frozen_string_literal: true
+
+require 'syskit/compat/ignored'
+require 'syskit/compat/roby'
+
+module Syskit
+  # Compatibility with real Rock files, in one place: the names Rock code
+  # uses that are outside a devices-and-buses model layer. Each construct is
+  # listed here with its effect on the plan:
+  #
+  # - recorded (affects the plan): Robot.requires blocks, Syskit.conf's
+  #   deployment statements, Roby.app.auto_load_all_task_libraries;
+  # - accepted, with one located "not modelled by this gem" warning each:
+  #   compositions, ruby task contexts, Roby tasks, action interfaces and
+  #   command libraries (the classes below), runtime-only task statements
+  #   (TaskModel::RUNTIME_STATEMENTS), profile statements about compositions
+  #   (Profile::NOT_MODELLED), Roby.app's runtime settings;
+  # - accepted silently: what only a running system needs (use_deployment's
+  #   process options).
+  module Compat
+    # The top-level constants an active app installs besides OroGen and Types.
+    def self.constants
+      { Robot: Config::RobotDSL, Roby: Roby }
+    end
+
+    # Records that a model of kind +kind+ (a composition, ...) was defined,
+    # once per definition.
+    def self.model_defined(kind, model, location)
+      Syskit.app&.not_modelled("#{kind} #{model.name || '(anonymous)'}", location)
+    end
+
+    # Class-level behaviour of the models this gem does not model: defining
+    # one is a warning, and the statements of its class body are accepted
+    # as they are written, whatever they are (children, ports, events,
+    # specializations: what they return is an Ignored).
+    module NotModelledModel
+      attr_reader :not_modelled_kind
+
+      def inherited(subclass)
+        super
+        Compat.model_defined(not_modelled_kind, subclass, Location.of_caller)
+      end
+
+      private
+
+      # The one place where any statement is accepted: the body of a model
+      # kind that this gem does not model. (Modelled code never comes here.)
+      def method_missing(_name, *_args, **_options, &)
+        Ignored.instance
+      end
+
+      def respond_to_missing?(_name, _include_private = false)
+        true
+      end
+    end
+
+    # Declares a class of a model kind this gem does not model.
+    def self.not_modelled_class(namespace, name, kind)
+      klass = Class.new
+      klass.extend(NotModelledModel)
+      klass.instance_variable_set(:@not_modelled_kind, kind)
+      namespace.const_set(name, klass)
+    end
+
+    not_modelled_class(Syskit, :Composition, 'composition')
+    not_modelled_class(Syskit, :RubyTaskContext, 'ruby task context')
+    not_modelled_class(Roby, :Task, 'Roby task')
+    Roby.const_set(:Actions, Module.new)
+    not_modelled_class(Roby::Actions, :Interface, 'action interface')
+    Roby.const_set(:Interface, Module.new)
+    not_modelled_class(Roby::Interface, :CommandLibrary, 'Roby command library')
+  end
+end

@@ -16,7 +16,7 @@ Gem::Specification.new do |spec|
   spec.license = 'BSD-3-Clause'
   spec.required_ruby_version = '>= 3.1'
 
-  spec.files = Dir['lib/**/*.rb', 'models/**/*', 'templates/**/*', 'bin/*', 'README.md']
+  spec.files = Dir['lib/**/*.rb', 'bundles/**/*', 'templates/**/*', 'bin/*', 'README.md']
   spec.bindir = 'bin'
   spec.executables = ['syskit']
   spec.require_paths = ['lib']

@@ -3,6 +3,7 @@
 require 'psych'
 require 'syskit/app/files'
 require 'syskit/app/environment'
+require 'syskit/app/bundles'
 require 'syskit/types/typekit_search'
 require 'syskit/config/robot_config_loader'
 
@@ -16,9 +17,9 @@ module Syskit
     include Files
 
     CONFIG_FILE = 'config/syskit.yml'
-    BUNDLED_MODELS = File.expand_path('../../models', __dir__)
+    BUNDLED_MODELS = File.join(BundleSearch::BUNDLED.root, 'models')
 
-    attr_reader :root, :name, :acronyms, :types, :orogen, :profiles, :problems
+    attr_reader :root, :name, :acronyms, :types, :orogen, :profiles, :problems, :bundles
 
     # The app containing +dir+: the closest parent with a models/ directory
     # or a config/syskit.yml file.
@@ -40,12 +41,17 @@ module Syskit
       @acronyms = Array(config['acronyms']).map(&:to_s)
       @name = name || config['name'] || Naming.camelize(File.basename(@root), @acronyms)
       @orogen_path = orogen_path.split(File::PATH_SEPARATOR).reject(&:empty?).map { |d| File.expand_path(d) }
+      @bundles, @problems = BundleSearch.new.resolve(@root, @name, config)
       @types = Types::Registry.new
       @typekits = Types::TypekitSearch.new(@types, typekit_search_dirs)
       @robot_config_loader = Config::RobotConfigLoader.new(self)
       @environment = Environment.new(self)
       @profiles = {}
-      @problems = []
+    end
+
+    # The directories of the app and of the bundles it uses, in search order.
+    def bundle_roots
+      bundles.map(&:root)
     end
 
     def to_s
@@ -56,14 +62,15 @@ module Syskit
       "#<#{self.class.name} #{name} #{root}>"
     end
 
-    # Directories searched for NAME.orogen, in order.
+    # Directories searched for NAME.orogen, in order: the bundles' (the
+    # app's first), SYSKIT_OROGEN_PATH, then the gem's own.
     def orogen_search_dirs
-      [File.join(root, 'models', 'orogen'), *@orogen_path, File.join(BUNDLED_MODELS, 'orogen')]
+      search_dirs('orogen')
     end
 
-    # Directories searched for typekits (NAME.rb), in order.
+    # Directories searched for typekits (NAME.rb), in the same order.
     def typekit_search_dirs
-      [File.join(root, 'models', 'typekits'), *@orogen_path, File.join(BUNDLED_MODELS, 'typekits')]
+      search_dirs('typekits')
     end
 
     # Loads the whole app: models, task libraries, profiles and the
@@ -128,11 +135,30 @@ module Syskit
       library
     end
 
-    # Extension files of a task library: next to its .orogen file, and the
-    # app's models/orogen/NAME.rb.
+    # Extension files of a task library: models/orogen/NAME.rb of every
+    # bundle, and the file next to its .orogen file. The gem's extension of
+    # its own canbus spec gives way to a bundle's (Rock's common_models has
+    # one).
     def extension_files(name, spec_path)
-      [File.join(File.dirname(spec_path), "#{name}.rb"), File.join(root, 'models', 'orogen', "#{name}.rb")]
-        .uniq.select { |p| File.file?(p) }
+      beside = File.join(File.dirname(spec_path), "#{name}.rb")
+      own = bundles.reject { |b| b.equal?(BundleSearch::BUNDLED) }
+                   .map { |b| File.join(b.root, 'models', 'orogen', "#{name}.rb") }.select { |p| File.file?(p) }
+      return own if beside.start_with?("#{BUNDLED_MODELS}/") && own.any?
+
+      (own + [beside]).uniq.select { |p| File.file?(p) }
+    end
+
+    # Whether typekit +name+ is known (built in or described).
+    def typekit?(name)
+      Types::Registry::BUILTIN_TYPEKITS.include?(name) || !@typekits.find(name).nil?
+    end
+
+    # Loads every task library on the search path (Rock's
+    # Roby.app.auto_load_all_task_libraries); problems are collected.
+    def load_all_task_libraries(location:)
+      orogen.available_library_names.each do |lib|
+        collect_problems { using_task_library(lib, location: location) }
+      end
     end
 
     # import_types_from (see Types::TypekitSearch#import).
@@ -146,8 +172,9 @@ module Syskit
       @conf_files ||= {}
       return @conf_files[task_model.name] if @conf_files.key?(task_model.name)
 
-      path = File.join(root, 'config', 'orogen', "#{task_model.name}.yml")
-      @conf_files[task_model.name] = File.file?(path) ? Config::ConfFile.new(path) : nil
+      file = "#{task_model.name}.yml"
+      path = bundle_roots.map { |r| File.join(r, 'config', 'orogen', file) }.find { |p| File.file?(p) }
+      @conf_files[task_model.name] = path ? Config::ConfFile.new(path) : nil
     end
 
     # Records a profile defined by a file of this app.
@@ -209,8 +236,17 @@ module Syskit
       @problems << e
     end
 
+    # The CAN bus model of the first common_models bundle: the seed uses
+    # it without a require.
     def load_bundled_models
-      load_file(File.join(BUNDLED_MODELS, 'devices', 'bus', 'can.rb'))
+      can = bundles.select { |b| b.name == 'common_models' }
+                   .map { |b| File.join(b.root, 'models', 'devices', 'bus', 'can.rb') }.find { |p| File.file?(p) }
+      collect_problems { load_file(can) }
+    end
+
+    def search_dirs(kind)
+      own = bundles.reject { |b| b.equal?(BundleSearch::BUNDLED) }.map { |b| File.join(b.root, 'models', kind) }
+      [*own, *@orogen_path, File.join(BUNDLED_MODELS, kind)]
     end
 
     def load_everything

@@ -25,10 +25,14 @@ module Syskit
       end
 
       # Directories on $LOAD_PATH while the app is active: 'models/devices/x'
-      # and 'devices/x' resolve from the app (searched first); 'app_name/models/x'
-      # (the seed's NMEA2000 example) through its parent, searched last.
+      # and 'devices/x' resolve from the app and its bundles (searched
+      # first); 'common_models/models/x' (bundles requiring each other's
+      # files, and the seed's NMEA2000 example) through their parents,
+      # searched last.
       def load_path
-        [[@app.root, File.join(@app.root, 'models')], [File.dirname(@app.root)]]
+        roots = @app.bundle_roots
+        first = roots.flat_map { |root| [root, File.join(root, 'models')] }
+        [first, roots.map { |root| File.dirname(root) }.uniq - first]
       end
 
       def activate
@@ -65,10 +69,10 @@ module Syskit
         @active = false
       end
 
-      # Whether +path+ belongs to the app or the gem's bundled models (and is
+      # Whether +path+ belongs to the app or one of its bundles (and is
       # forgotten on unload).
       def owned_file?(path)
-        path.start_with?("#{@app.root}/", "#{BUNDLED_MODELS}/")
+        @app.bundle_roots.any? { |root| path.start_with?("#{root}/") }
       end
 
       private

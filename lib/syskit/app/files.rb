@@ -51,8 +51,11 @@ module Syskit
         raise UserCode.translate(e, path: path, root: root)
       end
 
-      # Module names a file without module statements is evaluated in.
+      # Module names a file without module statements is evaluated in. Files
+      # of other bundles are evaluated as Rock does, at the top level.
       def namespace_for(path)
+        return [] unless path.start_with?("#{root}/")
+
         relative = path.delete_prefix("#{root}/")
         dirs = File.dirname(relative).split('/')
         return [name] unless dirs.first == 'models' && !%w[orogen typekits].include?(dirs[1])

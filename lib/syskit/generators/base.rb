@@ -25,7 +25,8 @@ module Syskit
         where = app_dir ? "'#{app_dir}'" : pwd
         return root if root && root != GEM_ROOT && app?(root)
 
-        what = root == GEM_ROOT ? 'is in the syskit gem itself, not' : 'is not'
+        in_gem = root == GEM_ROOT || "#{File.expand_path(app_dir || pwd)}/".start_with?("#{GEM_ROOT}/")
+        what = in_gem ? 'is in the syskit gem itself, not' : 'is not'
         raise GeneratorError.new(
           "#{where} #{what} in a Syskit app (an app has a models/ directory or a config/syskit.yml)",
           hint: 'run the command inside an app, pass --app DIR, or create an app with: syskit gen app NAME'

@@ -32,6 +32,10 @@ module Syskit
         end
         if namespace.const_defined?(name, false)
           existing = namespace.const_get(name, false)
+          # The gem's bundled common models give way to a real bundle's or
+          # the app's definition of the same model: it is reopened.
+          return existing.reopen(location, **options, &block) if existing.instance_of?(model_class) && existing.bundled?
+
           where = existing.respond_to?(:declared_at) && existing.declared_at ? " at #{existing.declared_at}" : ''
           raise DeclarationError.new("#{namespace}::#{name} is already defined#{where}",
                                      location: location, hint: 'give the new model another name')
@@ -53,6 +57,21 @@ module Syskit
         @ports = {}
         @parents = {}
         @timing = {}
+      end
+
+      # Whether the gem's bundled common models declare this model.
+      def bundled?
+        declared_at&.path.to_s.start_with?("#{App::BUNDLED_MODELS}/")
+      end
+
+      # Evaluates another declaration of this bundled model on it: the
+      # model is then the user's (errors point at their declaration).
+      def reopen(location, **options, &block)
+        @declared_at = location
+        apply_options(**options)
+        instance_eval(&block) if block
+        finalize_declaration
+        self
       end
 
       # Options of the declaration statement, applied once the model is named.

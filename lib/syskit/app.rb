@@ -177,6 +177,11 @@ module Syskit
       @conf_files[task_model.name] = path ? Config::ConfFile.new(path) : nil
     end
 
+    # Whether +path+ is a file of the app or of one of its bundles.
+    def environment_file?(path)
+      @environment.owned_file?(path)
+    end
+
     # Records a profile defined by a file of this app.
     def register_profile(profile)
       @profiles[profile.name] = profile

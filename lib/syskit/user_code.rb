@@ -28,7 +28,7 @@ module Syskit
       when SyntaxError
         syntax_error(exception, path)
       when NameError
-        name_error(exception, path, error_class, context)
+        name_error(exception, path, root, error_class, context)
       else
         message = "#{exception.class}: #{first_line(exception.message)}"
         error_class.new(context ? "#{context}: #{message}" : message,
@@ -37,16 +37,21 @@ module Syskit
       end.tap { |error| error.set_backtrace(exception.backtrace || []) if error.backtrace.nil? }
     end
 
+    # The innermost line of the user's code: in the app or one of its
+    # bundles (a file required by +path+ is reported at its own line), else
+    # in +path+, else the first frame outside the gem.
     def location_of(exception, path, root = nil)
-      (path && Location.in_file(exception, path)) ||
-        (root && in_root(exception, root)) ||
+      roots = [root, *Syskit.app&.bundle_roots].compact.uniq
+      in_roots(exception, roots) ||
+        (path && Location.in_file(exception, path)) ||
         Location.of_exception(exception)
     end
 
-    def in_root(exception, root)
-      prefix = "#{File.expand_path(root)}/"
+    def in_roots(exception, roots)
+      prefixes = roots.map { |root| "#{File.expand_path(root)}/" }
       Location.from((exception.backtrace_locations || []).find do |loc|
-        (loc.absolute_path || loc.path).start_with?(prefix)
+        loc_path = loc.absolute_path || loc.path
+        prefixes.any? { |prefix| loc_path.start_with?(prefix) } && !loc_path.start_with?(Location::GEM_LIB)
       end)
     end
 
@@ -64,10 +69,10 @@ module Syskit
                         location: location, hint: 'fix the Ruby syntax at this line')
     end
 
-    def name_error(exception, path, error_class, context)
+    def name_error(exception, path, root, error_class, context)
       message, hint = explain(exception)
       message = "#{context}: #{message}" if context
-      error_class.new(message, location: location_of(exception, path), hint: hint)
+      error_class.new(message, location: location_of(exception, path, root), hint: hint)
     end
 
     # The receiver's own explanation of a missing method or constant, or

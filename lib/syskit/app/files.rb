@@ -48,7 +48,22 @@ module Syskit
         # The prefix shares the first line with the file, so line numbers hold.
         TOPLEVEL_BINDING.eval(modules.empty? ? source : "#{prefix} #{source}#{suffix}", path, 1)
       rescue ScriptError, StandardError => e
+        mark_loaded(e)
         raise UserCode.translate(e, path: path, root: root)
+      end
+
+      # Ruby forgets a required file that raised, so a later require would
+      # evaluate it again and report what follows from its first half
+      # ("already defined"): the app's files the error went through stay
+      # loaded.
+      def mark_loaded(exception)
+        (exception.backtrace_locations || []).each do |loc|
+          file = loc.absolute_path || loc.path
+          next unless loc.label == '<top (required)>' && environment_file?(file) && File.file?(file)
+
+          real = File.realpath(file)
+          $LOADED_FEATURES << real unless $LOADED_FEATURES.include?(real)
+        end
       end
 
       # Module names a file without module statements is evaluated in. Files

@@ -14,7 +14,10 @@ module Syskit
     # A file without a header starts with the 'default' section. Sections are
     # read with safe YAML only (no Ruby objects, no aliases).
     class ConfFile
-      HEADER = /^---\s*name:\s*(\S+)\s*$/
+      # A section header, with an optional comment after it. A line that
+      # starts like a header but is not one is refused, never taken as data.
+      HEADER = /\A---\s*name:\s*(\S*)\s*(?:#.*)?\Z/
+      HEADER_LIKE = /\A---\s*name\b/
 
       # One section: its values and the line of its header.
       Section = Struct.new(:name, :settings, :line, :text)
@@ -76,7 +79,9 @@ module Syskit
         text.each_line.with_index(1) do |line, lineno|
           if (m = line.match(HEADER))
             chunks << current
-            current = [m[1], lineno, []]
+            current = [header_name(m[1], lineno), lineno, []]
+          elsif line.match?(HEADER_LIKE)
+            raise bad_header(line, lineno)
           else
             current[2] << line
           end
@@ -84,6 +89,19 @@ module Syskit
         chunks << current
         chunks.shift if chunks.first[2].all? { |l| l.strip.empty? || l.strip.start_with?('#') } && chunks.size > 1
         chunks.each { |name, line, lines| add_section(name, line, lines.join) }
+      end
+
+      def header_name(name, lineno)
+        return name unless name.empty?
+
+        raise ConfigurationError.new('this section header has no name',
+                                     location: Location.new(path, lineno), hint: 'write --- name:section_name')
+      end
+
+      def bad_header(line, lineno)
+        ConfigurationError.new("'#{line.strip}' is not a section header",
+                               location: Location.new(path, lineno),
+                               hint: 'a section starts with --- name:section_name (a comment may follow after #)')
       end
 
       def add_section(name, line, text)
@@ -97,7 +115,9 @@ module Syskit
 
       def load_yaml(text, header_line)
         # Blank lines keep Psych's line numbers those of the file.
-        values = Psych.safe_load(("\n" * header_line) + text, filename: path, aliases: false) || {}
+        # Symbols are Rock's way of writing enum values (deviceType: :SOCKET).
+        values = Psych.safe_load(("\n" * header_line) + text, filename: path, aliases: false,
+                                                              permitted_classes: [Symbol]) || {}
         unless values.is_a?(Hash)
           raise ConfigurationError.new('a configuration section must map property names to values',
                                        location: Location.new(path, header_line + 1),
@@ -120,8 +140,17 @@ module Syskit
       end
 
       # Psych only says a class was refused: the error points at the first
-      # tag of the section and names it when the line shows it.
+      # tag of the section and names it when the line shows it. Dates and
+      # times are read as such by YAML: they are refused as values.
       def tag_error(error, text, header_line)
+        if error.message.match?(/Date|Time/)
+          return ConfigurationError.new(
+            "a date or time is not a property value (#{error.message})",
+            location: line_of(/:\s*\d{4}-\d\d-\d\d/, text, header_line),
+            hint: "quote it to make it a string: '2024-01-31'"
+          )
+        end
+
         location = line_of(/!/, text, header_line)
         tag = File.readlines(path)[location.lineno - 1].to_s[/!\S+/]
         ConfigurationError.new("YAML tags such as #{tag || 'this one'} are not allowed in configuration files " \

@@ -62,9 +62,22 @@ module Syskit
           )
         end
 
+        check_symbol(task, key, value)
         task.properties[key] = value
       rescue ConfigurationError => e
         raise e.at(file.location_of(key, task.conf))
+      end
+
+      # A symbol in a configuration file (deviceType: :SOCKET) is an enum
+      # value: refused for a property that is not an enum.
+      def check_symbol(task, key, value)
+        type = task.properties.declarations.fetch(key).type
+        return unless value.is_a?(Symbol) && !type.is_a?(Types::EnumType) && !type.opaque?
+
+        raise ConfigurationError.new(
+          "#{key}: #{value.inspect} is a symbol, which only enum properties take (#{key} is a #{type})",
+          location: nil, hint: "write the value without its leading colon: #{key}: #{value}"
+        )
       end
 
       def user_code(task, device, what)

@@ -75,8 +75,30 @@ module Syskit
       (@requirements ||= {}.compare_by_identity)[device] ||= Network::Requirement.new(device, self)
     end
 
+    # Profile statements about compositions, simulation and the
+    # transformer: accepted, with a "not modelled" warning each (see
+    # Compat). The value says which action name a statement defines, when
+    # it defines one, so that later statements can refer to it.
+    NOT_MODELLED = {
+      define: ->(name, *) { "#{name}_def" }, tag: ->(name, *) { "#{name}_tag" },
+      use_gazebo_model: ->(url, *, as: nil, **) { "#{as || url.to_s.sub(%r{\Amodel://}, '').split('/').first}_dev" },
+      use: nil, use_profile: nil, use_sdf_world: nil, use_sdf_model: nil, transformer: nil
+    }.freeze
+
     # Methods of profile modules.
     module ModuleMethods
+      NOT_MODELLED.each do |statement, action|
+        define_method(statement) do |*args, **options, &_block|
+          Syskit.app&.not_modelled("#{statement} in profile #{self}", Location.of_caller)
+          name = action&.call(*args, **options)
+          if name && !respond_to?(name)
+            ignored = Compat::Ignored.instance
+            define_singleton_method(name) { ignored }
+          end
+          Compat::Ignored.instance
+        end
+      end
+
       def robot(&)
         syskit_profile.robot_block(&)
       end

@@ -16,10 +16,14 @@ module Syskit
     # directories of SYSKIT_BUNDLE_PATH and ROCK_BUNDLE_PATH (each one a
     # bundle, or a directory of bundles), or by path. An app names them in
     # config/syskit.yml (+bundles: [common_models, ../other]+) or, as Rock
-    # bundles do, in config/app.yml (+bundle: dependencies: [...]+); the
+    # bundles do, in config/app.yml (+bundle: dependencies: [...]+) or
+    # with +Roby.app.register_app 'path'+ in a robot configuration; the
     # bundles' own dependencies follow them.
     class BundleSearch
       ENV_VARS = %w[SYSKIT_BUNDLE_PATH ROCK_BUNDLE_PATH].freeze
+      # Roby.app.register_app 'path' in robot configurations, read from their
+      # text (they run after the models they make loadable).
+      REGISTER_APP = /\bregister_app[\s(]+(['"])([^'"]+)\1/
 
       def initialize(env = ENV)
         @dirs = ENV_VARS.flat_map { |var| env.fetch(var, '').split(File::PATH_SEPARATOR) }
@@ -67,7 +71,16 @@ module Syskit
         from_syskit = list_at(config['bundles'], File.join(root, CONFIG_FILE), 'bundles')
         rock_config = File.join(root, 'config', 'app.yml')
         rock = File.file?(rock_config) ? rock_dependencies(rock_config) : []
-        (from_syskit + rock).uniq(&:first)
+        (from_syskit + rock + registered_apps(root)).uniq(&:first)
+      end
+
+      def registered_apps(root)
+        Dir[File.join(root, 'config', 'robots', '*.rb')].flat_map do |path|
+          File.readlines(path).each_with_index.filter_map do |line, i|
+            m = line.match(REGISTER_APP)
+            [m[2], Location.new(path, i + 1)] if m && !line.lstrip.start_with?('#')
+          end
+        end
       end
 
       def rock_dependencies(path)

@@ -39,6 +39,10 @@ module Syskit
         # The app's models are loaded anyway; accepted.
         def load_default_models; end
 
+        # Another app whose models this one uses: read from the robot
+        # configurations' text when the app is opened (see App::BundleSearch).
+        def register_app(_path); end
+
         # Loads every task library on the search path, as Syskit does when
         # this is set in a robot configuration.
         def auto_load_all_task_libraries=(value)

@@ -14,6 +14,14 @@ module Syskit
                            valgrind_options gdb gdb_options log_level output oro_logfile working_directory
                            cmdline_args].freeze
 
+      # Statements of Syskit.conf about a running system (process servers,
+      # simulators, logging, ruby tasks): accepted, with a "not modelled"
+      # warning each (see Compat).
+      NOT_MODELLED = %i[use_ruby_tasks use_gazebo_world register_process_server remove_process_server
+                        connect_to_orocos_process_server redirect_local_process_server disables_local_process_server
+                        transformer_enabled= export_types= auto_restart_deployments_with_quarantines=
+                        exception_transition_timeout= logs only_load_models=].freeze
+
       # A Robot.init/requires/config/controller/actions block of the file.
       PhaseBlock = Struct.new(:phase, :block, :location)
 
@@ -45,6 +53,40 @@ module Syskit
         specs.each { |spec| add_spec(spec, prefix, location) }
         mappings.each { |spec, value| add_mapping(spec, value, prefix, location) }
         self
+      end
+
+      # Every deployment an .orogen file declares (Syskit's
+      # use_deployments_from).
+      def use_deployments_from(*libraries, **options)
+        location = Location.of_caller
+        check_options(options.keys, location)
+        libraries.each do |name|
+          library = @app.using_task_library(name.to_s, location: location)
+          library.deployments.each_value { |deployment| add(deployment, location) }
+        end
+        self
+      end
+
+      # Tasks started outside of Syskit's control, integrated in the
+      # network: planned as deployed tasks of their own name.
+      def use_unmanaged_task(mappings = {}, **options)
+        location = Location.of_caller
+        mappings = mappings.merge(options.reject { |key, _| key.is_a?(Symbol) })
+        check_options(options.keys.grep(Symbol), location)
+        mappings.each { |model, name| add_mapping(model, name, nil, location) }
+        self
+      end
+
+      # Simulation is not modelled: plans are of the real robot.
+      def sim?
+        false
+      end
+
+      NOT_MODELLED.each do |statement|
+        define_method(statement) do |*_args, **_options, &_block|
+          @app.not_modelled("Syskit.conf.#{statement}", Location.of_caller)
+          Compat::Ignored.instance
+        end
       end
 
       # Records a Robot.init/requires/... block (see Config::RobotDSL).

@@ -139,10 +139,24 @@ module Syskit
                       root: root
     end
 
-    def test_an_unknown_typekit_in_a_ruby_file
-      root = my_app(nil, 'models/devices/x.rb' => "module MyApp\n  import_types_from 'my_bus'\nend\n")
-      assert_reported load_problem(root), /no typekit 'my_bus'/, at: 'models/devices/x.rb:2',
-                                                                 hint: %r{models/typekits/my_bus.rb}, root: root
+    def test_a_typekit_without_a_description_makes_its_types_opaque
+      root = my_app(nil, 'models/devices/x.rb' => <<~RUBY)
+        module MyApp
+          import_types_from 'my_bus'
+          module Devices
+            device_type('Thing') { output_port 'out', '/my_bus/Frame' }
+          end
+        end
+      RUBY
+      app = load_app(root)
+      assert_predicate app.types.find('/my_bus/Frame'), :opaque?
+      assert_equal ['my_bus'], app.opaque_typekits.keys
+      app.unload
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal 0, status
+      assert_match Regexp.new('^models/devices/x.rb:2: warning: typekits without a description, ' \
+                              "their types taken as opaque: my_bus\n  hint: describe one in models/typekits/NAME.rb"), out
+      assert_equal 1, run_cli('check', '--app', root, '--strict')[2]
     end
 
     def test_a_misspelled_type

@@ -148,6 +148,12 @@ module Syskit
       (own + [beside]).uniq.select { |p| File.file?(p) }
     end
 
+    # Typekits imported without a description (their types are opaque),
+    # with where each was first imported.
+    def opaque_typekits
+      @typekits.opaque
+    end
+
     # Whether typekit +name+ is known (built in or described).
     def typekit?(name)
       Types::Registry::BUILTIN_TYPEKITS.include?(name) || !@typekits.find(name).nil?
@@ -162,8 +168,8 @@ module Syskit
     end
 
     # import_types_from (see Types::TypekitSearch#import).
-    def import_types(name, location: Location.of_caller, from_spec: false)
-      @typekits.import(name, location: location, from_spec: from_spec)
+    def import_types(name, location: Location.of_caller)
+      @typekits.import(name, location: location)
     end
 
     # The configuration file of +task_model+ (config/orogen/<lib>::<Task>.yml),

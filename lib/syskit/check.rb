@@ -18,6 +18,7 @@ module Syskit
     def run
       app.load(robots: :all, everything: true)
       @problems.concat(app.problems)
+      @problems << opaque_typekits_note unless app.opaque_typekits.empty?
       failed_files = app.problems.filter_map { |p| p.location&.path }.uniq
       app.profiles.values.sort_by(&:name).each { |profile| check_profile(profile, failed_files) }
       @problems = @problems.uniq { |p| [p.class, p.message, p.location.to_a] }
@@ -33,6 +34,13 @@ module Syskit
     end
 
     private
+
+    def opaque_typekits_note
+      names = app.opaque_typekits.keys.sort
+      Warning.new("typekits without a description, their types taken as opaque: #{names.join(', ')}",
+                  location: app.opaque_typekits.values.first,
+                  hint: 'describe one in models/typekits/NAME.rb (struct, enum, opaque) to have its values checked')
+    end
 
     def check_profile(profile, failed_files)
       @problems.concat(Checks::CanFilters.new(profile.robot).warnings)

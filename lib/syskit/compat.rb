@@ -45,12 +45,14 @@ module Syskit
 
       # The one place where any statement is accepted: the body of a model
       # kind that this gem does not model. (Modelled code never comes here.)
-      def method_missing(_name, *_args, **_options, &)
+      def method_missing(name, *_args, **_options, &)
+        return super if Ignored::CONVERSIONS.include?(name)
+
         Ignored.instance
       end
 
-      def respond_to_missing?(_name, _include_private = false)
-        true
+      def respond_to_missing?(name, _include_private = false)
+        !Ignored::CONVERSIONS.include?(name)
       end
     end
 

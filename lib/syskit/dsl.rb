@@ -7,6 +7,8 @@ module Syskit
     # Statements of the top level of a file (+using_task_library+ above
     # +module MyApp+, as in the seed).
     module TopLevelStatements
+      include Types::TypeNames
+
       private
 
       def using_task_library(name)

@@ -9,12 +9,17 @@ module Syskit
   # properties) explain a missing method through +explain_missing(name)+,
   # which returns +[message, hint]+.
   module UserCode
+    # instance_eval of a string, made at the top level: the file's constants
+    # resolve as in a file Ruby loads (+Robot+ is ::Robot), not from the
+    # gem's modules an instance_eval written here would add to its scope.
+    TOPLEVEL_INSTANCE_EVAL = TOPLEVEL_BINDING.eval('->(receiver, source, path) { receiver.instance_eval(source, path, 1) }')
+
     module_function
 
     # Evaluates the file at +path+ with +receiver+ as self; what it raises
     # becomes an +error_class+ error at the file's line.
     def evaluate(path, receiver, root: nil, error_class: FileLoadError)
-      receiver.instance_eval(File.read(path), path, 1)
+      TOPLEVEL_INSTANCE_EVAL.call(receiver, File.read(path), path)
     rescue ScriptError, StandardError => e
       raise translate(e, path: path, root: root, error_class: error_class)
     end

@@ -9,7 +9,10 @@ module Syskit
     module Files
       # Loads a Ruby file of the app, once.
       def load_file(path)
-        path = File.realpath(path)
+        # The path as Ruby's require finds it through the load path (the
+        # bundles' roots as given, symlinks kept), so that both mark a file
+        # loaded under the same name.
+        path = File.expand_path(path)
         return false if $LOADED_FEATURES.include?(path)
 
         # Marked as loaded first, so that a file that fails is reported once
@@ -61,9 +64,18 @@ module Syskit
           file = loc.absolute_path || loc.path
           next unless loc.label == '<top (required)>' && environment_file?(file) && File.file?(file)
 
-          real = File.realpath(file)
-          $LOADED_FEATURES << real unless $LOADED_FEATURES.include?(real)
+          names_of(file).each { |name| $LOADED_FEATURES << name unless $LOADED_FEATURES.include?(name) }
         end
+      end
+
+      # The names Ruby's require may know +file+ by: its real path and its
+      # path under each bundle root (which may be a symlink).
+      def names_of(file)
+        real = File.realpath(file)
+        bundle_roots.filter_map do |root|
+          real_root = File.realpath(root)
+          "#{root}#{real.delete_prefix(real_root)}" if real.start_with?("#{real_root}/")
+        end.push(real).uniq
       end
 
       # Module names a file without module statements is evaluated in. Files

@@ -17,14 +17,20 @@ module Syskit
       end
       alias inspect to_s
 
+      # Ruby's implicit conversions (to_ary, to_str, ...) are not taken:
+      # Ruby then treats the object as what it is, not as an array.
+      CONVERSIONS = %i[to_ary to_str to_hash to_proc to_int to_io to_regexp to_sym to_path to_a to_h].freeze
+
       private
 
-      def method_missing(_name, *_args, **_options, &)
+      def method_missing(name, *_args, **_options, &)
+        return super if CONVERSIONS.include?(name)
+
         self
       end
 
-      def respond_to_missing?(_name, _include_private = false)
-        true
+      def respond_to_missing?(name, _include_private = false)
+        !CONVERSIONS.include?(name)
       end
     end
   end

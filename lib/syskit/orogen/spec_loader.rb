@@ -12,7 +12,6 @@ module Syskit
       def initialize(app, library)
         @app = app
         @library = library
-        @opaque_ok = false
       end
 
       def load
@@ -54,9 +53,21 @@ module Syskit
         @app.orogen.register_deployment(library, deployment)
       end
 
-      # +import_types_from+: a typekit, or a C/C++ header whose types stay opaque.
+      # +import_types_from+: a typekit, or a C/C++ header. oroGen makes the
+      # project's typekit from its headers: the types of the project's
+      # namespace (/NAME/) and of the header's directory ('gps/Types.hpp':
+      # /gps/) are then opaque.
       def import_types(name, location)
-        @opaque_ok = true if @app.import_types(name, location: location, from_spec: true) != :typekit
+        return unless @app.import_types(name, location: location) == :header
+
+        own_typekit
+        @app.types.opaque_typekit(name.split('/').first) if name.include?('/')
+      end
+
+      # The project declares a typekit of its own (a header import or a
+      # typekit block): its types are opaque.
+      def own_typekit
+        @app.types.opaque_typekit(library.name)
       end
 
       def using_task_library(name, location)
@@ -64,7 +75,7 @@ module Syskit
       end
 
       def resolve_type(name, location)
-        @app.types.resolve(name, location: location, opaque_ok: @opaque_ok)
+        @app.types.resolve(name, location: location)
       end
 
       # A task model by full name, or by name relative to this library.

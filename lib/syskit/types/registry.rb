@@ -18,6 +18,9 @@ module Syskit
         'bool' => '/bool', 'string' => '/std/string', '/string' => '/std/string'
       }.freeze
 
+      # The template of oroGen's ro_ptr(type).
+      RO_PTR = '/RTT/extras/ReadOnlyPointer'
+
       # Typekits whose types are built in (no file to load).
       BUILTIN_TYPEKITS = %w[std].freeze
 
@@ -40,7 +43,9 @@ module Syskit
           return "#{normalize(m[1])}<#{normalize(m[2])}>"
         end
 
-        ALIASES.fetch(name) { name.start_with?('/') ? name : "/#{name}" }
+        # C++ spellings: base::samples::RigidBodyState is /base/samples/RigidBodyState.
+        name = name.gsub('::', '/')
+        ALIASES.fetch(name) { ALIASES.fetch(name.delete_prefix('/')) { name.start_with?('/') ? name : "/#{name}" } }
       end
 
       # The type called +name+, nil if it is not known. Containers and arrays
@@ -52,14 +57,16 @@ module Syskit
         @types[canonical] || derive(canonical)
       end
 
-      # Like {#find}, but raises a located Syskit::TypeError for unknown names,
-      # unless +opaque_ok+ says the name may come from an unreadable header.
-      def resolve(name, location: nil, opaque_ok: false)
+      # Like {#find}, but raises a located Syskit::TypeError for unknown names.
+      # The rule: a type is known when it is a base type, described by a
+      # typekit, or in the namespace of a typekit without a description (it
+      # is then opaque; see #opaque_typekit).
+      def resolve(name, location: nil)
         found = find(name)
         return found if found
 
         canonical = Registry.normalize(name)
-        return register(OpaqueType.new(canonical)) if opaque_ok || opaque_namespace?(canonical)
+        return register(OpaqueType.new(canonical)) if opaque_namespace?(canonical)
 
         raise unknown_type_error(canonical, location)
       end
@@ -91,13 +98,24 @@ module Syskit
 
       private
 
+      # A known type, or an opaque one of a namespace whose typekit has no
+      # description: what containers and arrays may hold, whatever the
+      # order types are first named in.
+      def find_element(name)
+        find(name) || (register(OpaqueType.new(name)) if opaque_namespace?(name))
+      end
+
       def derive(canonical)
         if (m = canonical.match(/\A(.+)\[(\d+)\]\z/))
-          element = find(m[1])
+          element = find_element(m[1])
           register(ArrayType.new(canonical, element, Integer(m[2]))) if element
         elsif (m = canonical.match(/\A(.*?)<(.+)>\z/))
-          element = find(m[2])
-          register(ContainerType.new(canonical, element)) if element && m[1] == '/std/vector'
+          element = find_element(m[2])
+          return unless element
+
+          if m[1] == '/std/vector' then register(ContainerType.new(canonical, element))
+          elsif m[1] == RO_PTR then register(OpaqueType.new(canonical))
+          end
         end
       end
 

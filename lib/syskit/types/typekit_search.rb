@@ -3,9 +3,9 @@
 module Syskit
   module Types
     # How +import_types_from NAME+ finds a typekit: built in (+std+), a Ruby
-    # description (NAME.rb in the search directories), a C/C++ header, or,
-    # in .orogen files, a typekit the gem has no description of, whose
-    # types are then accepted as opaque.
+    # description (NAME.rb in the search directories), a C/C++ header, or a
+    # typekit the gem has no description of, whose types (those under
+    # /NAME/) are then accepted as opaque.
     class TypekitSearch
       HEADER = /\.(h|hh|hpp|hxx)\z/i
 
@@ -16,12 +16,13 @@ module Syskit
         @registry = registry
         @dirs = dirs
         @imported = {}
+        @opaque = {}
       end
 
       # Imports typekit +name+ once. Returns :typekit when its types are
-      # known, :header for C/C++ headers and :opaque for a typekit without
-      # a description (accepted only with +from_spec+).
-      def import(name, location:, from_spec: false)
+      # described, :header for a C/C++ header and :opaque for a typekit
+      # without a description.
+      def import(name, location:)
         return :header if name.match?(HEADER)
         return @imported[name] if @imported.key?(name)
         return @imported[name] = :typekit if Registry::BUILTIN_TYPEKITS.include?(name)
@@ -31,14 +32,16 @@ module Syskit
           @imported[name] = :typekit
           importer = ->(typekit, at) { import(typekit, location: at) }
           TypekitLoader.new(@registry, name, importer).load(path)
-        elsif from_spec
-          @registry.opaque_typekit(name)
-          @imported[name] = :opaque
         else
-          raise FileLoadError.new("no typekit '#{name}'",
-                                  location: location, hint: "declare its types in models/typekits/#{name}.rb")
+          @registry.opaque_typekit(name)
+          @opaque[name] = location
+          @imported[name] = :opaque
         end
       end
+
+      # Typekits imported without a description, and where each was first
+      # imported.
+      attr_reader :opaque
 
       # The description of typekit +name+, nil when there is none.
       def find(name)

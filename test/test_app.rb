@@ -154,8 +154,8 @@ module Syskit
       app.unload
       out, _, status = run_cli('check', '--app', root)
       assert_equal 0, status
-      assert_match Regexp.new('^models/devices/x.rb:2: warning: typekits without a description, ' \
-                              "their types taken as opaque: my_bus\n  hint: describe one in models/typekits/NAME.rb"), out
+      assert_match Regexp.new('^models/devices/x.rb:2: warning: typekits without a description, their types ' \
+                              "taken as opaque: my_bus\n  hint: describe one in models/typekits/NAME.rb"), out
       assert_equal 1, run_cli('check', '--app', root, '--strict')[2]
     end
 

@@ -12,7 +12,8 @@ module Syskit
     # instance_eval of a string, made at the top level: the file's constants
     # resolve as in a file Ruby loads (+Robot+ is ::Robot), not from the
     # gem's modules an instance_eval written here would add to its scope.
-    TOPLEVEL_INSTANCE_EVAL = TOPLEVEL_BINDING.eval('->(receiver, source, path) { receiver.instance_eval(source, path, 1) }')
+    TOPLEVEL_INSTANCE_EVAL =
+      TOPLEVEL_BINDING.eval('->(receiver, source, path) { receiver.instance_eval(source, path, 1) }')
 
     module_function
 

@@ -6,6 +6,7 @@ module Syskit
     # explained with the statements that exist (see UserCode).
     module StatementsDSL
       include Types::TypeNames
+
       def explain_missing(name)
         statements = self.class.public_instance_methods(false).map(&:to_s) - %w[dsl_context]
         ["unknown statement '#{name}' in #{dsl_context}#{Naming.did_you_mean(name, statements)}",

@@ -278,12 +278,14 @@ module Syskit
       end
     end
 
+    # A warning: bundles extend libraries that are not installed everywhere
+    # (Rock then does not load the file either), but it may be a typo.
     def extension_without_library(lib)
-      FileLoadError.new(
-        "this file extends task library '#{lib}', but there is no #{lib}.orogen" \
+      Warning.new(
+        "this file extends task library '#{lib}', but there is no #{lib}.orogen on the search path: not loaded" \
         "#{Naming.did_you_mean(lib, orogen.available_library_names)}",
         location: Location.new(File.join(root, 'models', 'orogen', "#{lib}.rb"), 1),
-        hint: "name the file after its task library, or add models/orogen/#{lib}.orogen"
+        hint: "name the file after its task library, or add #{lib}.orogen to models/orogen or SYSKIT_OROGEN_PATH"
       )
     end
   end

@@ -2,6 +2,7 @@
 
 require 'syskit/compat/ignored'
 require 'syskit/compat/roby'
+require 'syskit/compat/core_extensions'
 
 module Syskit
   # Compatibility with real Rock files, in one place: the names Rock code
@@ -18,6 +19,15 @@ module Syskit
   # - accepted silently: what only a running system needs (use_deployment's
   #   process options).
   module Compat
+    # Ruby libraries of Rock's runtime that model files require (Roby's
+    # schedulers, the Gazebo bridge, Rock's Ruby types): when they are not
+    # installed, requiring one is a "not modelled" warning, not an error.
+    RUNTIME_LIBRARIES = %r{\A(roby|orocos|rock_gazebo|rock|syskit|transformer|base|concurrent|vizkit|typelib|utilrb)(/|\z)}
+
+    def self.runtime_library?(name)
+      RUNTIME_LIBRARIES.match?(name.to_s)
+    end
+
     # The top-level constants an active app installs besides OroGen and Types.
     def self.constants
       { Robot: Config::RobotDSL, Roby: Roby }

@@ -18,6 +18,17 @@ module Syskit
       def import_types_from(name)
         DSL.app!.import_types(name.to_s, location: Location.of_caller)
       end
+
+      # A Ruby library of Rock's runtime that is not installed here is not
+      # modelled: requiring it is a warning, and the file goes on loading.
+      def require(name)
+        super
+      rescue LoadError
+        raise unless Syskit.app && Compat.runtime_library?(name)
+
+        Syskit.app.not_modelled("the Ruby library '#{name}' (part of Rock's runtime)", Location.of_caller)
+        false
+      end
     end
 
     # Model definitions. Included in Module, private, like +attr_reader+.

@@ -31,7 +31,8 @@ module Syskit
       # searched last.
       def load_path
         roots = @app.bundle_roots
-        first = roots.flat_map { |root| [root, File.join(root, 'models')] }
+        # A bundle's lib/ holds the Ruby code its models require, as in Rock.
+        first = roots.flat_map { |root| [root, File.join(root, 'models'), File.join(root, 'lib')] }
         [first, roots.map { |root| File.dirname(root) }.uniq - first]
       end
 

@@ -49,6 +49,12 @@ module Syskit
         spec&.abstract?
       end
 
+      # What the .orogen file says of this model, as Syskit's orogen_model:
+      # +orogen_model.find_port('command').multiplexes+ changes a port.
+      def orogen_model
+        Orogen::ModelView.new(spec)
+      end
+
       # Static ports by name (inherited ones included).
       def ports
         spec ? spec.all_ports : {}

@@ -10,6 +10,17 @@ module Syskit
         @loader = loader
       end
 
+      # The task model called +name+ ('logger::Logger'), as Syskit's
+      # OroGen.syskit_model_by_orogen_name; its library must be loaded.
+      def syskit_model_by_orogen_name(name)
+        found = @loader.find_task_model(name.to_s)
+        return found if found
+
+        raise FileLoadError.new("there is no loaded task model '#{name}' (loaded libraries: #{loaded_list})",
+                                location: Location.of_caller,
+                                hint: "load its library with using_task_library '#{name.to_s.split('::').first}'")
+      end
+
       # Same as Syskit.extend_model.
       def extend_task(model, &)
         Syskit.extend_model(model, &)

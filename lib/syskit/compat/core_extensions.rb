@@ -1,0 +1,29 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Compat
+    # Methods of Rock's utilrb that bundles call on their modules. Included
+    # in Module once syskit is loaded, as utilrb does in Rock.
+    module CoreExtensions
+      # +Services.const_defined_here?('Pose')+: a constant of this module
+      # itself, not inherited.
+      def const_defined_here?(name)
+        const_defined?(name, false)
+      end
+
+      private
+
+      # +attribute(:providers) { {} }+: a reader whose value is the block's
+      # result the first time it is read, and a writer.
+      def attribute(name, &default)
+        ivar = :"@#{name}"
+        define_method(name) do
+          instance_variable_defined?(ivar) ? instance_variable_get(ivar) : instance_variable_set(ivar, default&.call)
+        end
+        attr_writer name
+      end
+    end
+  end
+end
+
+Module.include(Syskit::Compat::CoreExtensions)

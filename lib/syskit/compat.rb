@@ -22,7 +22,8 @@ module Syskit
     # Ruby libraries of Rock's runtime that model files require (Roby's
     # schedulers, the Gazebo bridge, Rock's Ruby types): when they are not
     # installed, requiring one is a "not modelled" warning, not an error.
-    RUNTIME_LIBRARIES = %r{\A(roby|orocos|rock_gazebo|rock|syskit|transformer|base|concurrent|vizkit|typelib|utilrb)(/|\z)}
+    RUNTIME_LIBRARIES =
+      %r{\A(roby|orocos|rock_gazebo|rock|syskit|transformer|base|concurrent|vizkit|typelib|utilrb)(/|\z)}
 
     def self.runtime_library?(name)
       RUNTIME_LIBRARIES.match?(name.to_s)
@@ -64,6 +65,30 @@ module Syskit
       def respond_to_missing?(name, _include_private = false)
         !Ignored::CONVERSIONS.include?(name)
       end
+    end
+
+    # oroGen's own classes, which specs sometimes call at their top level
+    # (+OroGen::Spec::Deployment.register_global_initializer(:x)+): any call
+    # is accepted with a "not modelled" warning naming it.
+    module NotModelledCalls
+      private
+
+      def method_missing(name, *_args, **_options, &)
+        return super if Ignored::CONVERSIONS.include?(name)
+
+        Syskit.app&.not_modelled("#{self}.#{name}", Location.of_caller)
+        Ignored.instance
+      end
+
+      def respond_to_missing?(name, _include_private = false)
+        !Ignored::CONVERSIONS.include?(name)
+      end
+    end
+
+    # +OroGen::Spec+: the namespace of oroGen's specification classes.
+    OrogenSpec = Module.new
+    %i[Project TaskContext Deployment Typekit Port Operation].each do |name|
+      OrogenSpec.const_set(name, Class.new.extend(NotModelledCalls))
     end
 
     # Declares a class of a model kind this gem does not model.

@@ -43,22 +43,16 @@ module Syskit
       end.tap { |error| error.set_backtrace(exception.backtrace || []) if error.backtrace.nil? }
     end
 
-    # The innermost line of the user's code: in the app or one of its
-    # bundles (a file required by +path+ is reported at its own line), else
-    # in +path+, else the first frame outside the gem.
+    # The innermost line of the user's code: in the file being evaluated
+    # (+path+) or in the app and its bundles (a file required from +path+ is
+    # reported at its own line), else the first frame outside the gem.
     def location_of(exception, path, root = nil)
-      roots = [root, *Syskit.app&.bundle_roots].compact.uniq
-      in_roots(exception, roots) ||
-        (path && Location.in_file(exception, path)) ||
-        Location.of_exception(exception)
-    end
-
-    def in_roots(exception, roots)
-      prefixes = roots.map { |root| "#{File.expand_path(root)}/" }
-      Location.from((exception.backtrace_locations || []).find do |loc|
-        loc_path = loc.absolute_path || loc.path
-        prefixes.any? { |prefix| loc_path.start_with?(prefix) } && !loc_path.start_with?(Location::GEM_LIB)
-      end)
+      prefixes = [root, *Syskit.app&.bundle_roots].compact.uniq.map { |r| "#{File.expand_path(r)}/" }
+      found = (exception.backtrace_locations || []).find do |loc|
+        file = loc.absolute_path || loc.path
+        file == path || (prefixes.any? { |prefix| file.start_with?(prefix) } && !file.start_with?(Location::GEM_LIB))
+      end
+      Location.from(found) || Location.of_exception(exception)
     end
 
     def syntax_error(exception, path)

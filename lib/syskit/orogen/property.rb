@@ -60,6 +60,7 @@ module Syskit
         @arguments << [name, type]
         self
       end
+      alias arg argument
 
       # Sets the documentation (and returns self, for chaining), or reads it.
       def doc(text = nil)

@@ -8,6 +8,7 @@ module Syskit
       def initialize(loader)
         super('OroGen')
         @loader = loader
+        const_set(:Spec, Compat::OrogenSpec)
       end
 
       # The task model called +name+ ('logger::Logger'), as Syskit's

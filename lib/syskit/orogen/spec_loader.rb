@@ -12,6 +12,7 @@ module Syskit
       def initialize(app, library)
         @app = app
         @library = library
+        @opaque_ok = false
       end
 
       def load
@@ -53,19 +54,15 @@ module Syskit
         @app.orogen.register_deployment(library, deployment)
       end
 
-      # +import_types_from+: a typekit, or a C/C++ header. oroGen makes the
-      # project's typekit from its headers: the types of the project's
-      # namespace (/NAME/) and of the header's directory ('gps/Types.hpp':
-      # /gps/) are then opaque.
+      # +import_types_from+: a typekit, or a C/C++ header. A header may
+      # declare types of any namespace: in a file that imports one, a type
+      # no typekit describes is accepted as opaque.
       def import_types(name, location)
-        return unless @app.import_types(name, location: location) == :header
-
-        own_typekit
-        @app.types.opaque_typekit(name.split('/').first) if name.include?('/')
+        @opaque_ok = true if @app.import_types(name, location: location) == :header
       end
 
-      # The project declares a typekit of its own (a header import or a
-      # typekit block): its types are opaque.
+      # The project declares a typekit of its own (a typekit block): its
+      # types (/NAME/) are opaque.
       def own_typekit
         @app.types.opaque_typekit(library.name)
       end
@@ -75,7 +72,7 @@ module Syskit
       end
 
       def resolve_type(name, location)
-        @app.types.resolve(name, location: location)
+        @app.types.resolve(name, location: location, opaque_ok: @opaque_ok)
       end
 
       # A task model by full name, or by name relative to this library.

@@ -39,6 +39,8 @@ module Syskit
         name = name.to_s.strip
         return "#{normalize(Regexp.last_match(1))}[#{Regexp.last_match(2)}]" if name =~ /\A(.+)\[(\d+)\]\z/
 
+        # A template whose '>' is missing: oroGen accepts it.
+        name = "#{name}#{'>' * (name.count('<') - name.count('>'))}" if name.count('<') > name.count('>')
         if (m = name.match(/\A(.*?)<(.+)>\z/))
           return "#{normalize(m[1])}<#{normalize(m[2])}>"
         end
@@ -60,16 +62,22 @@ module Syskit
       # Like {#find}, but raises a located Syskit::TypeError for unknown names.
       # The rule: a type is known when it is a base type, described by a
       # typekit, or in the namespace of a typekit without a description (it
-      # is then opaque; see #opaque_typekit).
-      def resolve(name, location: nil)
-        found = find(name)
+      # is then opaque; see #opaque_typekit); +opaque_ok+ (an .orogen file
+      # that imports a C/C++ header) accepts any other as opaque.
+      def resolve(name, location: nil, opaque_ok: false)
+        found = find(name) || (find(name) if describe(name))
         return found if found
 
         canonical = Registry.normalize(name)
-        return register(OpaqueType.new(canonical)) if opaque_namespace?(canonical)
+        return register(OpaqueType.new(canonical)) if opaque_ok || opaque_namespace?(canonical)
 
         raise unknown_type_error(canonical, location)
       end
+
+      # How a typekit description is found and imported when one of its
+      # types is named before the typekit was imported (see TypekitSearch):
+      # a block given the typekit's name, true when it imported one.
+      attr_writer :describer
 
       def register(type)
         @types[type.name] = type
@@ -98,11 +106,18 @@ module Syskit
 
       private
 
+      # Imports the description of the typekit +name+'s first segment
+      # names, if there is one not imported yet.
+      def describe(name)
+        namespace = Registry.normalize(name).delete_prefix('/').split(%r{[/<]}).first
+        @describer&.call(namespace)
+      end
+
       # A known type, or an opaque one of a namespace whose typekit has no
       # description: what containers and arrays may hold, whatever the
       # order types are first named in.
       def find_element(name)
-        find(name) || (register(OpaqueType.new(name)) if opaque_namespace?(name))
+        find(name) || (find(name) if describe(name)) || (register(OpaqueType.new(name)) if opaque_namespace?(name))
       end
 
       def derive(canonical)

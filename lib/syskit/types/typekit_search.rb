@@ -17,6 +17,17 @@ module Syskit
         @dirs = dirs
         @imported = {}
         @opaque = {}
+        registry.describer = ->(name) { describe(name) }
+      end
+
+      # Imports the description of typekit +name+ when there is one that is
+      # not imported yet: a type of a described typekit is known wherever
+      # it is named, whatever was imported before. True when it imported.
+      def describe(name)
+        return false if name.nil? || @imported.key?(name) || !(path = find(name))
+
+        import(name, location: Location.new(path, 1))
+        true
       end
 
       # Imports typekit +name+ once. Returns :typekit when its types are

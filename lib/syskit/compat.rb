@@ -99,7 +99,34 @@ module Syskit
       namespace.const_set(name, klass)
     end
 
+    # A Roby task service: what a task model provides without ports or a
+    # name (+provides Syskit::LoggerService+); recorded on the model.
+    TaskService = Struct.new(:name) do
+      def to_s
+        name
+      end
+    end
+    Syskit.const_set(:LoggerService, TaskService.new('Syskit::LoggerService'))
+
+    # Syskit's own logger, as Rock code calls it (+Syskit.warn 'x'+), at
+    # the levels of Robot's (SYSKIT_LOG).
+    module Logging
+      Config::RobotDSL::LEVELS.each do |level|
+        define_method(level) { |message = nil, &block| Config::RobotDSL.log(level, block ? block.call : message) }
+      end
+
+      def warn_about_new_naming_convention(*)
+        Config::RobotDSL.log('debug', 'a model is named with a deprecated name')
+      end
+    end
+    Syskit.extend(Logging)
+
     not_modelled_class(Syskit, :Composition, 'composition')
+    # Syskit's network generation engine and its logging support, which
+    # bundles hook into at runtime.
+    Syskit.const_set(:NetworkGeneration, Module.new)
+    Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
+    Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
     not_modelled_class(Syskit, :RubyTaskContext, 'ruby task context')
     not_modelled_class(Roby, :Task, 'Roby task')
     Roby.const_set(:Actions, Module.new)

@@ -31,11 +31,10 @@ module Syskit
       end
     end
 
-    # Model definitions. Included in Module, private, like +attr_reader+.
+    # Model definitions. Included in Module; public, as in Syskit (Rock's
+    # bundles call +Services.data_service_type+ from helper methods).
     module ModuleStatements
       include TopLevelStatements
-
-      private
 
       # +data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+
       def data_service_type(name, &)
@@ -74,6 +73,8 @@ module Syskit
       def robot(&)
         Profile.for_module(self, Location.of_caller).robot_block(&)
       end
+
+      private
 
       def profile_module(name, location)
         unless Naming.constant_name?(name)

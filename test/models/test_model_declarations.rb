@@ -63,8 +63,21 @@ module Syskit
                                                                           hint: /GpsF9/, root: root
     end
 
-    def test_a_model_defined_twice
-      error, root = problem_in("module MyApp\n  device_type 'Gyro'\n  device_type 'Gyro'\nend\n")
+    def test_a_model_declared_twice_is_reopened_with_a_warning
+      error, root = problem_in(<<~RUBY)
+        module MyApp
+          device_type 'Gyro'
+          device_type('Gyro') { output_port 'rate', 'double' }
+        end
+      RUBY
+      assert_kind_of Warning, error
+      assert_reported error, %r{MyApp::Gyro is declared again \(first at models/devices/things.rb:2\)},
+                      at: 'models/devices/things.rb:3', hint: /remove one/, root: root
+      assert MyApp::Gyro.ports.key?('rate'), 'the second declaration adds to the first'
+    end
+
+    def test_a_name_declared_as_another_kind_of_model
+      error, root = problem_in("module MyApp\n  device_type 'Gyro'\n  data_service_type 'Gyro'\nend\n")
       assert_reported error, %r{MyApp::Gyro is already defined at models/devices/things.rb:2},
                       at: 'models/devices/things.rb:3', hint: /another name/, root: root
     end

@@ -13,11 +13,12 @@ module Syskit
         # bundles' roots as given, symlinks kept), so that both mark a file
         # loaded under the same name.
         path = File.expand_path(path)
-        return false if $LOADED_FEATURES.include?(path)
+        names = names_of(path)
+        return false if names.any? { |name| $LOADED_FEATURES.include?(name) }
 
         # Marked as loaded first, so that a file that fails is reported once
         # rather than evaluated again by a later `require` of it.
-        $LOADED_FEATURES << path
+        $LOADED_FEATURES.concat(names)
         source = File.read(path)
         modules = source.match?(/^(module|class)\s+[A-Z]/) ? [] : namespace_for(path)
         eval_in_namespace(source, path, modules)

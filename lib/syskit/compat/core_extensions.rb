@@ -13,6 +13,21 @@ module Syskit
 
       private
 
+      # Roby's +backward_compatible_constant :OldName, 'New::Name', 'file'+:
+      # the old name of a model that moved.
+      def backward_compatible_constant(old_name, new_name, file)
+        require file
+        const_set(old_name, Object.const_get(new_name)) unless const_defined?(old_name, false)
+      end
+
+      # utilrb's +attr_predicate :enabled, true+: +enabled?+ (and +enabled=+).
+      def attr_predicate(name, writable = false) # rubocop:disable Style/OptionalBooleanParameter -- utilrb's
+        name = name.to_s.delete_suffix('?')
+        ivar = :"@#{name}"
+        define_method(:"#{name}?") { instance_variable_get(ivar) ? true : false }
+        attr_writer name if writable
+      end
+
       # +attribute(:providers) { {} }+: a reader whose value is the block's
       # result the first time it is read, and a writer.
       def attribute(name, &default)

@@ -17,6 +17,15 @@ module Syskit
       end
       alias inspect to_s
 
+      # It may be a hash key (+specialize child => Srv+).
+      def hash
+        __id__
+      end
+
+      def eql?(other)
+        equal?(other)
+      end
+
       # Ruby's implicit conversions (to_ary, to_str, ...) are not taken:
       # Ruby then treats the object as what it is, not as an array.
       CONVERSIONS = %i[to_ary to_str to_hash to_proc to_int to_io to_regexp to_sym to_path to_a to_h].freeze

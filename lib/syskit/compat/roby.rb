@@ -36,6 +36,11 @@ module Syskit
           false
         end
 
+        # Models have their current names (Syskit's naming conventions).
+        def backward_compatible_naming?
+          false
+        end
+
         # The app's models are loaded anyway; accepted.
         def load_default_models; end
 
@@ -72,6 +77,11 @@ module Syskit
       class << self
         def app
           Application.new(DSL.app!)
+        end
+
+        # Deprecation warnings of Rock's own code, shown at debug level.
+        def warn_deprecated(message, *)
+          Config::RobotDSL.log('debug', "deprecated: #{message}")
         end
 
         # Roby's scheduler runs tasks; accepted, with a warning.

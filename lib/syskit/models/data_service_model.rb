@@ -32,13 +32,7 @@ module Syskit
         end
         if namespace.const_defined?(name, false)
           existing = namespace.const_get(name, false)
-          # The gem's bundled common models give way to a real bundle's or
-          # the app's definition of the same model: it is reopened.
-          return existing.reopen(location, **options, &block) if existing.instance_of?(model_class) && existing.bundled?
-
-          where = existing.respond_to?(:declared_at) && existing.declared_at ? " at #{existing.declared_at}" : ''
-          raise DeclarationError.new("#{namespace}::#{name} is already defined#{where}",
-                                     location: location, hint: 'give the new model another name')
+          return redeclare(existing, "#{namespace}::#{name}", model_class, location, **options, &block)
         end
 
         model = model_class.new(location: location)
@@ -50,6 +44,27 @@ module Syskit
         model
       end
 
+      # A model declared again: the gem's bundled common models give way to
+      # a real bundle's or the app's declaration, and a model of the same
+      # kind is reopened, as Rock's bundles expect (Syskit lets the second
+      # declaration replace the first; reopening keeps what referred to the
+      # first one valid), with a warning. Anything else is an error.
+      def self.redeclare(existing, full_name, model_class, location, ...)
+        where = existing.respond_to?(:declared_at) && existing.declared_at ? " at #{existing.declared_at}" : ''
+        unless existing.instance_of?(model_class)
+          raise DeclarationError.new("#{full_name} is already defined#{where}",
+                                     location: location, hint: 'give the new model another name')
+        end
+
+        unless existing.bundled?
+          Syskit.app&.problems&.push(Warning.new(
+            "#{full_name} is declared again (first#{where}): both declarations apply",
+            location: location, hint: 'remove one of them, or give one another name'
+          ))
+        end
+        existing.reopen(location, ...)
+      end
+
       def initialize(location: nil, name: nil)
         super()
         @declared_at = location || Location.of_caller
@@ -57,6 +72,11 @@ module Syskit
         @ports = {}
         @parents = {}
         @timing = {}
+      end
+
+      # Where the model was declared, as Syskit's [[file, line]] list.
+      def definition_location
+        declared_at ? [[declared_at.path, declared_at.lineno]] : []
       end
 
       # Whether the gem's bundled common models declare this model.

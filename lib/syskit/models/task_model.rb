@@ -120,6 +120,8 @@ module Syskit
       # (also given as a hash: +provides Srv, { 'a' => 'b' }, as: 'x'+).
       def provides(model, positional_mappings = {}, as: nil, **mappings)
         location = Location.of_caller
+        return (@task_services ||= []) << model if model.is_a?(Compat::TaskService) && as.nil?
+
         mappings = positional_mappings.merge(mappings)
         unless model.is_a?(DataServiceModel)
           raise DeclarationError.new("provides expects a data service model, got #{model.inspect}",

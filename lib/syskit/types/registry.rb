@@ -79,10 +79,11 @@ module Syskit
       # a block given the typekit's name, true when it imported one.
       attr_writer :describer
 
-      def register(type)
-        @types[type.name] = type
-        segments = type.name.delete_prefix('/').split('/')
-        @namespace.add(segments, type) if segments.size > 1 && type.name.match?(%r{\A[/\w]+\z})
+      # Registers +type+ under its name, or under +name+ for a typedef.
+      def register(type, name = type.name)
+        @types[name] = type
+        segments = name.delete_prefix('/').split('/')
+        @namespace.add(segments, type) if segments.size > 1 && name.match?(%r{\A[/\w]+\z})
         type
       end
 

@@ -34,6 +34,12 @@ module Syskit
           @loader.define(name) { |full| OpaqueType.new(full) }
         end
 
+        # A typedef: +alias_type 'commands/Joints', 'samples/Joints'+ makes
+        # /NAME/commands/Joints the very type /NAME/samples/Joints is.
+        def alias_type(name, existing)
+          @loader.alias(name, existing)
+        end
+
         def import_types_from(name)
           @loader.import(name)
         end
@@ -45,7 +51,7 @@ module Syskit
         end
 
         def explain_missing(name)
-          statements = %w[struct enum opaque import_types_from accept_unknown_types]
+          statements = %w[struct enum opaque alias_type import_types_from accept_unknown_types]
           ["unknown statement '#{name}' in a typekit file#{Naming.did_you_mean(name, statements)}",
            "typekit files declare #{statements.join(', ')}"]
         end
@@ -84,13 +90,22 @@ module Syskit
       end
 
       def define(relative)
-        full = relative.start_with?('/') ? relative : "/#{name}/#{relative}"
+        full = full_name(relative)
         if registry.find(full)
           raise TypeError.new("type #{full} is already defined",
                               location: Location.of_caller, hint: 'remove the second definition')
         end
 
-        registry.register(yield(full))
+        registry.register(yield(full), full)
+      end
+
+      def alias(relative, existing)
+        target = registry.resolve(full_name(existing), location: Location.of_caller)
+        define(relative) { target }
+      end
+
+      def full_name(relative)
+        relative.start_with?('/') ? relative : "/#{name}/#{relative}"
       end
 
       def import(name)

@@ -18,14 +18,12 @@ module Syskit
     end
 
     # Loads the app at +root+ (unloaded after the test) and fails on any
-    # problem unless +problems: true+.
+    # error (warnings are the test's to check) unless +problems: true+.
     def load_app(root, problems: false, **options)
       app = App.new(root)
       (@loaded_apps ||= []) << app
       app.load(**options)
-      if !problems && app.problems.any?
-        flunk "#{root} has problems:\n#{app.problems.map { |e| e.report(root) }.join("\n")}"
-      end
+      flunk "#{root} has problems:\n#{app.errors.map { |e| e.report(root) }.join("\n")}" if !problems && app.errors.any?
       app
     end
 

@@ -31,7 +31,7 @@ module Syskit
 
     # The top-level constants an active app installs besides OroGen and Types.
     def self.constants
-      { Robot: Config::RobotDSL, Roby: Roby }
+      { Robot: Config::RobotDSL, Roby: Roby, Conf: Conf }
     end
 
     # Records that a model of kind +kind+ (a composition, ...) was defined,
@@ -50,6 +50,12 @@ module Syskit
       def inherited(subclass)
         super
         Compat.model_defined(not_modelled_kind, subclass, Location.of_caller)
+      end
+
+      # An action's description, which minitest's Kernel#describe would
+      # otherwise take in test files.
+      def describe(*)
+        Ignored.instance
       end
 
       private
@@ -129,6 +135,11 @@ module Syskit
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
     not_modelled_class(Syskit, :RubyTaskContext, 'ruby task context')
     not_modelled_class(Roby, :Task, 'Roby task')
+    Roby.const_set(:Schedulers, Module.new)
+    not_modelled_class(Roby::Schedulers, :Temporal, 'Roby scheduler')
+    # Roby's configuration object (+Conf.gazebo.use_sim_time = true+).
+    Conf = Module.new.extend(NotModelledCalls)
+    def Conf.to_s = 'Conf'
     Roby.const_set(:Actions, Module.new)
     not_modelled_class(Roby::Actions, :Interface, 'action interface')
     Roby.const_set(:Interface, Module.new)

@@ -1,0 +1,171 @@
+# frozen_string_literal: true
+
+require 'helper'
+require 'json'
+
+module Syskit
+  # Apps written as Rock's bundles are (SPEC 12): test/fixtures/rock/rover
+  # uses the bundle test/fixtures/rock/base_parts, reopens task models as
+  # classes, configures a bus through an operation, and has the robot
+  # configurations, compositions and actions real bundles have.
+  class TestRockBundles < Minitest::Test
+    ROVER = File.join(FIXTURES, 'rock', 'rover')
+
+    def plan_json(*args)
+      out, err, status = run_cli('plan', '--app', ROVER, '--format', 'json', *args)
+      assert_equal 0, status, err
+      JSON.parse(out)
+    end
+
+    def test_check_accepts_the_bundle_and_warns_once_per_construct_it_does_not_model
+      out, _, status = run_cli('check', '--app', ROVER)
+      assert_equal 0, status, out
+      warnings = out.lines.grep(/: warning: /).map { |l| l.sub(/: not modelled by this gem.*/m, '').strip }
+      assert_equal [
+        'models/actions/main.rb:4: warning: action interface Rover::Actions::Main',
+        'models/compositions/follow_wall.rb:6: warning: composition Rover::Compositions::FollowWall',
+        "#{File.join(FIXTURES, 'rock',
+                     'base_parts')}/models/orogen/scanner.rb:10: warning: transformer in scanner::Task",
+        'models/orogen/can_hub.rb:20: warning: poll in can_hub::Task',
+        'models/profiles/base.rb:24: warning: use_gazebo_model in profile Rover::Profiles::Base',
+        'models/profiles/base.rb:25: warning: define in profile Rover::Profiles::Base',
+        'models/profiles/base.rb:26: warning: define in profile Rover::Profiles::Base',
+        "config/robots/default.rb:4: warning: the Ruby library 'roby/schedulers/temporal' (part of Rock's runtime)",
+        'config/robots/default.rb:5: warning: Roby.scheduler',
+        'config/robots/default.rb:20: warning: Conf.rover',
+        'config/robots/sim.rb:5: warning: Syskit.conf.use_gazebo_world',
+        'config/robots/sim.rb:6: warning: Syskit.conf.use_ruby_tasks'
+      ], warnings
+      assert_match(/^Rover: 0 error\(s\), 12 warning\(s\)$/, out)
+    end
+
+    def test_the_plan_of_a_rock_style_robot
+      plan = plan_json
+      assert_equal(%w[battery_temp can0 front_scanner_test motor_temp], plan['tasks'].map { |t| t['name'] })
+      scanner = plan['tasks'].find { |t| t['name'] == 'front_scanner_test' }
+      # 'scanner_test' => 'front_' prefixes the deployment's tasks.
+      assert_equal 'front_scanner_test', scanner['deployment']
+      # Sections from the other bundle, enum values written as symbols; the
+      # argument's default, set through orocos_task in configure.
+      assert_equal({ 'max_range' => 25.0, 'mode' => 'PRECISE', 'port' => '/dev/ttyACM0' }, scanner['properties'])
+      assert_equal %w[default outdoor], scanner['conf']
+    end
+
+    def test_operations_called_in_configure_are_in_the_plan_and_run_their_stub
+      can0 = plan_json['tasks'].find { |t| t['name'] == 'can0' }
+      assert_equal [{ 'name' => 'watch', 'arguments' => ['motor_temp', 0x210, 0x7ff] },
+                    { 'name' => 'watch', 'arguments' => ['battery_temp', 0x211, 0x7ff] }], can0['operations']
+      created = can0['ports'].select { |p| p['dynamic'] }.map { |p| p['name'] }
+      assert_equal %w[battery_temp motor_temp], created
+      assert_equal({ 'device' => 'can0', 'deviceType' => 'SOCKET' }, can0['properties'])
+      out, = run_cli('plan', '--app', ROVER)
+      assert_match(/^    operations  watch\("motor_temp", 528, 2047\)\n {16}watch\("battery_temp", 529, 2047\)$/, out)
+    end
+
+    def test_a_robot_configuration_that_requires_another_one
+      plan = plan_json('--robot', 'sim')
+      assert_equal 'sim', plan['robot']
+      assert_equal 4, plan['tasks'].size
+    end
+
+    def test_robot_logs_go_to_stderr_at_the_level_syskit_log_sets
+      _, err, = run_cli('plan', '--app', ROVER)
+      refute_match(/Robot INFO/, err)
+      with_env('SYSKIT_LOG' => 'info') do
+        _, err, = run_cli('plan', '--app', ROVER)
+        assert_match(/^Robot INFO: front_lidar: frames body, lidar$/, err)
+      end
+    end
+
+    def test_a_reopened_task_model_is_the_model_of_extend_model
+      app = load_app(ROVER)
+      app.using_task_library('scanner')
+      assert_same OroGen.scanner.Task, OroGen::Scanner::Task
+      assert_equal ['lidar'], OroGen::Scanner::Task.driver_services.map(&:name)
+      assert_equal({ range_limit: 25.0 }, OroGen::Scanner::Task.argument_defaults)
+    end
+
+    def test_the_bundled_can_model_gives_way_to_a_real_common_models_bundle
+      bundles = write_app({ 'common_models/models/devices/bus/can.rb' => <<~RUBY,
+        import_types_from 'canbus'
+        module CommonModels
+          module Devices
+            module Bus
+              com_bus_type 'CAN', message_type: '/canbus/Message' do
+                extend_attached_device_configuration do
+                  dsl_attribute(:can_id) { |id, mask = id| [Integer(id), Integer(mask)] }
+                  def from_the_real_bundle; end
+                end
+              end
+            end
+          end
+        end
+      RUBY
+                            'common_models/models/orogen/canbus.rb' => <<~RUBY }, name: 'bundles')
+                              class OroGen::Canbus::Task
+                                driver_for CommonModels::Devices::Bus::CAN, as: 'driver'
+                                def configure; super; end
+                              end
+                            RUBY
+      root = my_app("com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\n",
+                    'config/syskit.yml' => "name: MyApp\nbundles: [common_models]\n")
+      with_env('SYSKIT_BUNDLE_PATH' => bundles) do
+        app = load_app(root)
+        bus = app.profiles.values.first.robot.find_device('can0')
+        assert_equal 'CommonModels::Devices::Bus::CAN', bus.model.name
+        assert_equal File.join(bundles, 'common_models', 'models', 'devices', 'bus', 'can.rb'),
+                     bus.model.declared_at.path
+        app.using_task_library('canbus')
+        assert_equal ['driver'], OroGen.canbus.Task.driver_services.map(&:name),
+                     "the gem's canbus extension gives way to the bundle's"
+      end
+    end
+
+    def test_an_app_file_declaring_the_bundled_can_model_reopens_it
+      root = my_app(nil, 'models/devices/bus/can.rb' => <<~RUBY)
+        module CommonModels
+          module Devices
+            module Bus
+              com_bus_type 'CAN', message_type: '/canbus/Message' do
+                worstcase_processing_time 0.2
+              end
+            end
+          end
+        end
+      RUBY
+      app = load_app(root)
+      assert_empty app.problems
+      assert_equal 0.2, CommonModels::Devices::Bus::CAN.worstcase_processing_time
+    end
+
+    def test_bundles_named_by_rock_app_yml_and_register_app
+      other = write_app({ 'models/services/pose.rb' => <<~RUBY }, name: 'other_bundle')
+        import_types_from 'base'
+        module OtherBundle
+          data_service_type('Pose') { output_port 'pose', '/base/samples/RigidBodyState' }
+        end
+      RUBY
+      for_app_yml = my_app(nil, 'config/app.yml' => "bundle:\n  dependencies:\n    - other_bundle\n",
+                                'models/devices/x.rb' => "require 'other_bundle/models/services/pose'\n")
+      with_env('ROCK_BUNDLE_PATH' => File.dirname(other)) do
+        app = load_app(for_app_yml)
+        assert_equal %w[MyApp other_bundle common_models], app.bundles.map(&:name)
+        assert_kind_of Models::DataServiceModel, OtherBundle::Pose
+        app.unload
+      end
+      for_robot = my_app(nil, 'config/robots/default.rb' => "Robot.init do\n  Roby.app.register_app '#{other}'\nend\n",
+                              'models/devices/x.rb' => "require 'models/services/pose'\n")
+      assert_includes load_app(for_robot).bundle_roots, other
+    end
+
+    private
+
+    def with_env(vars)
+      saved = vars.keys.to_h { |k| [k, ENV.fetch(k, nil)] }
+      vars.each { |k, v| ENV[k] = v }
+      yield
+    ensure
+      saved.each { |k, v| ENV[k] = v }
+    end
+  end
+end

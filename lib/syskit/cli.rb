@@ -7,6 +7,7 @@ require 'syskit/render/text'
 require 'syskit/render/json'
 require 'syskit/render/dot'
 require 'syskit/cli/support'
+require 'syskit/test/runner'
 
 module Syskit
   # `syskit`: thin Thor commands that parse options, call one function of the
@@ -69,23 +70,28 @@ module Syskit
       end
     end
 
-    desc 'test [FILES...]', "run an app's tests (every test/**/test_*.rb by default)"
+    desc 'test [OPTIONS] [FILES...]', "run an app's tests (every test/**/test_*.rb by default)"
     long_desc <<~TEXT
-      Runs the app's minitest files with the gem's test harness
-      (require 'syskit/test'), in the app's directory. Exits with a non-zero
-      status when a test fails.
+      Runs the app's minitest files with syskit's test harness set up first,
+      so test files need no require (as with Syskit's own runner). Options
+      after the command go to minitest: -n/--name PATTERN (run the tests
+      whose name matches), -e/--exclude PATTERN, -s/--seed N, -v/--verbose.
+      Exits with minitest's status.
 
-      Example: syskit test test/profiles/live/test_base.rb
+      Examples: syskit test test/orogen/test_canbus.rb -n /watch/
+                syskit test --app ~/dev/awesome_robot -v
     TEXT
     method_option :app, type: :string, desc: 'the app directory'
-    def test(*files)
-      root = app_root
-      files = files.map { |f| File.expand_path(f) }
-      files = Dir[File.join(root, 'test', '**', 'test_*.rb')] if files.empty?
-      loader = 'ARGV.each { |f| require f }'
-      ok = system({ 'SYSKIT_APP' => root }, RbConfig.ruby, '-I', File.expand_path('..', __dir__),
-                  '-e', loader, *files, chdir: root)
-      exit($?.exitstatus || 1) unless ok # rubocop:disable Style/SpecialGlobalVars
+    stop_on_unknown_option! :test
+    def test(*args)
+      status = 0
+      reporting_errors(-> { Dir.pwd }) do
+        parsed = Test::Runner.parse(args)
+        root = parsed.app ? File.expand_path(parsed.app) : app_root
+        files = Test::Runner.test_files(root, parsed.files)
+        status = Test::Runner.spawn(root, files, parsed.minitest)
+      end
+      exit(status) unless status.zero?
     end
 
     private

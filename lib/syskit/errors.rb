@@ -3,31 +3,16 @@
 require 'syskit/location'
 
 module Syskit
-  # Base of every error a user can meet. It says what is wrong, where (the
+  # What every error a user can meet says: what is wrong, where (the
   # user's file and line) and how to fix it.
-  class Error < StandardError
+  module Reported
     attr_reader :location, :hint
-
-    def initialize(message, location: nil, hint: nil)
-      super(message)
-      @location = location
-      @hint = hint
-    end
 
     # The error for a terminal: "file:line: message" then an indented hint.
     def report(root = nil)
       first = location ? "#{location.to_s(root)}: #{one_line(message)}" : one_line(message)
       hint ? "#{first}\n  hint: #{one_line(hint)}" : first
     end
-
-    private
-
-    # Names from user files may hold newlines; a report keeps one line each.
-    def one_line(text)
-      text.to_s.gsub("\n", '\n')
-    end
-
-    public
 
     # The error as plain data, for `--format json`.
     def to_h(root = nil)
@@ -43,6 +28,46 @@ module Syskit
       copy = dup
       copy.instance_variable_set(:@location, location)
       copy
+    end
+
+    private
+
+    def locate(location, hint)
+      @location = location
+      @hint = hint
+    end
+
+    # Names from user files may hold newlines; a report keeps one line each.
+    def one_line(text)
+      text.to_s.gsub("\n", '\n')
+    end
+  end
+
+  # Base of every error a user can meet.
+  class Error < StandardError
+    include Reported
+
+    def initialize(message, location: nil, hint: nil)
+      super(message)
+      locate(location, hint)
+    end
+
+    # `rescue Syskit::Error` also catches InvalidArgument, which must be a
+    # Ruby ArgumentError as well.
+    def self.===(other)
+      super || (equal?(Error) && other.is_a?(Reported))
+    end
+  end
+
+  # An invalid value given to a device attribute (a CAN filter that can
+  # never match): a Syskit error that is also an ArgumentError, as Rock's
+  # tests expect (+assert_raises(ArgumentError) { dev.can_id(0xf, 0xe) }+).
+  class InvalidArgument < ArgumentError
+    include Reported
+
+    def initialize(message, location: nil, hint: nil)
+      super(message)
+      locate(location, hint)
     end
   end
 

@@ -234,7 +234,7 @@ module Syskit
             kind == :opt ? "#{n} = ..." : n.to_s
           end
         end
-        DeclarationError.new(
+        (error.is_a?(ArgumentError) ? InvalidArgument : DeclarationError).new(
           "#{attr}(#{args.map(&:inspect).join(', ')}) on #{self}: #{error.message}",
           location: Location.of_caller,
           hint: params ? "#{attr} takes (#{params.join(', ')})" : "check the arguments of #{attr}"

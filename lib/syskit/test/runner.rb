@@ -1,0 +1,105 @@
+# frozen_string_literal: true
+require 'rbconfig'
+
+module Syskit
+  module Test
+    # `syskit test` and an app's `rake test`: runs test files as Syskit runs
+    # them. The harness (require 'syskit/test': the app loaded, `describe`
+    # blocks with Syskit's assertions) is set up before the files are
+    # loaded, so that they need no require; minitest's own options
+    # (-n/--name, -e/--exclude, -s/--seed, -v/--verbose) go to minitest.
+    #
+    # The tests run in a process of their own (#spawn): the files are
+    # loaded there by #run_files, then minitest runs at exit, as it does
+    # for any minitest file, and its status is the process's.
+    class Runner
+      # minitest's options, and whether each takes a value.
+      MINITEST_OPTIONS = { '-n' => true, '--name' => true, '-e' => true, '--exclude' => true,
+                           '-s' => true, '--seed' => true, '-v' => false, '--verbose' => false }.freeze
+
+      Arguments = Struct.new(:files, :minitest, :app)
+
+      # Splits `syskit test` arguments into test files, minitest options and
+      # --app (which may come after a minitest option); raises a Syskit
+      # error for an option neither knows.
+      def self.parse(args)
+        files = []
+        minitest = []
+        app = nil
+        args = args.dup
+        until args.empty?
+          arg = args.shift
+          name, value = arg.split('=', 2)
+          if name == '--app'
+            app = value || args.shift
+          elsif MINITEST_OPTIONS.key?(name)
+            minitest << name
+            minitest << (value || args.shift) if MINITEST_OPTIONS[name]
+          elsif arg.start_with?('-') && arg != '-'
+            raise unknown_option(arg)
+          else
+            files << arg
+          end
+        end
+        Arguments.new(files, minitest, app)
+      end
+
+      def self.unknown_option(arg)
+        Error.new("syskit test does not know the option '#{arg}'",
+                  hint: "minitest's options: -n/--name PATTERN, -e/--exclude PATTERN, -s/--seed N, -v/--verbose; " \
+                        'syskit test --help lists them all')
+      end
+
+      # The test files: +files+ (relative to +pwd+), else every
+      # test/**/test_*.rb of the app. A file that does not exist is a
+      # located error.
+      def self.test_files(root, files, pwd: Dir.pwd)
+        return Dir[File.join(root, 'test', '**', 'test_*.rb')].sort if files.empty?
+
+        files.map do |file|
+          path = File.expand_path(file, pwd)
+          next path if File.file?(path)
+
+          raise FileLoadError.new(
+            "no test file '#{file}'",
+            location: Location.new(path, 1),
+            hint: "give the path of a test file (from the current directory), e.g. #{Location.new(
+              File.join(root, 'test', 'profiles', 'test_base.rb'), 1
+            ).relative_path(Dir.pwd)}"
+          )
+        end
+      end
+
+      # Runs the tests of the app at +root+ in a new process; returns its
+      # exit status.
+      def self.spawn(root, files, minitest)
+        lib = File.expand_path('../..', __dir__)
+        script = "require 'syskit/test/runner'; Syskit::Test::Runner.run_files(ARGV)"
+        env = { 'SYSKIT_APP' => root }
+        ok = system(env, RbConfig.ruby, '-I', lib, '-e', script, *files, '--', *minitest, chdir: root)
+        ok.nil? ? 1 : Process.last_status.exitstatus || 1
+      end
+
+      # In the test process: sets the harness up, loads the files given
+      # before '--', and leaves minitest the options given after it.
+      def self.run_files(argv)
+        separator = argv.index('--') || argv.size
+        files = argv[0...separator]
+        ARGV.replace(argv[(separator + 1)..] || [])
+        require 'syskit/test'
+        files.each { |file| load_test_file(file) }
+      end
+
+      # Loads a test file; what it raises while being loaded (a syntax
+      # error, a typo at its top level) is reported at its line, and the
+      # tests do not run.
+      def self.load_test_file(path)
+        require path
+      rescue Syskit::Error, ScriptError, StandardError => e
+        error = UserCode.translate(e, path: path, root: Test.app.root)
+        warn error.report(Dir.pwd)
+        exit 1
+      end
+    end
+  end
+end

@@ -89,9 +89,10 @@ module Syskit
                 end
               end
 
-              it 'refuses to deploy a task without a device' do
-                error = assert_raises(Syskit::NetworkError) { syskit_stub_deploy_and_configure(OroGen.imu.Task) }
-                assert_match(/a driver task without a device is refused/, error.message)
+              it 'stubs the devices of a task model given instead of a device, as Syskit does' do
+                task = syskit_stub_deploy_and_configure(OroGen.imu.Task)
+                assert_kind_of OroGen.imu.Task, task
+                assert_equal MyApp::Devices::IMU, task.imu_dev.model
               end
             end
           end

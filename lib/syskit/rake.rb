@@ -1,18 +1,26 @@
 # frozen_string_literal: true
 
-require 'rake/testtask'
+require 'rake'
+require 'shellwords'
+require 'syskit/test/runner'
 
 module Syskit
   # Rake tasks for apps: `require 'syskit/rake'` in an app's Rakefile gives
-  # it `rake test`, which runs test/**/test_*.rb with the gem's test harness.
+  # it `rake test`, which runs test/**/test_*.rb as `syskit test` does
+  # (TEST=file runs one file, TESTOPTS passes options to minitest).
   module RakeTasks
-    GEM_LIB = File.expand_path('..', __dir__)
-
     def self.define_test_task(name = :test)
-      ::Rake::TestTask.new(name) do |t|
-        t.libs << GEM_LIB << 'test'
-        t.test_files = FileList['test/**/test_*.rb']
-        t.warning = false
+      Rake.application.last_description = "run the app's tests with syskit's test harness"
+      Rake::Task.define_task(name) do
+        root = Rake.application.original_dir
+        files = ENV['TEST'] ? [ENV['TEST']] : []
+        options = Shellwords.split(ENV.fetch('TESTOPTS', ''))
+        status = Test::Runner.spawn(root, Test::Runner.test_files(root, files, pwd: root),
+                                    Test::Runner.parse(options).minitest)
+        exit(status) unless status.zero?
+      rescue Syskit::Error => e
+        warn e.report(root)
+        exit 1
       end
     end
   end
@@ -20,5 +28,5 @@ end
 
 unless Rake::Task.task_defined?(:test)
   Syskit::RakeTasks.define_test_task
-  task default: :test
+  Rake::Task.define_task(default: :test)
 end

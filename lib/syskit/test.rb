@@ -5,6 +5,8 @@ require 'minitest/spec'
 require 'syskit'
 require 'syskit/test/stubs'
 require 'syskit/test/profile_assertions'
+require 'syskit/test/task_assertions'
+require 'syskit/test/runtime_only'
 
 module Syskit
   # Test support for apps: `require 'syskit/test'` at the top of a test
@@ -24,6 +26,18 @@ module Syskit
     class Spec < Minitest::Spec
       include Stubs
       include ProfileAssertions
+      include TaskAssertions
+      include RuntimeOnly
+      extend RuntimeOnly::ClassMethods
+    end
+
+    # Failures are reported at the test's line: frames of minitest and of
+    # this gem are left out of their backtraces.
+    class BacktraceFilter < Minitest::BacktraceFilter
+      def filter(backtrace)
+        kept = super.reject { |line| line.start_with?(Location::GEM_LIB) }
+        kept.empty? ? super : kept
+      end
     end
 
     class << self
@@ -59,3 +73,4 @@ end
 
 Syskit::Test.app
 Minitest::Spec.register_spec_type(Syskit::Test::Spec) { |_desc| true }
+Minitest.backtrace_filter = Syskit::Test::BacktraceFilter.new

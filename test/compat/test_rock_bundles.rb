@@ -85,28 +85,36 @@ module Syskit
       assert_equal({ range_limit: 25.0 }, OroGen::Scanner::Task.argument_defaults)
     end
 
-    def test_the_bundled_can_model_gives_way_to_a_real_common_models_bundle
-      bundles = write_app({ 'common_models/models/devices/bus/can.rb' => <<~RUBY,
-        import_types_from 'canbus'
-        module CommonModels
-          module Devices
-            module Bus
-              com_bus_type 'CAN', message_type: '/canbus/Message' do
-                extend_attached_device_configuration do
-                  dsl_attribute(:can_id) { |id, mask = id| [Integer(id), Integer(mask)] }
-                  def from_the_real_bundle; end
-                end
+    COMMON_MODELS_CAN = <<~RUBY
+      import_types_from 'canbus'
+      module CommonModels
+        module Devices
+          module Bus
+            com_bus_type 'CAN', message_type: '/canbus/Message' do
+              extend_attached_device_configuration do
+                dsl_attribute(:can_id) { |id, mask = id| [Integer(id), Integer(mask)] }
               end
             end
           end
         end
-      RUBY
-                            'common_models/models/orogen/canbus.rb' => <<~RUBY }, name: 'bundles')
-                              class OroGen::Canbus::Task
-                                driver_for CommonModels::Devices::Bus::CAN, as: 'driver'
-                                def configure; super; end
-                              end
-                            RUBY
+      end
+    RUBY
+
+    COMMON_MODELS_CANBUS = <<~RUBY
+      class OroGen::Canbus::Task
+        driver_for CommonModels::Devices::Bus::CAN, as: 'driver'
+      end
+    RUBY
+
+    # A directory of bundles holding a common_models bundle with its own CAN
+    # bus model and canbus extension.
+    def write_common_models
+      write_app({ 'common_models/models/devices/bus/can.rb' => COMMON_MODELS_CAN,
+                  'common_models/models/orogen/canbus.rb' => COMMON_MODELS_CANBUS }, name: 'bundles')
+    end
+
+    def test_the_bundled_can_model_gives_way_to_a_real_common_models_bundle
+      bundles = write_common_models
       root = my_app("com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\n",
                     'config/syskit.yml' => "name: MyApp\nbundles: [common_models]\n")
       with_env('SYSKIT_BUNDLE_PATH' => bundles) do

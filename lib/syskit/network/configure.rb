@@ -16,10 +16,11 @@ module Syskit
         end
       end
 
-      private
-
+      # Configures one task: its sections, configure method and stubs.
+      # Errors go to the context. A task made for no device (a component a
+      # test configures on its own) has no device.
       def configure(task)
-        device = @context.device_of(task)
+        device = task.requirement&.device
         apply_sections(task, device)
         user_code(task, device, 'configure') { task.configure }
         component = task.orocos_task
@@ -32,8 +33,10 @@ module Syskit
         @context.error(e)
       end
 
+      private
+
       def apply_sections(task, device)
-        location = device.conf_location || device.declared_at
+        location = device && (device.conf_location || device.declared_at)
         file = @context.app.conf_file(task.model)
         unless file
           return if task.conf == ['default']
@@ -86,7 +89,7 @@ module Syskit
         raise
       rescue ScriptError, StandardError => e
         raise UserCode.translate(e, root: @context.app.root, error_class: ConfigureMethodError,
-                                    context: "in #{task.model.name}'s #{what} for #{device}")
+                                    context: "in #{task.model.name}'s #{what}#{" for #{device}" if device}")
       end
 
       # Per-device ports the bus driver must have: created by its stub blocks

@@ -1,4 +1,5 @@
 # frozen_string_literal: true
+
 require 'rbconfig'
 
 module Syskit
@@ -54,7 +55,7 @@ module Syskit
       # test/**/test_*.rb of the app. A file that does not exist is a
       # located error.
       def self.test_files(root, files, pwd: Dir.pwd)
-        return Dir[File.join(root, 'test', '**', 'test_*.rb')].sort if files.empty?
+        return Dir[File.join(root, 'test', '**', 'test_*.rb')] if files.empty?
 
         files.map do |file|
           path = File.expand_path(file, pwd)

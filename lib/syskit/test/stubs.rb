@@ -39,7 +39,9 @@ module Syskit
         bus = syskit_stub_com_bus(bus) if bus.is_a?(Models::ComBusModel)
         base = base_model || parent_model || Syskit::Device
         model, driver = attached_model_and_driver(bus, base, driver, bus_to_client, client_to_bus)
-        device = syskit_stub_robot.add_device(Robot::Device, model, as || syskit_stub_name('dev'),
+        # A bus attached to a bus (+base_model: N2k::Bus+) is a bus itself.
+        kind = model.is_a?(Models::ComBusModel) ? Robot::ComBus : Robot::Device
+        device = syskit_stub_robot.add_device(kind, model, as || syskit_stub_name('dev'),
                                               using: driver, options: {}, location: Location.of_caller)
         device.driver_model = driver
         syskit_stub_robot.attach(device, bus, client_to_bus: client_to_bus, bus_to_client: bus_to_client,
@@ -50,7 +52,17 @@ module Syskit
       # Generates the network of +device+ (and its buses) with stub
       # deployments, configures it in order, and returns the device's task.
       # The task is also available as +task+ afterwards.
+      #
+      # Given a task model instead, its devices are stubbed first (see
+      # TaskAssertions#is_configurable).
       def syskit_stub_deploy_and_configure(device)
+        if device.is_a?(Class) && device < TaskContext
+          devices = syskit_stub_driven_devices(device)
+          return syskit_configure_alone(device) if devices.empty?
+
+          return devices.map { |dev| syskit_stub_deploy_and_configure(dev) }.first
+        end
+
         # Anything else than a device is refused by the generator, with the reason.
         requirement = device.is_a?(Robot::Device) ? Network::Requirement.new(device) : device
         result = Network::Generator.new(Test.app, [requirement], stub_deployments: true).generate
@@ -130,22 +142,27 @@ module Syskit
       # A demultiplexing bus driver: per-device dynamic ports for both directions.
       def bus_driver(bus_model)
         type = bus_model.message_type
-        task_model("stub_bus_driver_for_#{model_slug(bus_model)}",
-                   dynamic: [Syskit::DynamicPort.new(/^\w+$/, :output, type),
-                             Syskit::DynamicPort.new(/^w\w+$/, :input, type)]) do |task|
+        task_model("stub_bus_driver_for_#{model_slug(bus_model)}", dynamic: bus_ports(type)) do |task|
           task.driver_for(bus_model, as: 'bus')
         end
       end
 
-      # A driver for +model+ with the client ports of +bus_model+.
+      # A driver for +model+ with the client ports of +bus_model+. When
+      # +model+ is a bus itself, the driver also serves the devices attached
+      # to it, through per-device ports of its own message type.
       def client_driver(model, bus_model, bus_to_client:, client_to_bus:)
         type = bus_model.message_type
         ports = []
         ports << Syskit::Port.new('from_bus', :input, type) if bus_to_client
         ports << Syskit::Port.new('to_bus', :output, type) if client_to_bus
-        task_model("stub_driver_for_#{model_slug(model)}", ports: ports) do |task|
-          task.driver_for(model, as: 'dev')
+        dynamic = model.is_a?(Models::ComBusModel) ? bus_ports(model.message_type) : []
+        task_model("stub_driver_for_#{model_slug(model)}", ports: ports, dynamic: dynamic) do |task|
+          task.driver_for(model, as: model.is_a?(Models::ComBusModel) ? 'bus' : 'dev')
         end
+      end
+
+      def bus_ports(type)
+        [Syskit::DynamicPort.new(/^\w+$/, :output, type), Syskit::DynamicPort.new(/^w\w+$/, :input, type)]
       end
 
       def task_model(name, ports: [], dynamic: [])

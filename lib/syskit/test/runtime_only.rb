@@ -1,0 +1,46 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Test
+    # What Syskit's tests do with a running system (Roby's plan and
+    # execution engine, Orocos components): each of these skips the test it
+    # is called in, saying why, so that such a test is never an error and
+    # never a pass.
+    module RuntimeOnly
+      REASON = "needs Syskit's runtime (Roby and Orocos)"
+
+      # Test methods of Syskit's harness that need a running system.
+      METHODS = %i[
+        syskit_deploy syskit_deploy_and_configure syskit_configure syskit_start syskit_configure_and_start
+        syskit_deploy_configure_and_start syskit_stub_and_deploy syskit_stub_deploy_configure_and_start
+        syskit_start_execution_agents syskit_write syskit_create_reader syskit_create_writer syskit_stop
+        syskit_stub_deployment expect_execution execute execute_one_cycle plan assert_event_emission
+        assert_has_one_new_sample assert_has_no_new_sample assert_event_command_failed assert_times_out
+        assert_fatal_exception assert_transitions_to_state
+      ].freeze
+
+      METHODS.each do |name|
+        define_method(name) { |*_args, **_options, &_block| skip("#{name} #{REASON}") }
+      end
+
+      # Mocks (the flexmock gem) stand for runtime objects in Syskit's tests.
+      def flexmock(*)
+        skip("flexmock #{REASON}")
+      end
+
+      # Class-level statements of Syskit's test describe blocks.
+      module ClassMethods
+        # +run_live do ... end+ / +run_simulated do ... end+: how Syskit runs
+        # the tests of the block. Their tests are kept; the runtime calls in
+        # them skip.
+        def run_live(&block)
+          class_eval(&block) if block
+        end
+
+        def run_simulated(&block)
+          class_eval(&block) if block
+        end
+      end
+    end
+  end
+end

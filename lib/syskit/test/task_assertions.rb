@@ -1,0 +1,66 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Test
+    # Assertions on the task model a test describes, as Syskit's generated
+    # driver tests write them:
+    #
+    #   module OroGen
+    #     describe canbus.Task do
+    #       it { is_configurable }
+    #     end
+    #   end
+    module TaskAssertions
+      # The task model (the described one by default) can be configured:
+      # each device or bus it drives is stubbed and its task stub-deployed
+      # and configured, as syskit_stub_deploy_and_configure does; a model
+      # that drives nothing is configured on its own (its 'default' section,
+      # its configure method and its stubs).
+      def is_configurable(model = syskit_described_task_model) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        syskit_stub_deploy_and_configure(model)
+        assert true
+      rescue Syskit::Error => e
+        flunk e.report(Test.app.root)
+      end
+      alias assert_is_configurable is_configurable
+
+      # Syskit's names of the profile assertions (see ProfileAssertions).
+      %w[is_self_contained can_instanciate can_deploy can_configure].each do |name|
+        define_method("assert_#{name}") { |*actions| public_send(name, *actions) }
+      end
+
+      private
+
+      def syskit_described_task_model
+        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
+        return desc if desc.is_a?(Class) && desc < TaskContext
+
+        flunk "is_configurable needs `describe OroGen.library.Task do ... end` or a task model, not #{desc.inspect}"
+      end
+
+      # Stub devices for the services through which +model+ drives devices
+      # and buses (one each), or none when it drives nothing.
+      def syskit_stub_driven_devices(model)
+        model.driver_services.reject { |srv| srv.respond_to?(:master) && srv.master }.map do |srv|
+          driven = srv.driven_device_model
+          if driven.is_a?(Models::ComBusModel)
+            syskit_stub_com_bus(driven, driver: model)
+          else
+            syskit_stub_device(driven, driver: model)
+          end
+        end
+      end
+
+      # Configures a task of +model+ made for no device.
+      def syskit_configure_alone(model)
+        context = Network::Context.new(app: Test.app, requirements: [], stub_deployments: true)
+        task = model.new
+        deployment = Orogen::DeploymentSpec.new("stub_#{model.name.tr(':', '_')}")
+        task.deployed_task = deployment.add_task("stub_#{model.name.split('::').last.downcase}", model)
+        Network::Configure.new(context).configure(task)
+        context.raise_errors
+        @task = task
+      end
+    end
+  end
+end

@@ -1,0 +1,83 @@
+# frozen_string_literal: true
+
+require 'helper'
+require 'open3'
+require 'rbconfig'
+
+module Syskit
+  # `syskit test` running test files as Syskit writes them (SPEC 12):
+  # test/fixtures/rock/rover/test has them in each of Syskit's forms.
+  class TestRunner < Minitest::Test
+    ROVER = File.join(FIXTURES, 'rock', 'rover')
+    BACKTRACE = /\.rb:\d+:in `/
+
+    def syskit_test(*args, chdir: GEM_ROOT)
+      Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'test', *args, chdir: chdir)
+    end
+
+    def test_test_files_in_syskits_forms_pass_and_runtime_tests_are_skipped_with_the_reason
+      out, err, status = syskit_test('--app', ROVER, '-v')
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/^12 runs, \d+ assertions, 0 failures, 0 errors, 1 skips$/, out)
+      assert_match(/^syskit_deploy needs Syskit's runtime \(Roby and Orocos\)$/, out)
+      assert_match(/^scanner::Task#test_0001_anonymous = [\d.]+ s = \.$/, out, 'it { is_configurable }')
+    end
+
+    def test_minitest_options_pass_through
+      out, _, status = syskit_test('--app', ROVER, '-n', '/watches every/', '--seed', '42')
+      assert status.success?, out
+      assert_match(/--seed 42/, out)
+      assert_match(/^1 runs, /, out)
+      out, = syskit_test('test/orogen/test_can_hub.rb', '--exclude=/ArgumentError/', chdir: ROVER)
+      assert_match(/^3 runs, /, out)
+    end
+
+    def test_rake_test_in_an_app_runs_its_files_as_syskit_test_does
+      app = write_app({ 'Rakefile' => "require 'syskit/rake'\n",
+                        'config/syskit.yml' => "name: Plain\n",
+                        'test/test_plain.rb' => "describe 'a plain test' do\n  it('runs') { assert true }\nend\n" })
+      out, err, status = Open3.capture3(RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'), '-S', 'rake', 'test',
+                                        'TESTOPTS=-v', chdir: app)
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/^a plain test#test_0001_runs = /, out)
+    end
+
+    def test_a_missing_file_an_unknown_option_and_a_broken_test_file_are_located_errors
+      _, err, status = syskit_test('test/test_nothing.rb', chdir: ROVER)
+      assert_equal 1, status.exitstatus
+      assert_match(%r{\Atest/test_nothing.rb:1: no test file 'test/test_nothing.rb'\n  hint: }, err)
+      _, err, status = syskit_test('--sede', '3', chdir: ROVER)
+      assert_equal 1, status.exitstatus
+      assert_match(/\Asyskit test does not know the option '--sede'\n  hint: minitest's options/, err)
+      app = write_app({ 'config/syskit.yml' => "name: Plain\n",
+                        'test/test_broken.rb' => "describe 'x' do\n  it 'y' do\n    assert(\n  end\nend\n",
+                        'test/test_typo.rb' => "using_task_library 'canbs'\n" })
+      [['test/test_broken.rb', %r{\Atest/test_broken.rb:4: syntax error}],
+       ['test/test_typo.rb', %r{\Atest/test_typo.rb:1: no task library 'canbs' \(did you mean 'canbus'\?\)}]]
+        .each do |file, message|
+          out, err, status = syskit_test(file, chdir: app)
+          assert_equal 1, status.exitstatus, out
+          assert_match message, err
+          refute_match BACKTRACE, err
+        end
+    end
+
+    def test_a_failure_is_reported_at_the_line_of_the_test_and_sets_the_exit_status
+      root = my_app("device(Devices::IMU, as: 'imu')\n",
+                    'config/robots/default.rb' => "# nothing deployed\n",
+                    'test/profiles/test_base.rb' => <<~RUBY)
+                      module MyApp
+                        module Profiles
+                          describe Base do
+                            it('deploys') { can_deploy }
+                          end
+                        end
+                      end
+                    RUBY
+      out, _, status = syskit_test(chdir: root)
+      assert_equal 1, status.exitstatus
+      assert_match(%r{^MyApp::Profiles::Base#test_0001_deploys \[test/profiles/test_base.rb:4\]:$}, out)
+      assert_match(%r{^models/profiles/base.rb:9: no deployed task can run imu::Task}, out)
+    end
+  end
+end

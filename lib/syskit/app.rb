@@ -4,6 +4,7 @@ require 'psych'
 require 'syskit/app/files'
 require 'syskit/app/environment'
 require 'syskit/app/bundles'
+require 'syskit/app/settings'
 require 'syskit/types/typekit_search'
 require 'syskit/config/robot_config_loader'
 
@@ -37,9 +38,9 @@ module Syskit
 
     def initialize(root, name: nil, orogen_path: ENV.fetch('SYSKIT_OROGEN_PATH', ''))
       @root = File.expand_path(root)
-      config = read_config
-      @acronyms = Array(config['acronyms']).map(&:to_s)
-      @name = name || config['name'] || Naming.camelize(File.basename(@root), @acronyms)
+      config = Settings.new(@root, name: name)
+      @acronyms = config.acronyms
+      @name = config.name
       @orogen_path = orogen_path.split(File::PATH_SEPARATOR).reject(&:empty?).map { |d| File.expand_path(d) }
       @bundles, @problems = BundleSearch.new.resolve(@root, @name, config)
       @types = Types::Registry.new
@@ -220,15 +221,6 @@ module Syskit
 
     private
 
-    def read_config
-      path = File.join(root, CONFIG_FILE)
-      return {} unless File.file?(path)
-
-      Psych.safe_load(File.read(path), filename: path) || {}
-    rescue Psych::Exception => e
-      raise FileLoadError.new("cannot read #{CONFIG_FILE}: #{e.message}", location: Location.new(path, 1))
-    end
-
     def load_model_files
       each_model_file.each { |path| collect_problems { load_file(path) } }
     end
@@ -262,7 +254,7 @@ module Syskit
 
     def load_everything
       app_orogen = File.join(root, 'models', 'orogen')
-      app_libraries = Dir[File.join(app_orogen, '*.{orogen,rb}')].map do |f|
+      app_libraries = Files.ruby_files(app_orogen, problems, '*.{orogen,rb}').map do |f|
         File.basename(f).sub(/\.(orogen|rb)\z/, '')
       end
       app_libraries.uniq.sort.each do |lib|
@@ -273,7 +265,7 @@ module Syskit
           using_task_library(lib, location: Location.new(spec, 1))
         end
       end
-      Dir[File.join(root, 'models', 'typekits', '*.rb')].each do |path|
+      Files.ruby_files(File.join(root, 'models', 'typekits'), problems).each do |path|
         collect_problems { import_types(File.basename(path, '.rb'), location: Location.new(path, 1)) }
       end
     end

@@ -20,9 +20,22 @@ module Syskit
     # Evaluates the file at +path+ with +receiver+ as self; what it raises
     # becomes an +error_class+ error at the file's line.
     def evaluate(path, receiver, root: nil, error_class: FileLoadError)
-      TOPLEVEL_INSTANCE_EVAL.call(receiver, File.read(path), path)
-    rescue ScriptError, StandardError => e
-      raise translate(e, path: path, root: root, error_class: error_class)
+      source = UserFile.read(path)
+      guard(path: path, root: root, error_class: error_class) do
+        TOPLEVEL_INSTANCE_EVAL.call(receiver, source, path)
+      end
+    end
+
+    # Runs user code. Whatever it raises, exits and non-StandardError
+    # exceptions included (+exit+, +abort+, an endless recursion), becomes a
+    # located Syskit error (see #translate); Syskit errors pass as they are.
+    # Only signals (Ctrl-C) go through untouched.
+    def guard(path: nil, root: nil, error_class: FileLoadError, context: nil, &block)
+      block.call
+    rescue Exception => e # rubocop:disable Lint/RescueException -- user code may raise anything
+      raise if e.is_a?(SignalException) || Syskit::Error === e # rubocop:disable Style/CaseEquality -- see Error.===
+
+      raise translate(e, path: path, root: root, error_class: error_class, context: context)
     end
 
     # A Syskit::Error for +exception+. +path+ is the file being evaluated:
@@ -36,16 +49,31 @@ module Syskit
       when NameError
         name_error(exception, path, root, error_class, context)
       else
-        message = "#{exception.class}: #{first_line(exception.message)}"
+        message, hint = describe(exception)
         error_class.new(context ? "#{context}: #{message}" : message,
-                        location: location_of(exception, path, root),
-                        hint: 'fix the code at this line (run with --trace for the backtrace)')
+                        location: location_of(exception, path, root), hint: hint)
       end.tap { |error| error.set_backtrace(exception.backtrace || []) if error.backtrace.nil? }
     end
 
     # The innermost line of the user's code: in the file being evaluated
     # (+path+) or in the app and its bundles (a file required from +path+ is
     # reported at its own line), else the first frame outside the gem.
+    # What users read for an exception their code raised, and a hint.
+    def describe(exception)
+      case exception
+      when SystemExit
+        what = exception.message == 'exit' ? "exit (status #{exception.status})" : "abort: #{exception.message}"
+        ["the code calls #{what}", 'syskit evaluates this file: do not exit from it, raise an error instead']
+      when SystemStackError
+        ['stack level too deep (an endless recursion?)', 'find the method that calls itself without end']
+      when NoMemoryError
+        ["out of memory (#{first_line(exception.message)})", 'look for a loop that builds ever bigger values']
+      else
+        ["#{exception.class}: #{first_line(exception.message)}",
+         'fix the code at this line (run with --trace for the backtrace)']
+      end
+    end
+
     def location_of(exception, path, root = nil)
       prefixes = [root, *Syskit.app&.bundle_roots].compact.uniq.map { |r| "#{File.expand_path(r)}/" }
       found = (exception.backtrace_locations || []).find do |loc|

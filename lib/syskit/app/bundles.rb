@@ -42,7 +42,7 @@ module Syskit
             next if found.any? { |b| b.root == dependency.root }
 
             found << dependency
-            queue << [dependency, {}]
+            queue << [dependency, nil]
           end
         end
         found << BUNDLED unless found.any? { |b| b.root == BUNDLED.root }
@@ -68,15 +68,15 @@ module Syskit
       # [name or path, location] pairs a bundle declares. +config+ is the
       # app's config/syskit.yml, already read.
       def declared(root, config)
-        from_syskit = list_at(config['bundles'], File.join(root, CONFIG_FILE), 'bundles')
+        from_syskit = list_at(config && config['bundles'], File.join(root, CONFIG_FILE), 'bundles')
         rock_config = File.join(root, 'config', 'app.yml')
         rock = File.file?(rock_config) ? rock_dependencies(rock_config) : []
         (from_syskit + rock + registered_apps(root)).uniq(&:first)
       end
 
       def registered_apps(root)
-        Dir[File.join(root, 'config', 'robots', '*.rb')].flat_map do |path|
-          File.readlines(path).each_with_index.filter_map do |line, i|
+        Dir[File.join(root, 'config', 'robots', '*.rb')].select { |p| File.file?(p) }.flat_map do |path|
+          UserFile.lines(path).each_with_index.filter_map do |line, i|
             m = line.match(REGISTER_APP)
             [m[2], Location.new(path, i + 1)] if m && !line.lstrip.start_with?('#')
           end
@@ -84,7 +84,7 @@ module Syskit
       end
 
       def rock_dependencies(path)
-        data = Psych.safe_load(File.read(path), filename: path) || {}
+        data = Psych.safe_load(UserFile.read(path), filename: path) || {}
         bundle = data.is_a?(Hash) ? data['bundle'] : nil
         list_at(bundle.is_a?(Hash) ? bundle['dependencies'] : nil, path, 'dependencies')
       rescue Psych::Exception => e
@@ -105,7 +105,7 @@ module Syskit
       end
 
       def line_of(path, text)
-        (File.readlines(path).index { |l| l.include?(text) } || 0) + 1
+        (UserFile.lines(path).index { |l| l.include?(text) } || 0) + 1
       end
 
       # A path (with a /) relative to the bundle that names it, or a name

@@ -78,9 +78,11 @@ module Syskit
 
       private
 
+      # Constants the app's files defined, or the gem on their behalf (the
+      # modules a file is evaluated in).
       def owned_constant?(const)
         path, = Object.const_source_location(const)
-        path.nil? || owned_file?(path)
+        path.nil? || owned_file?(path) || path.start_with?(Location::GEM_LIB)
       end
     end
   end

@@ -19,7 +19,7 @@ module Syskit
         # Marked as loaded first, so that a file that fails is reported once
         # rather than evaluated again by a later `require` of it.
         $LOADED_FEATURES.concat(names)
-        source = File.read(path)
+        source = UserFile.read(path)
         modules = source.match?(/^(module|class)\s+[A-Z]/) ? [] : namespace_for(path)
         eval_in_namespace(source, path, modules)
         true
@@ -28,7 +28,7 @@ module Syskit
       # Evaluates a file that is not a model file (a robot configuration)
       # in the app's namespace, each time it is asked to.
       def eval_file(path)
-        eval_in_namespace(File.read(path), path, namespace_for(path))
+        eval_in_namespace(UserFile.read(path), path, namespace_for(path))
       end
 
       private
@@ -38,7 +38,7 @@ module Syskit
       # typekits are loaded when something asks for them.
       def each_model_file
         models = File.join(root, 'models', '')
-        Dir[File.join(models, '**', '*.rb')].filter_map do |path|
+        Files.ruby_files(File.join(models, '**'), problems).filter_map do |path|
           kind = path.delete_prefix(models).split('/').first
           next if %w[orogen typekits].include?(kind)
 
@@ -46,14 +46,40 @@ module Syskit
         end.sort.map(&:last)
       end
 
+      # The regular files *.rb of +dir+ (a glob), sorted. What only looks
+      # like one (a directory named x.rb, a dangling symlink or one that
+      # loops, a FIFO that reading would wait on forever) is not read: it
+      # is a warning in +problems+.
+      def self.ruby_files(dir, problems, pattern = '*.rb')
+        Dir[File.join(dir, pattern)].sort.select do |path|
+          next true if File.file?(path)
+
+          problems << Warning.new("#{File.basename(path)} is #{what_it_is(path)}, not a file: it is not loaded",
+                                  location: Location.new(path, 1), hint: 'remove it or rename it')
+          false
+        end
+      end
+
+      def self.what_it_is(path)
+        if File.symlink?(path) then File.exist?(path) ? 'a symlink to something else' : 'a broken symlink'
+        elsif File.directory?(path) then 'a directory'
+        elsif File.pipe?(path) then 'a named pipe'
+        else 'not a regular file'
+        end
+      end
+
       def eval_in_namespace(source, path, modules)
+        define_namespace(modules)
+        # Only constant names (checked by namespace_for) reach the source.
         prefix = modules.map { |m| "module #{m};" }.join(' ')
         suffix = "\nend" * modules.size
         # The prefix shares the first line with the file, so line numbers hold.
-        TOPLEVEL_BINDING.eval(modules.empty? ? source : "#{prefix} #{source}#{suffix}", path, 1)
-      rescue ScriptError, StandardError => e
-        mark_loaded(e)
-        raise UserCode.translate(e, path: path, root: root)
+        UserCode.guard(path: path, root: root) do
+          TOPLEVEL_BINDING.eval(modules.empty? ? source : "#{prefix} #{source}#{suffix}", path, 1)
+        rescue Exception => e # rubocop:disable Lint/RescueException -- re-raised, to the guard
+          mark_loaded(e)
+          raise
+        end
       end
 
       # Ruby forgets a required file that raised, so a later require would
@@ -88,7 +114,31 @@ module Syskit
         dirs = File.dirname(relative).split('/')
         return [name] unless dirs.first == 'models' && !%w[orogen typekits].include?(dirs[1])
 
-        [name] + dirs.drop(1).map { |d| Naming.camelize(d, acronyms) }
+        [name] + dirs.drop(1).map { |d| module_name_of(d, path) }
+      end
+
+      def module_name_of(dir, path)
+        module_name = Naming.camelize(dir, acronyms)
+        return module_name if Naming.constant_name?(module_name)
+
+        raise FileLoadError.new(
+          "this file opens no module, so it is evaluated in the one its directory names, " \
+          "but '#{dir}' does not make a module name",
+          location: Location.new(path, 1),
+          hint: "rename the directory (letters, digits and _), or open the module in the file (module #{name} ...)"
+        )
+      end
+
+      # Makes the modules +names+ (nested, from the top level) with
+      # const_get/const_set, so that they exist before the file opens them.
+      def define_namespace(names)
+        names.reduce(Object) do |parent, child|
+          if parent.const_defined?(child, false)
+            parent.const_get(child, false)
+          else
+            parent.const_set(child, Module.new)
+          end
+        end
       end
     end
   end

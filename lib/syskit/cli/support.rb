@@ -19,6 +19,9 @@ module Syskit
       # a bug of syskit.
       def reporting_errors(root = -> {})
         yield
+      rescue Interrupt
+        # Ctrl-C: the user knows why it stopped.
+        exit 130
       rescue Syskit::Error => e
         report_error(e, root.call)
       rescue StandardError, ScriptError => e

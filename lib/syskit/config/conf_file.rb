@@ -27,7 +27,7 @@ module Syskit
       def initialize(path)
         @path = path
         @sections = {}
-        parse(File.read(path))
+        parse(UserFile.read(path))
       end
 
       def section_names
@@ -134,6 +134,10 @@ module Syskit
         )
       rescue Psych::DisallowedClass => e
         raise tag_error(e, text, header_line)
+      rescue SystemStackError
+        raise ConfigurationError.new('this section is nested too deeply to be read',
+                                     location: Location.new(path, header_line + 1),
+                                     hint: 'configuration values are property values: a few levels of nesting')
       rescue Psych::SyntaxError => e
         raise ConfigurationError.new("invalid YAML: #{e.problem}",
                                      location: Location.new(path, e.line), hint: 'fix the YAML syntax at this line')
@@ -152,7 +156,7 @@ module Syskit
         end
 
         location = line_of(/!/, text, header_line)
-        tag = File.readlines(path)[location.lineno - 1].to_s[/!\S+/]
+        tag = UserFile.lines(path)[location.lineno - 1].to_s[/!\S+/]
         ConfigurationError.new("YAML tags such as #{tag || 'this one'} are not allowed in configuration files " \
                                "(#{error.message})",
                                location: location,

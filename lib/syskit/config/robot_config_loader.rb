@@ -21,7 +21,7 @@ module Syskit
 
       # Robot names that have a configuration file, sorted.
       def names
-        Dir[File.join(dir, '*.rb')].map { |p| File.basename(p, '.rb') }.sort
+        Dir[File.join(dir, '*.rb')].select { |p| File.file?(p) }.map { |p| File.basename(p, '.rb') }.sort
       end
 
       # The deployments of robot +name+, loaded from config/robots/NAME.rb.
@@ -68,20 +68,15 @@ module Syskit
       end
 
       def run_block(entry)
-        entry.block.call
-      rescue Syskit::Error
-        raise
-      rescue ScriptError, StandardError => e
-        raise UserCode.translate(e, root: @app.root)
+        UserCode.guard(root: @app.root) { entry.block.call }
       end
 
       def run_lenient_block(entry)
-        entry.block.call
-      rescue Syskit::Error
-        raise
-      rescue ScriptError, StandardError => e
-        error = UserCode.translate(e, root: @app.root)
-        @app.not_modelled("Robot.#{entry.phase} from this line on (#{error.message})", error.location)
+        run_block(entry)
+      rescue Syskit::Error => e
+        raise unless e.is_a?(FileLoadError) && e.location
+
+        @app.not_modelled("Robot.#{entry.phase} from this line on (#{e.message})", e.location)
       end
 
       def missing(name, path)

@@ -83,13 +83,9 @@ module Syskit
         )
       end
 
-      def user_code(task, device, what)
-        yield
-      rescue Syskit::Error
-        raise
-      rescue ScriptError, StandardError => e
-        raise UserCode.translate(e, root: @context.app.root, error_class: ConfigureMethodError,
-                                    context: "in #{task.model.name}'s #{what}#{" for #{device}" if device}")
+      def user_code(task, device, what, &)
+        UserCode.guard(root: @context.app.root, error_class: ConfigureMethodError,
+                       context: "in #{task.model.name}'s #{what}#{" for #{device}" if device}", &)
       end
 
       # Per-device ports the bus driver must have: created by its stub blocks

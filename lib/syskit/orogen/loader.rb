@@ -27,7 +27,7 @@ module Syskit
 
       def available_library_names
         @available_library_names ||=
-          @app.orogen_search_dirs.flat_map { |dir| Dir[File.join(dir, '*.orogen')] }
+          @app.orogen_search_dirs.flat_map { |dir| Dir[File.join(dir, '*.orogen')].select { |p| File.file?(p) } }
               .map { |p| File.basename(p, '.orogen') }.uniq.sort
       end
 
@@ -114,7 +114,7 @@ module Syskit
       # Library name => deployment names, read from the .orogen files' text.
       def declared_deployments
         @declared_deployments ||= available_library_names.to_h do |lib|
-          [lib, File.read(spec_path(lib)).scan(/^\s*deployment\s*\(?\s*["']([^"']+)["']/).flatten]
+          [lib, UserFile.read(spec_path(lib)).scan(/^\s*deployment\s*\(?\s*["']([^"']+)["']/).flatten]
         end
       end
     end

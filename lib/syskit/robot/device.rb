@@ -161,16 +161,12 @@ module Syskit
       # Sets a dsl_attribute (see DeviceConfigurationModule#dsl_attribute).
       def set_dsl_attribute(attr, args, filter_method)
         value = if filter_method
-                  send(filter_method, *args)
+                  filter_value(attr, args, filter_method)
                 else
                   (args.size == 1 ? args.first : args)
                 end
         dsl_attributes[attr] = value
         self
-      rescue Syskit::Error
-        raise
-      rescue StandardError => e
-        raise invalid_attribute(attr, args, filter_method, e)
       end
 
       def explain_missing(method_name)
@@ -226,6 +222,20 @@ module Syskit
           singleton_class.ancestors.grep(Models::DeviceConfigurationModule)
                          .flat_map { |m| m.public_instance_methods(false).map(&:to_s) })
           .reject { |m| m.start_with?('__') }.uniq
+      end
+
+      # The value the filter block makes of +args+; what it raises says the
+      # value is refused (exits and endless recursions are located too).
+      def filter_value(attr, args, filter_method)
+        send(filter_method, *args)
+      rescue Syskit::Error
+        raise
+      rescue StandardError => e
+        raise invalid_attribute(attr, args, filter_method, e)
+      rescue Exception => e # rubocop:disable Lint/RescueException -- user code may raise anything
+        raise if e.is_a?(SignalException)
+
+        raise UserCode.translate(e, error_class: DeclarationError, context: "#{attr} on #{self}")
       end
 
       def invalid_attribute(attr, args, filter_method, error)

@@ -103,7 +103,7 @@ module Syskit
 
         pattern = /driver_for\s*\(?\s*[\w:]*\b#{Regexp.escape(short_name(model))}\b/
         (@orogen.available_library_names - @orogen.loaded_library_names).select do |lib|
-          @app.extension_files(lib, @orogen.spec_path(lib)).any? { |f| File.read(f).match?(pattern) }
+          @app.extension_files(lib, @orogen.spec_path(lib)).any? { |f| UserFile.read(f).match?(pattern) }
         end
       end
 

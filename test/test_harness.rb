@@ -90,9 +90,7 @@ module Syskit
               end
 
               it 'stubs the devices of a task model given instead of a device, as Syskit does' do
-                task = syskit_stub_deploy_and_configure(OroGen.imu.Task)
-                assert_kind_of OroGen.imu.Task, task
-                assert_equal MyApp::Devices::IMU, task.imu_dev.model
+                assert_equal MyApp::Devices::IMU, syskit_stub_deploy_and_configure(OroGen.imu.Task).imu_dev.model
               end
             end
           end

@@ -19,8 +19,8 @@ module Syskit
 
       raise not_text(path, text)
     rescue SystemCallError => e
-      raise FileLoadError.new("cannot read #{File.basename(path)}: #{e.message}", location: Location.new(path, 1),
-                                                                                   hint: 'make it a readable file')
+      raise FileLoadError.new("cannot read #{File.basename(path)}: #{e.message}",
+                              location: Location.new(path, 1), hint: 'make it a readable file')
     end
 
     # Its lines.

@@ -7,6 +7,28 @@ module Syskit
     # (models/profiles/live/base.rb in AppName::Profiles::Live), so the
     # seed's short snippets work as written.
     module Files
+      # The regular files *.rb of +dir+ (a glob), sorted. What only looks
+      # like one (a directory named x.rb, a dangling symlink or one that
+      # loops, a FIFO that reading would wait on forever) is not read: it
+      # is a warning in +problems+.
+      def self.ruby_files(dir, problems, pattern = '*.rb')
+        Dir[File.join(dir, pattern)].select do |path|
+          next true if File.file?(path)
+
+          problems << Warning.new("#{File.basename(path)} is #{what_it_is(path)}, not a file: it is not loaded",
+                                  location: Location.new(path, 1), hint: 'remove it or rename it')
+          false
+        end
+      end
+
+      def self.what_it_is(path)
+        if File.symlink?(path) then File.exist?(path) ? 'a symlink to something else' : 'a broken symlink'
+        elsif File.directory?(path) then 'a directory'
+        elsif File.pipe?(path) then 'a named pipe'
+        else 'not a regular file'
+        end
+      end
+
       # Loads a Ruby file of the app, once.
       def load_file(path)
         # The path as Ruby's require finds it through the load path (the
@@ -44,28 +66,6 @@ module Syskit
 
           [{ 'devices' => 0, 'profiles' => 2 }.fetch(kind, 1), path]
         end.sort.map(&:last)
-      end
-
-      # The regular files *.rb of +dir+ (a glob), sorted. What only looks
-      # like one (a directory named x.rb, a dangling symlink or one that
-      # loops, a FIFO that reading would wait on forever) is not read: it
-      # is a warning in +problems+.
-      def self.ruby_files(dir, problems, pattern = '*.rb')
-        Dir[File.join(dir, pattern)].sort.select do |path|
-          next true if File.file?(path)
-
-          problems << Warning.new("#{File.basename(path)} is #{what_it_is(path)}, not a file: it is not loaded",
-                                  location: Location.new(path, 1), hint: 'remove it or rename it')
-          false
-        end
-      end
-
-      def self.what_it_is(path)
-        if File.symlink?(path) then File.exist?(path) ? 'a symlink to something else' : 'a broken symlink'
-        elsif File.directory?(path) then 'a directory'
-        elsif File.pipe?(path) then 'a named pipe'
-        else 'not a regular file'
-        end
       end
 
       def eval_in_namespace(source, path, modules)
@@ -122,7 +122,7 @@ module Syskit
         return module_name if Naming.constant_name?(module_name)
 
         raise FileLoadError.new(
-          "this file opens no module, so it is evaluated in the one its directory names, " \
+          'this file opens no module, so it is evaluated in the one its directory names, ' \
           "but '#{dir}' does not make a module name",
           location: Location.new(path, 1),
           hint: "rename the directory (letters, digits and _), or open the module in the file (module #{name} ...)"

@@ -64,7 +64,8 @@ module Syskit
     end
 
     def test_a_model_declared_twice_is_reopened_with_a_warning
-      error, root = problem_in("module MyApp\n  device_type 'Gyro'\n  device_type('Gyro') { output_port 'r', 'int' }\nend")
+      source = "module MyApp\n  device_type 'Gyro'\n  device_type('Gyro') { output_port 'r', 'int' }\nend"
+      error, root = problem_in(source)
       assert_reported error, %r{MyApp::Gyro is declared again \(first at models/devices/things.rb:2\)},
                       at: 'models/devices/things.rb:3', hint: /remove one/, root: root
       assert_kind_of Warning, error

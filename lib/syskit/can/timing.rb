@@ -3,6 +3,7 @@
 require 'syskit/can/timing/frame'
 require 'syskit/can/timing/result'
 require 'syskit/can/timing/analysis'
+require 'syskit/can/timing/format'
 
 module Syskit
   module CAN

@@ -4,7 +4,8 @@ module Syskit
   # The main commands are in syskit/cli.rb; this file adds `syskit bus`.
   class CLI < Thor
     # `syskit bus replay|monitor`: bus traffic seen through a profile's plan,
-    # from a candump log or live from a SocketCAN interface.
+    # from a candump log or live from a SocketCAN interface; `syskit bus
+    # timing`: the worst-case timing of the traffic a profile declares.
     class Bus < Thor
       include Support
 
@@ -76,6 +77,29 @@ module Syskit
       rescue Interrupt
         # Ctrl-C before the bus is opened: stop quietly, as the shell expects.
         exit(130)
+      end
+
+      desc 'timing PROFILE', 'worst-case response time of every frame declared on a CAN bus'
+      long_desc <<~TEXT
+        Analyses the frames that PROFILE's robot declares on the CAN bus
+        --bus (.frame on its devices, .bitrate on the bus): for each frame, in
+        priority order, its transmission time, blocking, worst-case response
+        time and slack, with the revised analysis of Davis, Burns, Bril and
+        Lukkien (Real-Time Systems 35, 2007); then the bus's utilisation.
+
+        Exit status 1 when a frame can miss its deadline.
+
+        Example: syskit bus timing Live::Base --bus can0 --format json
+      TEXT
+      method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
+      def timing(profile_name)
+        require 'syskit/cli/bus_timing'
+        with_app(robots: [options[:robot]]) do |app|
+          profile = find_profile(app, profile_name)
+          result, bus = BusTiming.analyse(profile, options[:bus])
+          puts BusTiming.render(result, bus, profile, options[:format])
+          exit(1) unless result.schedulable?
+        end
       end
 
       private

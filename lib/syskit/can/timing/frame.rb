@@ -103,6 +103,11 @@ module Syskit
 
       module_function
 
+      # The share of the bus +frames+ take at +bitrate+ (sum of C/T), exact.
+      def utilization(bitrate, frames)
+        frames.sum(0r) { |f| Rational(f.bits, bitrate) / f.period }
+      end
+
       # +value+ seconds as an exact Rational; raises InvalidFrame.
       def seconds(value, what, positive:)
         exact = case value

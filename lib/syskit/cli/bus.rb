@@ -38,8 +38,9 @@ module Syskit
       method_option :strict, type: :boolean, default: false, desc: 'fail on malformed lines'
       def replay(profile_name, log_path)
         require 'syskit/bus/replay'
-        with_plan(profile_name) do |dispatcher, source|
-          replay = ::Syskit::Bus::Replay.new(dispatcher, log_path, interface: options[:interface], source: source)
+        with_plan(profile_name) do |dispatcher, source, declared_bus|
+          replay = ::Syskit::Bus::Replay.new(dispatcher, log_path, interface: options[:interface], source: source,
+                                                                   declared_bus: declared_bus)
           print_report(replay.run(strict: options[:strict]))
         end
       end
@@ -113,7 +114,8 @@ module Syskit
       end
 
       # Loads the app, generates PROFILE's plan and yields the dispatcher of
-      # --bus with what the report says about its source.
+      # --bus with what the report says about its source, and the plan's
+      # entry of the bus when it declares CAN traffic.
       def with_plan(profile_name)
         # The bus tools are loaded by their commands only: `syskit plan`
         # does not pay for them (nor for ffi, needed by monitor alone).
@@ -122,7 +124,10 @@ module Syskit
           profile = find_profile(app, profile_name)
           plan = Network::Generator.plan_profile(app, profile, robot: options[:robot]).plan
           bus = options[:bus] || only_bus(plan)
-          yield ::Syskit::Bus::Dispatcher.from_plan(plan, bus), { 'profile' => plan.profile, 'robot' => plan.robot }
+          declared = plan.find_bus(bus)
+          declared = nil unless declared && (declared.bitrate || declared.frames.any?)
+          yield ::Syskit::Bus::Dispatcher.from_plan(plan, bus), { 'profile' => plan.profile, 'robot' => plan.robot },
+                declared
         end
       end
 

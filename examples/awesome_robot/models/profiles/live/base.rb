@@ -33,13 +33,13 @@ module AwesomeRobot
               .can_id(0x1234, 0xffff) # CAN ID filter
               .prefer_deployed_tasks('temperature_sensor')
               .period(0.1)
-              .frame(0x1234, bytes: 2, period: 0.1, extended: true)
+              .frame(0x1234, bytes: 2, period: 0.1, jitter: 0.0005, extended: true)
             device(Devices::Temperature::CANSensor, as: 'water_temperature', client_to_bus: false)
               .can_id(0x300, 0x7f0)
               .prefer_deployed_tasks('water_temperature')
-              .frame(0x301, bytes: 2, period: 0.2) # three probes, read every 200 ms
-              .frame(0x302, bytes: 2, period: 0.2)
-              .frame(0x303, bytes: 2, period: 0.2)
+              .frame(0x301, bytes: 2, period: 0.2, jitter: 0.0005) # three probes, every 200 ms
+              .frame(0x302, bytes: 2, period: 0.2, jitter: 0.0005)
+              .frame(0x303, bytes: 2, period: 0.2, jitter: 0.0005)
             # CANopen SYNC, every 10 ms: due 2 ms after its release, sent
             # within 0.1 ms of it.
             device(OroGen.can_open.SyncTask, as: 'sync', bus_to_client: false)

@@ -50,10 +50,14 @@ module Syskit
       end
 
       def duplicate(bus, earlier, frame)
-        who = earlier.device == frame.device ? "twice by #{frame.device}" : "by #{earlier.device} and #{frame.device}"
+        why = if earlier.device == frame.device
+                "twice by #{frame.device} on #{bus}: each identifier is one frame of the bus"
+              else
+                "by #{earlier.device} and #{frame.device} on #{bus}: two senders of one identifier break CAN " \
+                  'arbitration'
+              end
         TimingError.new(
-          "#{frame} is declared #{who} on #{bus}: two senders of one identifier break CAN arbitration " \
-          "(the first is declared at #{earlier.location})",
+          "#{frame} is declared #{why} (the first is declared at #{earlier.location})",
           location: frame.location, hint: 'give each frame of a bus its own identifier'
         )
       end

@@ -30,9 +30,10 @@ module Syskit
       # iterated.
       #
       # Higher-priority frames are summed by (period, jitter): each step of
-      # a recurrence costs one term per distinct pair, not per frame, and
-      # each busy period starts from the previous level's (it can only be
-      # longer).
+      # a recurrence costs one term per distinct pair queued more than once
+      # in the time it is computed for, not one per frame (see
+      # HigherPriority), and each busy period starts from the previous
+      # level's (it can only be longer).
       class Analysis
         # +bitrate+: bits per second (a positive Integer); +frames+: Frame values.
         def self.run(bitrate:, frames:)
@@ -72,14 +73,20 @@ module Syskit
 
         private
 
-        # Sums of C_k by (T_k, J_k) over the frames analysed so far, in
-        # parallel arrays iterated with while loops: the inner loop of the
-        # analysis.
+        # Sums of C_k by (T_k, J_k) over the frames analysed so far: the
+        # inner loop of the analysis.
+        #
+        # A pair whose T_k - J_k is at least the time asked for has one
+        # instance queued by then: it adds exactly its C_k, which #total
+        # already holds. Pairs are kept sorted by T_k - J_k in parallel
+        # arrays, so only those queued more than once are visited, with a
+        # while loop that stops at the first pair beyond the time.
         class HigherPriority
           attr_reader :total
 
           def initialize
-            @index = {}
+            @pairs = {}
+            @slack = []
             @periods = []
             @jitters = []
             @costs = []
@@ -87,20 +94,28 @@ module Syskit
           end
 
           def add(period, jitter, cost)
-            i = (@index[[period, jitter]] ||= (@periods << period
-                                               @jitters << jitter
-                                               @costs << 0).size - 1)
-            @costs[i] += cost
+            slack = period - jitter
+            i = @slack.bsearch_index { |s| s >= slack } || @slack.size
+            if @pairs[[period, jitter]]
+              i += 1 until @periods[i] == period && @jitters[i] == jitter
+              @costs[i] += cost
+            else
+              @pairs[[period, jitter]] = true
+              @slack.insert(i, slack)
+              @periods.insert(i, period)
+              @jitters.insert(i, jitter)
+              @costs.insert(i, cost)
+            end
             @total += cost
           end
 
-          # sum of ceil((time + J_k) / T_k) * C_k
+          # The sum of ceil((time + J_k) / T_k) * C_k, time > 0.
           def interference(time)
-            sum = 0
+            sum = @total
             i = 0
-            n = @periods.size
-            while i < n
-              sum -= (-(time + @jitters[i]) / @periods[i]) * @costs[i]
+            n = @slack.size
+            while i < n && @slack[i] < time
+              sum -= ((-(time + @jitters[i]) / @periods[i]) + 1) * @costs[i]
               i += 1
             end
             sum

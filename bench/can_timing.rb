@@ -36,8 +36,8 @@ module Syskit
         results = SIZES.to_h { |n| [n, best_time(frames(n))] }
         distinct = DISTINCT_SIZES.to_h { |n| [n, best_time(frames(n, distinct: true))] }
         process = Dir.mktmpdir('syskit-bench') { |dir| process_time(write_app(dir, FRAMES)) }
-        print_table(io, results, 'periods and jitters of a few values, as robots have them')
-        print_table(io, distinct, 'the worst case: every frame with a period of its own')
+        print_table(io, results, 'a few periods and jitters, as robots have')
+        print_table(io, distinct, 'the worst case, a period per frame')
         print_targets(io, results[FRAMES][:time], process)
         results
       end
@@ -128,8 +128,9 @@ module Syskit
       end
 
       def print_table(io, results, what)
-        io.puts "CAN timing analysis on one #{BITRATE / 1000} kbit/s bus, #{what} " \
-                '(best run of at least 5 and 0.5 s; ids drawn at random, so some frames miss)'
+        io.puts "CAN timing analysis, one #{CAN::Timing::Format.bitrate(BITRATE)} bus: #{what} " \
+                '(best of 5+ runs, 0.5 s+)'
+        # Identifiers are drawn at random, not by deadline: some frames miss.
         io.puts '   frames  utilisation  meet deadline  runs  analysis s'
         results.each do |n, r|
           io.puts format('%<n>9d  %<u>10.1f %%  %<ok>13d  %<runs>4d  %<s>10.4f',

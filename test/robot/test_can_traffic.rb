@@ -106,7 +106,9 @@ module Syskit
         ".frame(0x181, bytes: 8, period: 0)\n" => [/period: 0 is not a positive number/, /period: 0.01/],
         ".frame(0x181, bytes: 8, period: 0.01, jitter: -0.001)\n" => [/jitter: -0.001/, /jitter: takes seconds/],
         ".frame(0x2000_0000, bytes: 8, period: 0.01)\n" => [/536870912 is not a CAN identifier/, /29 bits/],
-        ".frame(0x181, period: 0.01)\n" => [/frame on device 't' needs bytes:/, /frame\(0x181, bytes: 8/]
+        ".frame(0x181, period: 0.01)\n" => [/frame on device 't' needs bytes:/, /frame\(0x181, bytes: 8/],
+        ".frame(0x181, bytes: 8, priod: 0.01)\n" => [/has no option priod: \(did you mean 'period'\?\)/,
+                                                     /frame takes \(id, bytes:, period:/]
       }.each do |call, (message, hint)|
         error, root = problem("com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\n" \
                               "through('can0') { device(Devices::TemperatureSensor, as: 't')\n  #{call} }\n")
@@ -140,6 +142,8 @@ module Syskit
           [/500000.0 is not a CAN bitrate/, /bitrate\(500_000\)/],
         "com_bus(CommonModels::Devices::Bus::CAN, as: 'can0').bitrate(500_000, warn_above: 70)\n" =>
           [/warn_above: 70 on bus 'can0' is not a fraction/, /0.6 for 60 %/],
+        "com_bus(CommonModels::Devices::Bus::CAN, as: 'can0').bitrate(500_000, warn: 0.6)\n" =>
+          [/bitrate on bus 'can0' has no option warn:/, /warn_above: 0.6/],
         "com_bus(Devices::Bus::Serial, as: 'serial0').bitrate(500_000)\n" =>
           [%r{MyApp::Devices::Bus::Serial does not carry /canbus/Message frames}, /for CAN buses/]
       }.each do |robot, (message, hint)|

@@ -23,6 +23,7 @@ module Syskit
         [CAN::Timing::Analysis.run(bitrate: bus.bitrate, frames: bus.frames_on_wire), bus]
       end
 
+      # The result as the JSON document or the table.
       def render(result, bus, profile, format)
         if format == 'json'
           require 'json'
@@ -32,10 +33,12 @@ module Syskit
         end
       end
 
+      # The CAN buses of the profile's robot with a wire of their own.
       def can_buses(profile)
         profile.robot.devices.grep(Robot::ComBus).select { |b| Robot::CanTraffic.can_bus?(b) && b.carrier.equal?(b) }
       end
 
+      # The bus +name+, or an error saying which buses can be timed.
       def named_bus(profile, name)
         bus = profile.robot.find_device(name)
         return bus if bus.is_a?(Robot::ComBus) && Robot::CanTraffic.can_bus?(bus) && bus.carrier.equal?(bus)
@@ -49,6 +52,7 @@ module Syskit
         raise UnknownName.new("#{what}#{Naming.did_you_mean(name, names)}", hint: buses_hint(names))
       end
 
+      # The only CAN bus that declares traffic (or the only CAN bus).
       def only_bus(profile)
         buses = can_buses(profile)
         declared = buses.select { |b| b.bitrate || b.frames_on_wire.any? }
@@ -59,6 +63,7 @@ module Syskit
         raise UnknownName.new("#{profile.name} has #{what}", hint: buses_hint(candidates.map(&:name)))
       end
 
+      # What to write for --bus.
       def buses_hint(names)
         return 'declare one: com_bus(CommonModels::Devices::Bus::CAN, as: \'can0\').bitrate(500_000)' if names.empty?
 

@@ -76,6 +76,7 @@ module Syskit
         end
       end
 
+      # The plan entry of a declared CAN::Timing::Frame.
       def self.frame_entry(frame, paths)
         Frame.new(frame.id, frame.extended, frame.bytes, frame.period, frame.deadline, frame.jitter,
                   frame.device, declared_at(frame.location, paths)).freeze
@@ -172,6 +173,7 @@ module Syskit
         freeze
       end
 
+      # The bus entry named +name+ (nil when the plan has none).
       def find_bus(name)
         buses.find { |b| b.name == name }
       end

@@ -40,8 +40,9 @@ module Syskit
         # (0-8), period, and optionally deadline (default: the period),
         # queuing jitter (default 0), all in seconds, and extended: (default:
         # whether the identifier exceeds 0x7FF).
-        def frame(id = nil, bytes: nil, period: nil, deadline: nil, jitter: 0, extended: nil)
+        def frame(id = nil, bytes: nil, period: nil, deadline: nil, jitter: 0, extended: nil, **others)
           location = Location.of_caller
+          check_frame_options(others, location)
           check_frame_declaration(id, bytes, period, location)
           frame = CAN::Timing::Frame.build(id: id, bytes: bytes, period: period, deadline: deadline, jitter: jitter,
                                            extended: extended, device: name, location: location)
@@ -57,7 +58,21 @@ module Syskit
           @can_frames || NO_FRAMES
         end
 
+        FRAME_OPTIONS = %w[bytes period deadline jitter extended].freeze
+        private_constant :FRAME_OPTIONS
+
         private
+
+        def check_frame_options(others, location)
+          return if others.empty?
+
+          unknown = others.keys.first.to_s
+          raise DeclarationError.new(
+            "frame on #{self} has no option #{unknown}:#{Naming.did_you_mean(unknown, FRAME_OPTIONS)}",
+            location: location,
+            hint: 'frame takes (id, bytes:, period:, deadline: period, jitter: 0, extended: id > 0x7FF)'
+          )
+        end
 
         def check_frame_declaration(id, bytes, period, location)
           unless CanTraffic.can_bus?(bus)
@@ -82,10 +97,15 @@ module Syskit
         # Without arguments, the bitrate (bit/s, nil when not declared).
         # With them, declares it, and optionally the utilisation above which
         # `syskit check` warns (a fraction, 0.7 by default); returns the bus.
-        def bitrate(bits_per_second = nil, warn_above: nil)
-          return @bitrate if bits_per_second.nil? && warn_above.nil?
+        def bitrate(bits_per_second = nil, warn_above: nil, **others)
+          return @bitrate if bits_per_second.nil? && warn_above.nil? && others.empty?
 
           location = Location.of_caller
+          unless others.empty?
+            raise DeclarationError.new("bitrate on #{self} has no option #{others.keys.first}:",
+                                       location: location,
+                                       hint: 'write bitrate(500_000) or bitrate(500_000, warn_above: 0.6)')
+          end
           check_bitrate_declaration(bits_per_second, location)
           @warn_above = warn_above_fraction(warn_above, location) unless warn_above.nil?
           @bitrate = bits_per_second

@@ -93,6 +93,7 @@ module Syskit
             @total = 0
           end
 
+          # Adds a frame of cost C_k to the pair (T_k, J_k), in ticks.
           def add(period, jitter, cost)
             slack = period - jitter
             i = @slack.bsearch_index { |s| s >= slack } || @slack.size

@@ -22,6 +22,7 @@ module Syskit
             "#{table(rows)}\n#{summary(result)}\n"
         end
 
+        # The cells of one frame's row.
         def row(result)
           f = result.frame
           [f.hex_id, f.device.to_s, f.bytes.to_s, ms(f.period), ms(f.deadline), ms(f.jitter),
@@ -29,12 +30,14 @@ module Syskit
            status(result)]
         end
 
+        # 'ok', 'MISS', or 'MISS (unbounded)'.
         def status(result)
           return 'ok' if result.schedulable?
 
           result.response_time ? 'MISS' : 'MISS (unbounded)'
         end
 
+        # The verdict under the table.
         def summary(result)
           frames = "#{result.frames.size} #{result.frames.size == 1 ? 'frame' : 'frames'}"
           misses = result.misses.size
@@ -46,6 +49,7 @@ module Syskit
           "the bus is loaded #{Format.percent(result.utilization)}: it cannot carry this traffic\n#{verdict}"
         end
 
+        # Milliseconds to the microsecond, '-' for nil.
         def ms(seconds)
           seconds ? format('%.3f', (seconds * 1000).to_f) : '-'
         end

@@ -13,7 +13,7 @@ module Syskit
       #
       # For frame m, in priority order (Frame#arbitration_key):
       #   C_m = bits * tau_bit                 transmission time
-      #   B_m = max C_k over lower-priority k  blocking (a frame already sent)
+      #   B_m = max C_k over lower-priority k  blocking (a frame already on the wire)
       #   t_m = B_m + sum over hp(m) and m of ceil((t_m + J_k) / T_k) * C_k
       #                                        level-m busy period
       #   Q_m = ceil((t_m + J_m) / T_m)        instances queued in it
@@ -64,9 +64,12 @@ module Syskit
             utilization += Rational(frame.bits, @bitrate) / frame.period
             level = [frame, costs[index], blocking[index], higher]
             # From 100 % on, this level and every lower one have no bound.
-            response = (response(*level, busy = busy_period(*level, busy)) if utilization < 1)
+            if utilization < 1
+              busy = busy_period(*level, busy)
+              times = response(*level, busy)
+            end
             higher.add(ticks(frame.period), ticks(frame.jitter), costs[index])
-            result(*level.first(3), response)
+            result(*level.first(3), times)
           end
           BusResult.new(bitrate: @bitrate, utilization: utilization, frames: results.freeze).freeze
         end

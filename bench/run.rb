@@ -4,8 +4,9 @@
 # objects and peak RSS on synthetic robots of 100, 1,000 and 10,000 devices,
 # the wall time of the whole `syskit plan --format json` process, and the
 # scaling exponent between 1,000 and 10,000 devices, with the CPU caches
-# emptied before each phase and back to back. Every figure printed is
-# measured on this run.
+# emptied before each phase and back to back; then the bus replay
+# (bench/replay.rb) and the CAN timing analysis (bench/can_timing.rb).
+# Every figure printed is measured on this run.
 
 require 'json'
 require 'rbconfig'
@@ -161,4 +162,7 @@ if $PROGRAM_NAME == __FILE__
     puts
     Syskit::Bench::Replay.run if defined?(Syskit::Bench::Replay)
   end
+  require_relative 'can_timing'
+  puts
+  Syskit::Bench::CanTiming.run
 end

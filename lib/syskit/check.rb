@@ -1,9 +1,12 @@
 # frozen_string_literal: true
 
+require 'syskit/checks/can_timing'
+
 module Syskit
   # `syskit check`: loads everything in an app, generates every profile on
   # every robot configuration, and reports all the problems found, including
-  # the ones no generation error shows (overlapping CAN filters).
+  # the ones no generation error shows (overlapping CAN filters, CAN
+  # frames that can miss their deadlines).
   class Check
     attr_reader :app, :problems
 
@@ -44,6 +47,7 @@ module Syskit
 
     def check_profile(profile, failed_files)
       @problems.concat(Checks::CanFilters.new(profile.robot).warnings)
+      @problems.concat(Checks::CanTiming.new(profile).problems)
       return if profile_files(profile).intersect?(failed_files)
 
       app.robot_configs.each_key { |robot| generate(profile, robot) }

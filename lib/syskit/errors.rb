@@ -102,6 +102,9 @@ module Syskit
   # An exception raised by a user's configure method or stub block.
   class ConfigureMethodError < ConfigurationError; end
 
+  # A CAN bus that cannot carry its declared frames in time.
+  class TimingError < Error; end
+
   # A generator that refuses to run.
   class GeneratorError < Error; end
 

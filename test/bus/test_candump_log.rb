@@ -132,7 +132,7 @@ module Syskit
         ids = traffic.ids.transform_values(&:to_a)
         [ids, traffic.frames, traffic.extended, traffic.fd, traffic.rtr, traffic.errors,
          traffic.first_time, traffic.last_time, log.malformed_count, log.malformed.map(&:lineno),
-         log.other_interfaces, log.lines]
+         log.other_interfaces, log.lines, traffic.bits]
       end
 
       def test_the_fast_reader_counts_what_the_full_parser_reads
@@ -141,8 +141,22 @@ module Syskit
         ids, frames, extended, fd, rtr, errors, first, last, malformed, = fast
         assert_equal [13, 2, 1, 2, 2, 4], [frames, extended, fd, rtr, errors, malformed]
         assert_equal [1_436_509_053_249_000, 1_436_509_053_251_200], [first, last]
-        # Out-of-order times still give the earliest and latest.
-        assert_equal [7, 1_436_509_053_249_000, 1_436_509_053_251_200], ids[0x123]
+        # Out-of-order times still give the earliest and latest; the
+        # longest gap is between frames in log order.
+        assert_equal [7, 1_436_509_053_249_000, 1_436_509_053_251_200, 500], ids[0x123]
+      end
+
+      def test_the_bits_frames_take_on_the_wire
+        _, traffic = read_fast(<<~LOG)
+          (1.000000) can0 123#DEADBEEF
+          (1.000100) can0 00000123#00 R
+          (1.000200) can0 123#R4
+          (1.000300) can0 124# T
+          (1.000400) can0 7FF##1#{'00' * 12}
+        LOG
+        # 55 + 10 per byte (standard), 80 + 10 per byte (extended); a remote
+        # request carries no data; CAN FD frames are not counted.
+        assert_equal 95 + 90 + 55 + 55, traffic.bits
       end
 
       def test_the_fast_reader_skips_other_interfaces

@@ -80,7 +80,16 @@ module Syskit
 
         mark = line.getbyte(hash + 1)
         fd = mark == FD_MARK
-        return false if fd && !Frame::CANFD_LENGTHS.include?(fd_length(line, hash))
+        bytes = 0 # a remote request carries none
+        if fd
+          bytes = fd_length(line, hash)
+          return false unless Frame::CANFD_LENGTHS.include?(bytes)
+        elsif mark != RTR_MARK
+          # Half the characters after #, whether an end of line follows or
+          # not; one less when the " R"/" T" flags of candump -x do.
+          bytes = (line.bytesize - hash - 1) >> 1
+          bytes -= 1 if line.getbyte(hash + bytes + bytes - 1) == SPACE
+        end
         return true unless selected_at?(line, close + 2, id_start - 1)
 
         time = (line.byteslice(1, close - 8).to_i * 1_000_000) + line.byteslice(close - 6, 6).to_i
@@ -88,7 +97,7 @@ module Syskit
           traffic.count_error(time)
           return true
         end
-        traffic.count(extended ? id | Frame::EFF_FLAG : id, time, extended, fd, mark == RTR_MARK)
+        traffic.count(extended ? id | Frame::EFF_FLAG : id, time, fd, mark == RTR_MARK, bytes)
         true
       end
 

@@ -19,11 +19,14 @@ module Syskit
       # +dispatcher+: the bus (Dispatcher); +path+: the candump log;
       # +interface+: the log interface to read (default: the first seen);
       # +source+: what the report says about the plan (profile, robot).
+      # +declared_bus+: the plan's entry of the bus, whose declared frames
+      # the log is compared with (nil: no comparison).
       # +progress_out+ gets a progress bar when it is a terminal and the log
       # has at least +progress_min_bytes+.
-      def initialize(dispatcher, path, interface: nil, source: {}, progress_out: $stderr,
+      def initialize(dispatcher, path, interface: nil, source: {}, declared_bus: nil, progress_out: $stderr,
                      progress_min_bytes: Progress::MIN_BYTES)
         @dispatcher = dispatcher
+        @declared_bus = declared_bus
         @path = path
         @log = CandumpLog.new(path, interface: interface)
         @source = source
@@ -47,7 +50,7 @@ module Syskit
         end
         raise strict_error if strict && log.malformed_count.positive?
 
-        Report.new(@dispatcher, traffic, source: source_info)
+        Report.new(@dispatcher, traffic, source: source_info, declared_bus: @declared_bus)
       rescue SystemCallError, IOError => e
         raise LogError.new("cannot read #{@path}: #{e.message}", hint: 'give the path of a log written by candump -l')
       end

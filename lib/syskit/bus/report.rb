@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/bus/frame'
+require 'syskit/bus/declared_traffic'
 
 module Syskit
   module Bus
@@ -17,7 +18,7 @@ module Syskit
       # (most likely their senders).
       IdRow = Struct.new(:key, :frames, :first_time, :last_time, :devices, :writers, keyword_init: true)
 
-      attr_reader :bus, :traffic, :devices, :unclaimed, :overlaps, :source
+      attr_reader :bus, :traffic, :devices, :unclaimed, :overlaps, :source, :declared
 
       # The mean rate of a device, in frames/s: its frames over the time the
       # log (or the monitoring) spans, from its first frame to its last, in
@@ -34,11 +35,14 @@ module Syskit
       end
 
       # +source+: where the traffic comes from, shown as is ('log',
-      # 'interface', 'profile', 'robot', 'malformed'...).
-      def initialize(dispatcher, traffic, source: {})
+      # 'interface', 'profile', 'robot', 'malformed'...). +declared_bus+:
+      # the plan's entry of the bus (Network::Plan::Bus), whose declared
+      # frames the traffic is compared with (see DeclaredTraffic).
+      def initialize(dispatcher, traffic, source: {}, declared_bus: nil)
         @bus = dispatcher.bus
         @traffic = traffic
         @source = source
+        @declared = DeclaredTraffic.new(declared_bus, traffic) if declared_bus
         build(dispatcher)
       end
 
@@ -56,7 +60,8 @@ module Syskit
           'duration' => duration,
           'devices' => devices.map { |d| device_hash(d) },
           'unclaimed' => unclaimed.map { |r| unclaimed_hash(r) },
-          'overlaps' => overlaps.map { |r| id_hash(r).merge('devices' => r.devices) }
+          'overlaps' => overlaps.map { |r| id_hash(r).merge('devices' => r.devices) },
+          'declared' => declared&.to_h
         }
       end
 

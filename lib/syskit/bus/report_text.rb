@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/bus/report'
+require 'syskit/can/timing/format'
 
 module Syskit
   module Bus
@@ -14,16 +15,18 @@ module Syskit
       }.freeze
       DEVICE_HEADER = ['Device', 'Filter', 'Frames', 'IDs', 'First (s)', 'Last (s)', 'Rate (/s)'].freeze
       ID_HEADER = ['ID', 'Frames', 'First (s)', 'Last (s)'].freeze
+      DECLARED_HEADER = ['ID', 'Device', 'Period (ms)', 'Frames', 'Mean (ms)', 'Worst (ms)', 'Note'].freeze
       # Columns aligned right (numbers), by header.
-      RIGHT = ['Frames', 'IDs', 'First (s)', 'Last (s)', 'Rate (/s)', 'Now (/s)'].freeze
+      RIGHT = ['Frames', 'IDs', 'First (s)', 'Last (s)', 'Rate (/s)', 'Now (/s)', 'Period (ms)', 'Mean (ms)',
+               'Worst (ms)'].freeze
 
       module_function
 
       # The report as text; +recent+ (device name => frames/s) adds the
       # monitor's "last interval" column.
       def render(report, recent: nil)
-        [header(report), devices(report, recent), unclaimed(report), overlaps(report), malformed(report)]
-          .compact.join("\n")
+        [header(report), devices(report, recent), unclaimed(report), overlaps(report), declared(report),
+         malformed(report)].compact.join("\n")
       end
 
       def header(report)
@@ -94,6 +97,56 @@ module Syskit
 
         body = rows.map { |r| id_cells(report, r) + [r.devices.join(', ')] }
         "#{title}\n#{table(ID_HEADER + ['Devices'], body, indent: '  ')}"
+      end
+
+      # The log against the traffic the plan declares on the bus.
+      def declared(report)
+        declared = report.declared
+        return unless declared
+
+        [declared_frames(declared), undeclared(declared), bus_load(declared)].join("\n")
+      end
+
+      def declared_frames(declared)
+        rows = declared.rows
+        title = "Declared frames: #{rows.size}, #{rows.size - declared.unseen.size} seen\n"
+        return title if rows.empty?
+
+        body = rows.map do |r|
+          f = r.frame
+          [Frame.key_to_s(Frame.key(f.id, f.extended)), f.device, ms(f.period), r.frames.to_s, ms(r.mean_period),
+           ms(r.worst_period), declared_note(r)]
+        end
+        "#{title}#{table(DECLARED_HEADER, body, indent: '  ')}"
+      end
+
+      def declared_note(row)
+        if row.frames.zero? then 'never seen'
+        elsif row.late? then 'late: longer than period + jitter'
+        else ''
+        end
+      end
+
+      def undeclared(declared)
+        rows = declared.undeclared
+        title = "Frames seen but never declared: #{count(rows)}\n"
+        return title if rows.empty?
+
+        "#{title}#{table(%w[ID Frames], rows.map { |u| [Frame.key_to_s(u.key), u.frames.to_s] }, indent: '  ')}"
+      end
+
+      def bus_load(declared)
+        bus = declared.bus
+        return "No bitrate declared: no bus load\n" unless bus.bitrate
+
+        rate = CAN::Timing::Format.bitrate(bus.bitrate)
+        seen = declared.observed_load ? CAN::Timing::Format.percent(declared.observed_load) : '-'
+        "Bus load at #{rate}: #{seen} over the log (worst-case bit stuffing), " \
+          "#{CAN::Timing::Format.percent(declared.declared_load)} declared\n"
+      end
+
+      def ms(seconds)
+        seconds ? format('%.3f', (seconds * 1000).to_f) : '-'
       end
 
       def malformed(report)

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/bus/frame'
+require 'syskit/can/timing/frame'
 
 module Syskit
   module Bus
@@ -12,8 +13,14 @@ module Syskit
     # (per device frames, ids, first/last time; unclaimed and overlapping
     # ids) is a sum, min or max over keys. Times are in microseconds.
     class Traffic
-      # Frames of one key: how many, and the time of the first and last.
-      IdStats = Struct.new(:frames, :first_time, :last_time)
+      # Frames of one key: how many, the time of the first and last, and
+      # the longest time between two of them (in log order).
+      IdStats = Struct.new(:frames, :first_time, :last_time, :max_gap)
+
+      # Worst-case bits of a classic frame (see CAN::Timing::Frame#bits).
+      STANDARD_BITS = CAN::Timing::Frame::STANDARD_BITS
+      EXTENDED_BITS = CAN::Timing::Frame::EXTENDED_BITS
+      BITS_PER_BYTE = CAN::Timing::Frame::BITS_PER_BYTE
 
       attr_reader :ids, :frames, :extended, :fd, :rtr, :errors, :first_time, :last_time
 
@@ -24,6 +31,8 @@ module Syskit
         @fd = 0
         @rtr = 0
         @errors = 0
+        @bytes = 0
+        @fd_extended = 0
         @first_time = nil
         @last_time = nil
       end
@@ -32,21 +41,28 @@ module Syskit
       def add(frame)
         return count_error(frame.time) if frame.error?
 
-        count(frame.key, frame.time, frame.extended?, frame.fd?, frame.rtr?)
+        count(frame.key, frame.time, frame.fd?, frame.rtr?, frame.rtr? ? 0 : frame.len)
       end
 
-      # Counts one frame of +key+ received at +time+ (microseconds, or nil).
-      def count(key, time, extended, fd_frame, rtr)
+      # Counts one frame of +key+ (Frame.key) received at +time+
+      # (microseconds, or nil) carrying +bytes+ data bytes.
+      def count(key, time, fd_frame, rtr, bytes)
         @frames += 1
+        extended = key >= Frame::EFF_FLAG
         @extended += 1 if extended
-        @fd += 1 if fd_frame
+        if fd_frame
+          @fd += 1
+          @fd_extended += 1 if extended
+        else
+          @bytes += bytes
+        end
         @rtr += 1 if rtr
         stats = @ids[key]
         if stats
           stats.frames += 1
           stretch(stats, time) if time
         else
-          @ids[key] = IdStats.new(1, time, time)
+          @ids[key] = IdStats.new(1, time, time, 0)
         end
         span(time) if time
       end
@@ -67,14 +83,27 @@ module Syskit
         data_frames - @extended
       end
 
+      # What the classic (not FD) data and remote frames took on the wire,
+      # in bits, worst-case bit stuffing and inter-frame space included.
+      # Counted from totals: a frame costs one addition of its data bytes.
+      def bits
+        classic_extended = @extended - @fd_extended
+        classic_standard = data_frames - @fd - classic_extended
+        (STANDARD_BITS * classic_standard) + (EXTENDED_BITS * classic_extended) + (BITS_PER_BYTE * @bytes)
+      end
+
       private
 
       # Same as #span, for the times of one key.
       def stretch(stats, time)
         # Logs are in time order: the last frame is the latest, except in
         # logs merged from several sources.
-        if stats.last_time.nil? then stats.first_time = stats.last_time = time
-        elsif time >= stats.last_time then stats.last_time = time
+        last = stats.last_time
+        if last.nil? then stats.first_time = stats.last_time = time
+        elsif time >= last
+          gap = time - last
+          stats.max_gap = gap if gap > stats.max_gap
+          stats.last_time = time
         elsif time < stats.first_time then stats.first_time = time
         end
       end

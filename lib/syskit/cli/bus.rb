@@ -4,7 +4,8 @@ module Syskit
   # The main commands are in syskit/cli.rb; this file adds `syskit bus`.
   class CLI < Thor
     # `syskit bus replay|monitor`: bus traffic seen through a profile's plan,
-    # from a candump log or live from a SocketCAN interface.
+    # from a candump log or live from a SocketCAN interface; `syskit bus
+    # timing`: the worst-case timing of the traffic a profile declares.
     class Bus < Thor
       include Support
 
@@ -37,8 +38,9 @@ module Syskit
       method_option :strict, type: :boolean, default: false, desc: 'fail on malformed lines'
       def replay(profile_name, log_path)
         require 'syskit/bus/replay'
-        with_plan(profile_name) do |dispatcher, source|
-          replay = ::Syskit::Bus::Replay.new(dispatcher, log_path, interface: options[:interface], source: source)
+        with_plan(profile_name) do |dispatcher, source, declared_bus|
+          replay = ::Syskit::Bus::Replay.new(dispatcher, log_path, interface: options[:interface], source: source,
+                                                                   declared_bus: declared_bus)
           print_report(replay.run(strict: options[:strict]))
         end
       end
@@ -78,6 +80,29 @@ module Syskit
         exit(130)
       end
 
+      desc 'timing PROFILE', 'worst-case response time of every frame declared on a CAN bus'
+      long_desc <<~TEXT
+        Analyses the frames that PROFILE's robot declares on the CAN bus
+        --bus (.frame on its devices, .bitrate on the bus): for each frame, in
+        priority order, its transmission time, blocking, worst-case response
+        time and slack, with the revised analysis of Davis, Burns, Bril and
+        Lukkien (Real-Time Systems 35, 2007); then the bus's utilisation.
+
+        Exit status 1 when a frame can miss its deadline.
+
+        Example: syskit bus timing Live::Base --bus can0 --format json
+      TEXT
+      method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
+      def timing(profile_name)
+        require 'syskit/cli/bus_timing'
+        with_app(robots: [options[:robot]]) do |app|
+          profile = find_profile(app, profile_name)
+          result, bus = BusTiming.analyse(profile, options[:bus])
+          puts BusTiming.render(result, bus, profile, options[:format])
+          exit(1) unless result.schedulable?
+        end
+      end
+
       private
 
       # The monitor needs the ffi gem, which only it loads.
@@ -89,7 +114,8 @@ module Syskit
       end
 
       # Loads the app, generates PROFILE's plan and yields the dispatcher of
-      # --bus with what the report says about its source.
+      # --bus with what the report says about its source, and the plan's
+      # entry of the bus when it declares CAN traffic.
       def with_plan(profile_name)
         # The bus tools are loaded by their commands only: `syskit plan`
         # does not pay for them (nor for ffi, needed by monitor alone).
@@ -98,7 +124,10 @@ module Syskit
           profile = find_profile(app, profile_name)
           plan = Network::Generator.plan_profile(app, profile, robot: options[:robot]).plan
           bus = options[:bus] || only_bus(plan)
-          yield ::Syskit::Bus::Dispatcher.from_plan(plan, bus), { 'profile' => plan.profile, 'robot' => plan.robot }
+          declared = plan.find_bus(bus)
+          declared = nil unless declared && (declared.bitrate || declared.frames.any?)
+          yield ::Syskit::Bus::Dispatcher.from_plan(plan, bus), { 'profile' => plan.profile, 'robot' => plan.robot },
+                declared
         end
       end
 

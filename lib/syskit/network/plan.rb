@@ -23,6 +23,13 @@ module Syskit
       # declared (attributes such as can_id, period, burst).
       Device = Struct.new(:name, :model, :task, :bus, :bus_to_client, :client_to_bus, :attributes,
                           :period, :burst, :sample_size, :declared_at)
+      # A CAN bus of the plan and the frames declared on its wire (by every
+      # device of the robot attached to it or to a CAN bus attached to it),
+      # in priority order; +bitrate+ and +utilization+ (a Rational) are nil
+      # when no bitrate is declared.
+      Bus = Struct.new(:name, :bitrate, :utilization, :frames)
+      # A frame declared on a bus; times are Rational seconds.
+      Frame = Struct.new(:id, :extended, :bytes, :period, :deadline, :jitter, :device, :declared_at)
 
       # Entries are built by position, the fast way; tests and tools name
       # the fields they need (the others are nil):
@@ -39,7 +46,7 @@ module Syskit
       end
       [Task, Port, Device].each { |entry| entry.extend(ByField) }
 
-      attr_reader :profile, :robot, :tasks, :devices, :connections, :order
+      attr_reader :profile, :robot, :tasks, :devices, :connections, :order, :buses
 
       NO_ATTRIBUTES = {}.freeze
       NO_DEPENDENCIES = [].freeze
@@ -55,8 +62,28 @@ module Syskit
           tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports) },
           devices: context.tasks.map { |t| device_entry(context.device_of(t), t, paths) }.sort_by(&:name),
           connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
-          order: context.order.map { |s| Step.new(s.step, s.task.name).freeze }
+          order: context.order.map { |s| Step.new(s.step, s.task.name).freeze },
+          buses: bus_entries(context, paths)
         )
+      end
+
+      # The CAN buses of the plan that have a wire of their own (not
+      # attached to another CAN bus), by name.
+      def self.bus_entries(context, paths)
+        context.tasks_by_name.filter_map do |task|
+          bus = context.device_of(task)
+          next unless bus.com_bus? && Robot::CanTraffic.can_bus?(bus) && bus.carrier.equal?(bus)
+
+          frames = bus.frames_on_wire.sort_by.with_index { |f, i| [f.arbitration_key, f.device.to_s, i] }
+          utilization = bus.bitrate && CAN::Timing.utilization(bus.bitrate, frames)
+          Bus.new(bus.name, bus.bitrate, utilization, frames.map { |f| frame_entry(f, paths) }.freeze).freeze
+        end
+      end
+
+      # The plan entry of a declared CAN::Timing::Frame.
+      def self.frame_entry(frame, paths)
+        Frame.new(frame.id, frame.extended, frame.bytes, frame.period, frame.deadline, frame.jitter,
+                  frame.device, declared_at(frame.location, paths)).freeze
       end
 
       # Entries are frozen as they are built, so the plan is a frozen value
@@ -157,14 +184,20 @@ module Syskit
         "#{conn.from.task}\0#{conn.from.port}\0#{conn.to.task}\0#{conn.to.port}"
       end
 
-      def initialize(profile:, robot:, tasks:, devices:, connections:, order:)
+      def initialize(profile:, robot:, tasks:, devices:, connections:, order:, buses: [])
         @profile = profile.freeze
         @robot = robot.freeze
         @tasks = tasks.freeze
         @devices = devices.freeze
         @connections = connections.freeze
         @order = order.freeze
+        @buses = buses.freeze
         freeze
+      end
+
+      # The bus entry named +name+ (nil when the plan has none).
+      def find_bus(name)
+        buses.find { |b| b.name == name }
       end
 
       def find_task(name)
@@ -192,7 +225,7 @@ module Syskit
 
       # The parts of the plan that are lists of entries, in document order
       # (after 'profile' and 'robot').
-      LISTS = %w[tasks devices connections order].freeze
+      LISTS = %w[tasks devices connections order buses].freeze
 
       # The plan as plain data, the JSON document's content.
       def to_h
@@ -205,14 +238,15 @@ module Syskit
       # +entries+ of list +list+ (one of LISTS) as plain data: hashes with
       # string keys, as in #to_h. +port_hashes+ keeps one hash per port entry.
       def plain_entries(list, entries, port_hashes = {}.compare_by_identity)
-        case list
-        when 'tasks' then entries.map { |t| task_hash(t, port_hashes) }
-        when 'devices' then entries.map { |d| device_hash(d) }
-        when 'connections' then entries.map { |c| connection_hash(c) }
-        when 'order' then entries.map { |s| { 'step' => s.step, 'task' => s.task } }
-        else raise ArgumentError, "#{list} is not one of #{LISTS.join(', ')}"
-        end
+        return entries.map { |t| task_hash(t, port_hashes) } if list == 'tasks'
+
+        hash = ENTRY_HASHES.fetch(list) { raise ArgumentError, "#{list} is not one of #{LISTS.join(', ')}" }
+        entries.map { |entry| send(hash, entry) }
       end
+
+      # The method making the plain data of an entry, by list (but tasks).
+      ENTRY_HASHES = { 'devices' => :device_hash, 'connections' => :connection_hash, 'order' => :step_hash,
+                       'buses' => :bus_hash }.freeze
 
       private
 
@@ -236,6 +270,22 @@ module Syskit
           'bus_to_client' => device.bus_to_client, 'client_to_bus' => device.client_to_bus,
           'attributes' => device.attributes, 'period' => device.period, 'burst' => device.burst,
           'sample_size' => device.sample_size, 'declared_at' => device.declared_at
+        }
+      end
+
+      def step_hash(step)
+        { 'step' => step.step, 'task' => step.task }
+      end
+
+      # Times in seconds, utilisation as a fraction, as `syskit bus timing`.
+      def bus_hash(bus)
+        {
+          'name' => bus.name, 'bitrate' => bus.bitrate, 'utilization' => bus.utilization&.to_f,
+          'frames' => bus.frames.map do |f|
+            { 'id' => f.id, 'extended' => f.extended, 'bytes' => f.bytes, 'device' => f.device,
+              'period' => f.period.to_f, 'deadline' => f.deadline.to_f, 'jitter' => f.jitter.to_f,
+              'declared_at' => f.declared_at }
+          end
         }
       end
 

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/render/output'
+require 'syskit/can/timing/format'
 
 module Syskit
   module Render
@@ -36,8 +37,50 @@ module Syskit
         out << "\nConnections (#{plan.connections.size})\n"
         connections_text(plan.connections, out, io)
         out << "\nOrder\n"
-        io.write(order_text(plan.order, out, io))
+        order_text(plan.order, out, io)
+        io.write(buses_text(plan.buses, out))
         io
+      end
+
+      # The CAN buses: bitrate and utilisation, then one line per declared
+      # frame, in priority order.
+      def buses_text(buses, out)
+        return out if buses.empty?
+
+        out << "\nBuses (#{buses.size})\n"
+        buses.each do |bus|
+          out << '  ' << bus.name << '  ' << bus_load(bus) << "\n"
+          out << "    no frames declared\n" if bus.frames.empty?
+          id_width = bus.frames.map { |f| f.extended ? 8 : 3 }.max
+          device_width = bus.frames.map { |f| f.device.size }.max
+          bus.frames.each { |f| frame_text(f, id_width, device_width, out) }
+        end
+        out
+      end
+
+      # "250 kbit/s, utilisation 3.1 %"
+      def bus_load(bus)
+        return 'no bitrate declared' unless bus.bitrate
+
+        "#{CAN::Timing::Format.bitrate(bus.bitrate)}, utilisation #{CAN::Timing::Format.percent(bus.utilization)}"
+      end
+
+      # "    080  sync  0 bytes, period 10 ms, deadline 2 ms, jitter 0.1 ms"
+      def frame_text(frame, id_width, device_width, out)
+        id = format(frame.extended ? '%08X' : '%03X', frame.id)
+        pad(id_width - id.size, out << '    ' << id) << '  '
+        pad(device_width - frame.device.size, out << frame.device) << '  ' << frame.bytes.to_s
+        out << (frame.bytes == 1 ? ' byte' : ' bytes')
+        frame_times(frame).each { |what, value| out << ', ' << what << ' ' << CAN::Timing::Format.ms(value) }
+        out << "\n"
+      end
+
+      # The period, and the deadline and jitter when they say more.
+      def frame_times(frame)
+        times = [['period', frame.period]]
+        times << ['deadline', frame.deadline] if frame.deadline != frame.period
+        times << ['jitter', frame.jitter] if frame.jitter.positive?
+        times
       end
 
       # The task's line, its devices and dependencies, then its properties

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/robot/can_traffic'
+
 module Syskit
   module Robot
     # A device on a robot, declared in a profile's robot block:
@@ -10,6 +12,8 @@ module Syskit
     # Chainable calls configure it; bus attributes (+can_id+) come from the
     # modules of its device model and of the bus it is attached to.
     class Device
+      include CanTraffic::DeviceStatements
+
       DEFAULT_CONF = ['default'].freeze
 
       attr_reader :name, :robot, :declared_at, :requested_model, :using, :bus,
@@ -218,7 +222,7 @@ module Syskit
       end
 
       def chainable_methods
-        (%w[with_conf prefer_deployed_tasks period burst sample_size doc attach_to] +
+        (%w[with_conf prefer_deployed_tasks period burst sample_size doc attach_to frame] +
           singleton_class.ancestors.grep(Models::DeviceConfigurationModule)
                          .flat_map { |m| m.public_instance_methods(false).map(&:to_s) })
           .reject { |m| m.start_with?('__') }.uniq
@@ -255,6 +259,8 @@ module Syskit
     # A communication bus on a robot (+com_bus CAN, as: 'can0'+). It is a
     # device too: its driver is the bus driver task.
     class ComBus < Device
+      include CanTraffic::BusStatements
+
       def initialize(*args, **options)
         super
         @attached_devices = []

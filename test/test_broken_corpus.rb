@@ -10,6 +10,7 @@ module Syskit
   #   command: check                   # or plan, gen (default: check)
   #   args: [Base, gsp_dev]            # optional, after the command
   #   location: models/profiles/base.rb:8   # the line where the user must act
+  #                                         # (a path alone for a directory: models)
   #   message: needs a name|as:        # a regexp the first line's message matches
   #
   # For every case, `syskit <command> --app <case>` must exit with status 1
@@ -170,9 +171,10 @@ module Syskit
       self.class.case_dirs.each do |dir|
         kase = Case.load(dir)
         assert_includes %w[check plan gen], kase.command, kase.name
-        assert_match(/\A\S+:\d+\z/, kase.location, kase.name)
-        path = kase.location.sub(/:\d+\z/, '')
-        assert File.file?(File.join(dir, path)), "#{kase.name}: #{kase.location} does not exist"
+        assert_match(/\A\S+?(:\d+)?\z/, kase.location, kase.name)
+        path = File.join(dir, kase.location.sub(/:\d+\z/, ''))
+        exists = kase.location.match?(/:\d+\z/) ? File.file?(path) : File.exist?(path) || File.symlink?(path)
+        assert exists, "#{kase.name}: #{kase.location} does not exist"
       end
     end
 

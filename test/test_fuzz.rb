@@ -5,7 +5,8 @@ require 'timeout'
 
 module Syskit
   # Random mutations of working apps (a profile, an .orogen spec, a YAML
-  # configuration file, an extension file, a robot configuration): whatever
+  # configuration file, an extension file, a robot configuration,
+  # config/syskit.yml): whatever
   # the mutation, `syskit check` must either succeed or report Syskit errors
   # that each start with the user's file:line, never an internal error, a
   # backtrace, or a hang.
@@ -30,10 +31,13 @@ module Syskit
     class Hang < Exception; end # rubocop:disable Lint/InheritException
 
     # The working apps and the files mutated in each, with their weight.
-    # Configuration files are added to the seed apps so there is YAML to mutate.
+    # Configuration files, a second robot configuration and a fuller
+    # config/syskit.yml are added to the seed apps so there is YAML and
+    # robot configuration to mutate.
+    SYSKIT_YML = "# the app's name and the acronyms its names keep\nname: MyApp\nacronyms: [CAN, GPS, IMU]\n"
     BASES = {
       'can_bus' => {
-        extra: { 'config/orogen/canbus::Task.yml' => <<~YAML },
+        extra: { 'config/orogen/canbus::Task.yml' => <<~YAML, 'config/syskit.yml' => SYSKIT_YML },
           --- name:default
           device: can0
           checkBusOkInterval: 100
@@ -43,11 +47,11 @@ module Syskit
         targets: {
           'models/profiles/base.rb' => 3, 'models/orogen/can_temperature_sensor.orogen' => 3,
           'config/orogen/canbus::Task.yml' => 3, 'models/orogen/can_temperature_sensor.rb' => 1,
-          'config/robots/default.rb' => 1
+          'config/robots/default.rb' => 2, 'config/syskit.yml' => 2
         }
       },
       'demux' => {
-        extra: { 'config/orogen/canbus::Task.yml' => <<~YAML },
+        extra: { 'config/orogen/canbus::Task.yml' => <<~YAML, 'config/syskit.yml' => SYSKIT_YML },
           --- name:default
           devices:
             - name: temperature_sensor
@@ -57,14 +61,19 @@ module Syskit
         targets: {
           'models/profiles/base.rb' => 3, 'models/orogen/canbus.orogen' => 3,
           'config/orogen/canbus::Task.yml' => 3, 'models/orogen/canbus.rb' => 2,
-          'models/typekits/my_bus.rb' => 1
+          'models/typekits/my_bus.rb' => 1, 'config/robots/default.rb' => 2, 'config/syskit.yml' => 2
         }
       },
       'cameras' => {
-        extra: {},
+        extra: { 'config/robots/sim.rb' => <<~RUBY, 'config/syskit.yml' => SYSKIT_YML },
+          # the cameras of the simulator, one deployment for both
+          Syskit.conf.use_deployment OroGen.camera_gige.Task => 'forward_camera'
+          Syskit.conf.use_deployment OroGen.camera_gige.Task => 'aft_camera'
+        RUBY
         targets: {
           'models/profiles/base.rb' => 3, 'models/orogen/camera_gige.orogen' => 3,
-          'config/orogen/camera_gige::Task.yml' => 3, 'config/robots/default.rb' => 1
+          'config/orogen/camera_gige::Task.yml' => 3, 'config/robots/default.rb' => 2,
+          'config/robots/sim.rb' => 2, 'config/syskit.yml' => 2
         }
       }
     }.freeze
@@ -77,7 +86,13 @@ module Syskit
       "'", '/', '/^w/', 'as:', "as: 'x'", 'using:', 'OroGen', 'OroGen.nope', 'Types', '.can_id(1, 2)',
       '.with_conf', "'default'", 'device', 'through', 'com_bus', 'task_context', 'property', 'input_port',
       'output_port', 'dynamic_output_port', 'provides', 'driver_for', '/canbus/Message', '/nope/Type', '[1, 2]',
-      '{ a: 1 }', 'key: value', 'properties', 'each_declared_attached_device', 'robot'
+      '{ a: 1 }', 'key: value', 'properties', 'each_declared_attached_device', 'robot',
+      # configuration files and syskit.yml: values a plan cannot hold, odd YAML
+      '.nan', '.inf', '-.inf', '1e400', '!!binary /w==', '!!float', '~', 'name:', 'acronyms:', '[CAN, ]',
+      'name: 9lives', 'name: My::App', '? [a]', '<<: *a', '|', '>-', '"\\xff"', '0o777', '2025-06-01',
+      # robot configurations
+      'Syskit.conf', '.use_deployment', "use_deployment 'nope'", "OroGen.camera_gige.Task => 'x'",
+      "=> 'temperature_sensor'", 'Robot.requires', 'Syskit.conf.use_deployment nil'
     ].freeze
 
     MUTATIONS = %i[delete_line duplicate_line swap_lines flip_char truncate insert_token insert_line

@@ -57,8 +57,10 @@ module Syskit
       inside ? path[(root.size + 1)..] : path
     end
 
+    # "file:line"; only the path for a location without a line (a
+    # directory, a file as a whole).
     def to_s(root = Syskit.app&.root)
-      "#{relative_path(root)}:#{lineno}"
+      lineno ? "#{relative_path(root)}:#{lineno}" : relative_path(root)
     end
   end
 end

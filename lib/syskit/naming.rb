@@ -36,6 +36,14 @@ module Syskit
       DidYouMean::SpellChecker.new(dictionary: candidates.map(&:to_s)).correct(name.to_s)
     end
 
+    # "a, b, c" or, past +max+ items, "a, b, c and 997 more": lists that a
+    # message per device repeats (the deployed tasks it could use) stay
+    # short, so that the output grows with the devices, not their pairs.
+    def enumerate(items, max: 10)
+      shown = items.first(max).join(', ')
+      items.size > max ? "#{shown} and #{items.size - max} more" : shown
+    end
+
     # " (did you mean 'x'?)" or an empty string.
     def did_you_mean(name, candidates)
       found = suggest(name, candidates)

@@ -40,7 +40,7 @@ module Syskit
 
     # Evaluates a robot block.
     def robot_block(&block)
-      Robot::DSL.new(robot).instance_eval(&block) if block
+      robot.declaring { Robot::DSL.new(robot).instance_eval(&block) } if block
       robot
     end
 

@@ -173,6 +173,47 @@ module Syskit
         assert_equal 2, log.malformed.first.lineno
       end
 
+      def test_a_line_too_long_for_candump_is_malformed_and_skipped
+        text = "(1436509053.249713) can0 123#00\n#{'x' * 10_000}\n(1436509053.249714) can0 123#01\n"
+        [read_fast(text), read_frames(text)].each do |log, traffic|
+          assert_equal [2, 1, 3], [traffic.frames, log.malformed_count, log.lines]
+          assert_equal 2, log.malformed.first.lineno
+          assert_match(/\Alonger than 4096 bytes, which no candump line is/, log.malformed.first.message)
+          assert_equal "#{('x' * 40).inspect}...", log.malformed.first.text
+        end
+      end
+
+      # /dev/zero as a log: one endless line. It is read in pieces, so the
+      # memory it takes does not grow with it: 96 MB of zeros through a
+      # pipe, and the strings alive while it is read (garbage collected
+      # first) stay within a few MB.
+      def test_an_endless_line_is_read_in_bounded_memory
+        require 'objspace'
+        reader, writer = IO.pipe
+        feeder = Thread.new do
+          chunk = "\0" * (1 << 20)
+          96.times { writer.write(chunk) }
+          writer.close
+        end
+        start = live_strings
+        peak = start
+        pieces = 0
+        log = CandumpLog.new('zero.log').read(reader, Traffic.new) do
+          pieces += 1
+          peak = [peak, live_strings].max if pieces == 1 || (pieces % 4096).zero?
+        end
+        feeder.join
+        assert_operator peak - start, :<, 16 << 20, 'the line was held in memory'
+        assert_equal [1, 1], [log.lines, log.malformed_count]
+      ensure
+        reader&.close
+      end
+
+      def live_strings
+        GC.start
+        ObjectSpace.memsize_of_all(String)
+      end
+
       def test_a_chosen_interface
         traffic = Traffic.new
         log = CandumpLog.new('test.log', interface: 'can1').read(StringIO.new(MIXED), traffic)

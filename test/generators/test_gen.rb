@@ -191,7 +191,7 @@ module Syskit
         %w[profile live/../../base] => "contains '..'",
         %w[orogen ../gps_ublox] => "contains '..'",
         %w[orogen gps/ublox] => "'gps/ublox' is not a task library name",
-        %w[dev elsewhere/thing] => 'models/devices/elsewhere/thing.rb would be written outside of models/ and test/',
+        %w[dev elsewhere/thing] => 'models/devices/elsewhere: this directory is a symlink out of the app',
         %w[orogen gps_ubox] => "no task library 'gps_ubox' (did you mean 'gps_ublox'?)\n  " \
                                'hint: there is no gps_ubox.orogen in models/orogen, ' }.each do |args, message|
         assert_includes refused(*args, chdir: app), message, args.join(' ')

@@ -118,6 +118,20 @@ module Syskit
                       at: 'models/profiles/base.rb:11', hint: /\.prefer_deployed_tasks\('a'\)/, root: @root
     end
 
+    # Each device without a preference is told of the candidates: the
+    # first ten and how many more, or n errors would list n candidates.
+    def test_candidate_lists_stay_short
+      devices = Array.new(12) { |i| "  device(Devices::TemperatureSensor, as: 'd#{i}').can_id(#{0x100 + i}, 0x7ff)" }
+      deployments = Array.new(12) { |i| "Syskit.conf.use_deployment OroGen.sensor.Task => 'd#{i}'" }
+      robot = "com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\nthrough 'can0' do\n#{devices.join("\n")}\nend\n"
+      config = "#{FILES['config/robots/default.rb']}#{deployments.join("\n")}\n"
+      errors = generation_error(robot, 'config/robots/default.rb' => config)
+      assert_equal 12, errors.size
+      assert_match(/driver sensor::Task: a \(sensor::Task, deployment a\), b \(.*\), d0 .*, d5 \(.*\) and 4 more\z/,
+                   errors.first.message)
+      assert_match(/prefer_deployed_tasks\('d0'\)/, errors.first.hint)
+    end
+
     def test_preference_matching_nothing
       errors = generation_error(on_can0.sub(".prefer_deployed_tasks('a')", '.prefer_deployed_tasks(/front/)'))
       assert_reported errors.first,

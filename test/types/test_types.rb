@@ -59,5 +59,33 @@ module Syskit
       assert_equal({ 'k' => [1, 'x'] }, ::Types.my_bus.Calibration.from_ruby({ 'k' => [1, 'x'] }))
       assert_equal [0] * 8, @app.types.find('/uint8_t[8]').zero
     end
+
+    # A plan is written as JSON: values it cannot hold are refused by the
+    # types, wherever they are set (configuration files, configure, struct
+    # fields, defaults, opaque data at any depth).
+    def test_values_a_plan_cannot_hold_are_refused
+      refused = {
+        @app.types.find('/double') => [Float::NAN, Float::INFINITY, -Float::INFINITY, 10**400, Complex(1, 1)],
+        @app.types.find('/std/string') => ["\xFF", "\xC0\xA8".b, "caf\xE9".dup.force_encoding('UTF-8')],
+        ::Types.my_bus.Calibration => [{ 'k' => [1, Float::NAN] }, { "\xFF".b => 1 }, [:ok, ["\xFF"]]],
+        ::Types.my_bus.Mode => ["\xFF"]
+      }
+      refused.each do |type, values|
+        values.each { |v| assert_raises(Types::ValueError, "#{type}: #{v.inspect}") { type.from_ruby(v) } }
+      end
+      error = assert_raises(ArgumentError) { ::Types.my_bus.Device.new("gps\xFF") }
+      assert_match(%r{/my_bus/Device.name: expected UTF-8 text for /std/string, got bytes that are not valid UTF-8},
+                   error.message)
+    end
+
+    def test_text_in_other_encodings_is_converted_to_utf8
+      string = @app.types.find('/std/string')
+      converted = string.from_ruby("caf\xE9".dup.force_encoding('ISO-8859-1'))
+      assert_equal 'café', converted
+      assert_equal Encoding::UTF_8, converted.encoding
+      assert_equal Encoding::UTF_8, string.from_ruby('plain'.b).encoding
+      assert_equal 'café', string.from_ruby('café'.b)
+      assert_equal 2.0, @app.types.find('/double').from_ruby(2)
+    end
   end
 end

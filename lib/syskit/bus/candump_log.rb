@@ -21,6 +21,11 @@ module Syskit
       # allocation): lines that pass are read by index arithmetic, the
       # others (rare: malformed or unusual spellings) by CandumpLine.
       WRITTEN = /\A\(\d+\.\d{6}\) +[^ \n]+ (?:\h{3}|\h{8})#(?:R[0-8]?|#\h(?:\h\h){0,64}|(?:\h\h){0,8})(?: [RT])?\n?\z/
+      # The longest line candump writes is under 300 bytes (a CAN FD frame
+      # of 64 bytes). Lines are read in pieces of at most this many bytes, a
+      # longer line is skipped piece by piece: memory stays bounded whatever
+      # the file holds (a binary file, /dev/zero).
+      MAX_LINE = 4096
       SPACE = 32
       FD_MARK = 35 # '#'
       RTR_MARK = 82 # 'R'
@@ -41,9 +46,8 @@ module Syskit
       # Counts every frame of the selected interface read from +io+ into
       # +traffic+ (a Traffic); yields after each line, for progress.
       def read(io, traffic)
-        io.each_line do |line|
-          @lines += 1
-          count_written(line, traffic) || count_parsed(line, traffic)
+        each_line(io) do |line|
+          count_written(line, traffic) || count_parsed(line, traffic) if line
           yield if block_given?
         end
         self
@@ -52,8 +56,9 @@ module Syskit
       # Yields the Frame of every well-formed line of the selected interface
       # read from +io+ (slower than #read: for programs that want frames).
       def each_frame(io)
-        io.each_line do |line|
-          @lines += 1
+        each_line(io) do |line|
+          next unless line
+
           frame, iface = parse(line)
           yield frame if frame && selected?(iface)
         end
@@ -61,6 +66,26 @@ module Syskit
       end
 
       private
+
+      # Yields each line of +io+, counting them; a line longer than MAX_LINE
+      # is counted as malformed and its pieces yielded as nil (for progress).
+      def each_line(io)
+        long = false
+        io.each_line(MAX_LINE) do |piece|
+          whole = piece.bytesize < MAX_LINE || piece.end_with?("\n")
+          unless long
+            @lines += 1
+            too_long(piece) unless whole
+          end
+          yield(long || !whole ? nil : piece)
+          long = !whole
+        end
+      end
+
+      def too_long(piece)
+        record_malformed("longer than #{MAX_LINE} bytes, which no candump line is: is this a candump log?",
+                         "#{piece.byteslice(0, 40).inspect}...")
+      end
 
       # Counts a line that matched WRITTEN, reading its fields by position;
       # false when its values need CandumpLine's checks and messages. One
@@ -129,8 +154,12 @@ module Syskit
         # Only the last line of a file can lack its end of line: a log cut
         # short while candump was writing it.
         message = line.end_with?("\n") ? e.message : "last line cut short (no end of line): #{e.message}"
+        record_malformed(message, line.chomp)
+      end
+
+      def record_malformed(message, text)
         @malformed_count += 1
-        @malformed << Malformed.new(@lines, message, line.chomp) if @malformed.size < KEEP_MALFORMED
+        @malformed << Malformed.new(@lines, message, text) if @malformed.size < KEEP_MALFORMED
         nil
       end
 

@@ -65,7 +65,7 @@ module Syskit
       def syskit_gem_line
         return "gem 'syskit', '~> #{Syskit::VERSION}'" unless checkout?
 
-        path = GEM_ROOT.match?(/['\\]/) ? GEM_ROOT.inspect : "'#{GEM_ROOT}'"
+        path = GEM_ROOT.match?(/['\\\r\n]/) ? GEM_ROOT.inspect : "'#{GEM_ROOT}'"
         "gem 'syskit', path: #{path}"
       end
 

@@ -2,6 +2,7 @@
 
 require 'fileutils'
 require 'syskit/errors'
+require 'syskit/generators/file_transaction'
 
 module Syskit
   module Generators
@@ -10,8 +11,8 @@ module Syskit
     # Every file is checked before anything is written: it must land inside
     # one of the allowed directories once symlinks are resolved, and must not
     # exist unless +force+ is set. Then each file is written to a temporary
-    # file in its own directory and the temporaries are renamed into place,
-    # so that a failure half-way leaves no partial file behind.
+    # file in its own directory and the temporaries are renamed into place
+    # (see FileTransaction): a failure half-way is undone.
     class FileWriter
       # One file to write: its path relative to the root, its content, and
       # whether it replaces an existing file.
@@ -23,7 +24,11 @@ module Syskit
       # directories (relative to +root+) files may be written in.
       def initialize(root, allowed: ['.'], force: false, dry_run: false)
         @root = File.expand_path(root)
+        @real_root = real_target(@root)
+        # An allowed directory that is a symlink out of the app (models ->
+        # /elsewhere) allows nothing: files are written in the app only.
         @allowed = allowed.map { |dir| real_target(File.expand_path(dir, @root)) }
+                          .select { |dir| dir && @real_root && within?(dir, @real_root) }
         @force = force
         @dry_run = dry_run
       end
@@ -72,12 +77,40 @@ module Syskit
 
       def check_inside(path, full)
         real = real_target(File.dirname(full))
-        return if real && @allowed.compact.any? { |dir| real == dir || real.start_with?("#{dir}/") }
+        return if real && @allowed.any? { |dir| within?(real, dir) }
+
+        link, target = escaping_symlink(path)
+        if link
+          raise GeneratorError.new(
+            "this directory is a symlink out of the app (to #{target}): #{path} would be written there",
+            location: Location.new(File.join(root, link), nil),
+            hint: 'generators write in the app only: make it a directory of the app, or generate in the app it links to'
+          )
+        end
 
         raise GeneratorError.new(
           "#{path} would be written outside of #{allowed_description} (#{real || full})",
           hint: 'check that none of its directories is a symlink out of the app, and give names relative to models/'
         )
+      end
+
+      def within?(path, dir)
+        path == dir || path.start_with?("#{dir}/")
+      end
+
+      # The first directory of +path+ (relative to the root) that is a
+      # symlink pointing out of the app, and where it points.
+      def escaping_symlink(path)
+        parts = File.dirname(path).split('/')
+        parts.each_index do |i|
+          link = parts[0..i].join('/')
+          full = File.join(root, link)
+          next unless File.symlink?(full)
+
+          target = real_target(full)
+          return [link, target || File.readlink(full)] unless target && @real_root && within?(target, @real_root)
+        end
+        nil
       end
 
       def check_target(path, full)
@@ -104,44 +137,38 @@ module Syskit
 
       def allowed_description
         real_root = real_target(root)
-        dirs = @allowed.compact.map { |dir| dir == real_root ? 'the app' : "#{dir.delete_prefix("#{real_root}/")}/" }
+        dirs = @allowed.map { |dir| dir == real_root ? 'the app' : "#{dir.delete_prefix("#{real_root}/")}/" }
         dirs.join(' and ')
       end
 
+      # Writes every file to a temporary file, then renames them all into
+      # place; on any failure (or Ctrl-C) what was done is undone.
       def commit(entries)
-        created_dirs = []
-        temps = {}
-        entries.each do |entry|
+        transaction = FileTransaction.new
+        temps = entries.map do |entry|
           full = File.expand_path(entry.path, root)
-          make_dirs(File.dirname(full), created_dirs)
-          temps[entry] = write_temp(full, entry.content)
+          transaction.make_dirs(File.dirname(full))
+          [transaction.write_temp(full, entry.content), full]
         end
-        temps.each { |entry, temp| File.rename(temp, File.expand_path(entry.path, root)) }
-      rescue SystemCallError => e
-        temps.each_value { |temp| FileUtils.rm_f(temp) }
-        created_dirs.reverse_each { |dir| Dir.rmdir(dir) if Dir.empty?(dir) }
-        raise GeneratorError.new("cannot write the generated files, nothing was written: #{e.message}",
-                                 hint: 'check the permissions of the app directory')
+        temps.each { |temp, full| transaction.place(temp, full) }
+        transaction.finish
+      rescue Exception => e # rubocop:disable Lint/RescueException -- undo, then report or re-raise
+        left = transaction.roll_back
+        raise unless e.is_a?(SystemCallError) || e.is_a?(IOError)
+
+        raise write_error(e, left)
       end
 
-      # mkdir -p, recording in +created+ the directories it made (outermost
-      # first), so that a failure can remove them again.
-      def make_dirs(dir, created)
-        missing = []
-        until File.directory?(dir)
-          missing.unshift(dir)
-          dir = File.dirname(dir)
+      def write_error(error, left)
+        if left.empty?
+          return GeneratorError.new("cannot write the generated files, nothing was written: #{error.message}",
+                                    hint: 'check the permissions of the app directory and the space left on its disk')
         end
-        missing.each do |d|
-          Dir.mkdir(d)
-          created << d
-        end
-      end
 
-      def write_temp(full, content)
-        temp = File.join(File.dirname(full), ".#{File.basename(full)}.#{Process.pid}.tmp")
-        File.open(temp, File::WRONLY | File::CREAT | File::EXCL, 0o644) { |io| io.write(content) }
-        temp
+        GeneratorError.new(
+          "cannot write the generated files (#{error.message}), and could not undo everything: #{left.join('; ')}",
+          hint: 'restore these files by hand (from their backup, or version control)'
+        )
       end
     end
   end

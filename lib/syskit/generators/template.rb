@@ -15,6 +15,64 @@ module Syskit
       BEGIN_BODY = "\0begin-body"
       END_BODY = "\0end-body"
 
+      # Text of several lines a template may insert with <%= %>: comments
+      # made by {Template.comment}, module nesting. Any other inserted value
+      # must hold on one line (see Output).
+      class Lines < String
+        # ERB calls to_s on what it inserts; a String subclass would
+        # otherwise come back as a plain String.
+        def to_s
+          self
+        end
+      end
+
+      # What a template is rendered into. The values of <%= %> tags go
+      # through #value: a line break in one of them (a name, a doc string
+      # from a spec) would start a line of live Ruby in the generated file,
+      # so only Lines may hold several lines.
+      class Output
+        def initialize
+          @text = +''
+        end
+
+        # The template's own text.
+        def <<(text)
+          @text << text
+          self
+        end
+
+        # The value of a <%= %> tag.
+        def value(text)
+          if !text.is_a?(Lines) && text.match?(/[\r\n]/)
+            raise GeneratorError.new("a generated line would be cut by a line break in #{text[0, 60].inspect}",
+                                     hint: 'names given to generators hold on one line')
+          end
+
+          @text << text
+          self
+        end
+
+        def to_s
+          @text
+        end
+      end
+
+      # ERB whose output is an Output.
+      class Compiled < ERB
+        def set_eoutvar(compiler, eoutvar = '_erbout')
+          super
+          compiler.insert_cmd = "#{eoutvar}.value"
+          compiler.pre_cmd = ["#{eoutvar} = ::Syskit::Generators::Template::Output.new"]
+          compiler.post_cmd = ["#{eoutvar}.to_s"]
+        end
+      end
+
+      # +text+ as Ruby comment lines ("# " before each line), whatever
+      # line breaks it holds.
+      def self.comment(text)
+        Lines.new(text.to_s.split(/\r\n|\r|\n/).map { |line| "# #{line}".rstrip }.join("\n"))
+      end
+
       # Nested +module+ statements around a template's body.
       class Modules
         attr_reader :names
@@ -26,20 +84,20 @@ module Syskit
         # The opening lines, then the marker of the body's start.
         def open
           lines = names.each_with_index.map { |name, i| "#{'  ' * i}module #{name}" }
-          (lines + [BEGIN_BODY]).join("\n")
+          Lines.new((lines + [BEGIN_BODY]).join("\n"))
         end
 
         # The marker of the body's end, then the closing lines.
         def close
           lines = names.each_index.map { |i| "#{'  ' * i}end" }.reverse
-          ([END_BODY] + lines).join("\n")
+          Lines.new(([END_BODY] + lines).join("\n"))
         end
       end
 
       # Renders templates/NAME.erb with +locals+ as local variables.
       def self.render(name, **locals)
         path = File.join(DIR, "#{name}.erb")
-        text = ERB.new(File.read(path), trim_mode: '-').result_with_hash(locals)
+        text = Compiled.new(File.read(path), trim_mode: '-').result_with_hash(locals)
         indent_bodies(text, locals.values.grep(Modules).first)
       end
 

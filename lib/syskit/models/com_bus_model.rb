@@ -51,9 +51,11 @@ module Syskit
 
       # Adds the methods defined in the block (e.g. +dsl_attribute :can_id+) to
       # every device attached to a bus of this model or of its sub-models.
-      def extend_attached_device_configuration(&)
+      def extend_attached_device_configuration(&block)
+        Arguments.block(block, statement: 'extend_attached_device_configuration',
+                               example: 'extend_attached_device_configuration do dsl_attribute :can_id end')
         @attached_device_configuration ||= DeviceConfigurationModule.new
-        @attached_device_configuration.module_eval(&)
+        @attached_device_configuration.module_eval(&block)
         @attached_device_configuration
       end
 

@@ -13,17 +13,44 @@ module Syskit
       #   when there is no block) and returns the device, for chaining.
       # The block may raise to reject the arguments; the error then points at
       # the user's call.
-      def dsl_attribute(name, &filter)
-        attr = name.to_sym
+      def dsl_attribute(name = nil, &filter)
+        attr = Arguments.name(name, statement: 'dsl_attribute', what: 'an attribute name', pattern: Arguments::METHOD_NAME,
+                                    example: 'dsl_attribute :can_id do |id, mask = id| ... end').to_sym
         filter_method = :"__dsl_attribute_filter_#{attr}"
         # define_method gives the filter a method's strict arity.
         define_method(filter_method, &filter) if filter
         define_method(attr) do |*args|
-          return dsl_attributes[attr] if args.empty?
+          return read_attribute(attr, dsl_attributes[attr]) if args.empty?
 
           set_dsl_attribute(attr, args, filter ? filter_method : nil)
         end
         attr
+      end
+
+      # Whether devices already have a method +name+: a public one, or a
+      # private one of the gem's device classes or of Ruby itself (raise,
+      # format...), on which their own code relies. Private methods other
+      # libraries add to every object (minitest's describe) do not count.
+      def self.device_method?(name)
+        return true if Robot::ComBus.method_defined?(name)
+        return false unless Robot::ComBus.private_method_defined?(name)
+
+        path, = Robot::ComBus.instance_method(name).source_location
+        path.nil? || path.start_with?('<internal:', Location::GEM_LIB)
+      end
+
+      # Methods defined here (by dsl_attribute or def) become methods of
+      # devices: one named like a method devices already have (name,
+      # with_conf, ...) would replace it and break the device.
+      def method_added(name)
+        super
+        return unless DeviceConfigurationModule.device_method?(name)
+
+        remove_method(name)
+        raise DeclarationError.new(
+          "'#{name}' is a method of every device: defining it here would replace it",
+          location: Location.of_caller, hint: "give the attribute another name, e.g. #{name}_value"
+        )
       end
     end
   end

@@ -22,9 +22,11 @@ module Syskit
 
       # Adds the methods defined in the block to every device declared with
       # this model (or a model that provides it).
-      def extend_device_configuration(&)
+      def extend_device_configuration(&block)
+        Arguments.block(block, statement: 'extend_device_configuration',
+                               example: 'extend_device_configuration do dsl_attribute :pgn end')
         @device_configuration ||= DeviceConfigurationModule.new
-        @device_configuration.module_eval(&)
+        @device_configuration.module_eval(&block)
         @device_configuration
       end
 

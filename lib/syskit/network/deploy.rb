@@ -51,7 +51,7 @@ module Syskit
         end
         return candidates.first if candidates.size == 1
 
-        @context.error(several(task, requirement, candidates))
+        @context.error(several(task, requirement, candidates, index))
       end
 
       # Candidates matching the hints: names are looked up, only regexps
@@ -90,18 +90,21 @@ module Syskit
         hints = requirement.deployment_hints.map(&:inspect).join(', ')
         DeploymentError.new(
           "none of the deployed tasks that can run #{requirement.device}'s driver #{task.model.name} " \
-          "matches prefer_deployed_tasks(#{hints}): #{candidates.join(', ')}",
+          "matches prefer_deployed_tasks(#{hints}): #{Naming.enumerate(candidates)}",
           location: requirement.device.deployment_hints_location || device_location(requirement),
           hint: 'change the pattern, or deploy a task whose name matches it'
         )
       end
 
-      def several(task, requirement, candidates)
+      def several(task, requirement, candidates, index)
         name = requirement.device.name
-        example = candidates.any? { |c| c.name == name } ? "'#{name}'" : "/#{candidates.first.name}/"
+        # A lookup: this error may be made for each of thousands of devices.
+        found = index.by_name[name]
+        named = found && (candidates.equal?(index.list) || candidates.include?(found))
+        example = named ? "'#{name}'" : "/#{candidates.first.name}/"
         DeploymentError.new(
           "several deployed tasks can run #{requirement.device}'s driver #{task.model.name}: " \
-          "#{candidates.join(', ')}",
+          "#{Naming.enumerate(candidates)}",
           location: device_location(requirement),
           hint: "choose one with .prefer_deployed_tasks(#{example}) on the device declaration"
         )

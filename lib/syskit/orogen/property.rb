@@ -13,15 +13,12 @@ module Syskit
         @default = default
       end
 
-      # The value the property has before any configuration is applied.
+      # The value the property has before any configuration is applied. The
+      # spec loader checked at the declaration that the default fits the type.
       def initial_value
         return type.zero if default.nil?
 
         type.from_ruby(default)
-      rescue Types::ValueError
-        # oroGen defaults are C++ expressions (e.g. enum constants); keep them
-        # as they are written.
-        default
       end
     end
 

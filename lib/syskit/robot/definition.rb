@@ -11,10 +11,25 @@ module Syskit
       def initialize(profile)
         @profile = profile
         @devices = {}
+        @declaring = false
       end
 
       def devices
         @devices.values
+      end
+
+      # Evaluates a robot block's declarations (see Device#read_attribute).
+      def declaring
+        previous = @declaring
+        @declaring = true
+        yield
+      ensure
+        @declaring = previous
+      end
+
+      # Whether a robot block of this robot is being evaluated.
+      def declaring?
+        @declaring
       end
 
       def find_device(name)

@@ -173,6 +173,21 @@ module Syskit
         self
       end
 
+      # The value of an attribute called without arguments. In the robot
+      # block that declares the device, reading an attribute never set is a
+      # setting whose arguments were forgotten (+.can_id.with_conf(...)+
+      # would call with_conf on nil): refused there.
+      def read_attribute(attr, value, expected = nil)
+        return value unless value.nil? && robot.declaring?
+
+        params = attribute_parameters(attr)
+        call = params ? ".#{attr}(#{params.join(', ')})" : ".#{attr}(...)"
+        raise DeclarationError.new(
+          "#{attr} without arguments reads the #{attr} of #{self}, which is not set",
+          location: Location.of_caller, hint: "to set it, give #{expected || 'its arguments'}: #{call}"
+        )
+      end
+
       def explain_missing(method_name)
         buses = robot.app_bus_models_defining(method_name)
         hint =
@@ -210,7 +225,7 @@ module Syskit
       end
 
       def setting(key, value, expected)
-        return @settings[key] if value.nil?
+        return read_attribute(key, @settings[key], expected) if value.nil?
 
         unless yield(value)
           raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}",
@@ -242,12 +257,16 @@ module Syskit
         raise UserCode.translate(e, error_class: DeclarationError, context: "#{attr} on #{self}")
       end
 
+      # The parameters of a dsl_attribute's filter block, as users write them.
+      def attribute_parameters(attr)
+        filter = :"__dsl_attribute_filter_#{attr}"
+        return unless respond_to?(filter)
+
+        method(filter).parameters.map { |kind, n| kind == :opt ? "#{n} = ..." : n.to_s }
+      end
+
       def invalid_attribute(attr, args, filter_method, error)
-        if filter_method
-          params = method(filter_method).parameters.map do |kind, n|
-            kind == :opt ? "#{n} = ..." : n.to_s
-          end
-        end
+        params = attribute_parameters(attr) if filter_method
         (error.is_a?(ArgumentError) ? InvalidArgument : DeclarationError).new(
           "#{attr}(#{args.map(&:inspect).join(', ')}) on #{self}: #{error.message}",
           location: Location.of_caller,

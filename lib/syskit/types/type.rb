@@ -50,6 +50,40 @@ module Syskit
       def mismatch(value, expected)
         raise ValueError, "expected #{expected} for #{name}, got #{value.inspect}"
       end
+
+      # +value+ as a Float a plan can hold: JSON has no NaN nor infinities,
+      # so they are refused where they are set rather than when printed.
+      def finite(value)
+        mismatch(value, 'a number') unless value.is_a?(Numeric) && value.real?
+        float = value.to_f
+        return float if float.finite?
+
+        shown = value.to_s
+        shown = "#{shown[0, 12]}... (#{shown.size} digits)" if shown.size > 24
+        raise ValueError, "#{shown} is not a finite number: #{name} holds finite values only (no NaN or infinity)"
+      end
+
+      # +value+ (a String or Symbol) as UTF-8 text: plans are UTF-8, so
+      # binary data (a YAML !!binary, bytes read from a file) and invalid
+      # bytes are refused where they are set; text in another encoding is
+      # converted.
+      def text(value)
+        str = value.is_a?(Symbol) ? value.name : value
+        return str if str.encoding == Encoding::UTF_8 && str.valid_encoding?
+
+        utf8 = str.encoding == Encoding::BINARY ? str.dup.force_encoding(Encoding::UTF_8) : str.encode(Encoding::UTF_8)
+        return utf8 if utf8.valid_encoding?
+
+        not_text(str)
+      rescue EncodingError
+        not_text(str)
+      end
+
+      def not_text(str)
+        what = str.encoding == Encoding::BINARY ? 'binary data' : "bytes that are not valid #{str.encoding}"
+        excerpt = str.byteslice(0, 24).inspect
+        raise ValueError, "expected UTF-8 text for #{name}, got #{what} (#{excerpt}#{'...' if str.bytesize > 24})"
+      end
     end
 
     # Integer types: int, /int32_t, /uint8_t, ...
@@ -80,8 +114,7 @@ module Syskit
       end
 
       def from_ruby(value)
-        mismatch(value, 'a number') unless value.is_a?(Numeric)
-        value.to_f
+        finite(value)
       end
     end
 
@@ -105,7 +138,7 @@ module Syskit
 
       def from_ruby(value)
         mismatch(value, 'a string') unless value.is_a?(String) || value.is_a?(Symbol)
-        value.to_s
+        text(value.is_a?(Symbol) ? value.to_s : value)
       end
     end
 
@@ -123,7 +156,7 @@ module Syskit
       end
 
       def from_ruby(value)
-        sym = value.to_sym if value.respond_to?(:to_sym)
+        sym = (value.is_a?(String) ? text(value) : value).to_sym if value.respond_to?(:to_sym)
         return sym if values.include?(sym)
 
         raise ValueError, "#{value.inspect} is not a value of #{name} (#{values.join(', ')})"
@@ -183,17 +216,23 @@ module Syskit
     end
 
     # A type declared in a C/C++ header the gem cannot read: any plain value
-    # (hash, array, string, number, boolean) is accepted as is.
+    # (hash, array, string, number, boolean) is accepted, as long as a plan
+    # can hold it (finite numbers, UTF-8 text, at any depth).
     class OpaqueType < Type
-      PLAIN = [Hash, Array, String, Symbol, Numeric, TrueClass, FalseClass, NilClass].freeze
-
       def opaque?
         true
       end
 
       def from_ruby(value)
-        mismatch(value, 'plain data (hash, array, string, number)') unless PLAIN.any? { |k| value.is_a?(k) }
-        value
+        case value
+        when Hash then value.to_h { |k, v| [from_ruby(k), from_ruby(v)] }
+        when Array then value.map { |v| from_ruby(v) }
+        when String then text(value)
+        when Symbol then text(value).to_sym
+        when Integer, true, false, nil then value
+        when Numeric then finite(value)
+        else mismatch(value, 'plain data (hash, array, string, number)')
+        end
       end
     end
   end

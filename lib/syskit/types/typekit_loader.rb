@@ -16,21 +16,32 @@ module Syskit
     class TypekitLoader
       # The statements of a typekit file.
       class DSL
+        STATEMENTS = %w[struct enum opaque alias_type import_types_from accept_unknown_types].freeze
+        # A type name, relative to the typekit (Device) or absolute (/my_bus/Device).
+        TYPE_NAME = %r{\A/?[A-Za-z_]\w*(?:/[A-Za-z_]\w*)*\z}
+
         def initialize(loader)
           @loader = loader
         end
 
-        def struct(name, &block)
+        def struct(name = nil, &block)
+          name = type_name(name, 'struct', "struct 'Device' do field 'id', '/uint32_t' end")
+          Arguments.block(block, statement: "struct '#{name}'", error_class: TypeError,
+                                 example: "struct '#{name}' do field 'id', '/uint32_t' end")
           fields = FieldsDSL.new(@loader)
-          fields.instance_eval(&block) if block
+          fields.instance_eval(&block)
           @loader.define(name) { |full| StructType.new(full, fields.fields) }
         end
 
-        def enum(name, values)
+        def enum(name = nil, values = nil)
+          name = type_name(name, 'enum', "enum 'Mode', %w[ACTIVE PASSIVE]")
+          values = Arguments.names(values, statement: "enum '#{name}'", what: 'value names', error_class: TypeError,
+                                           example: "enum '#{name}', %w[ACTIVE PASSIVE]")
           @loader.define(name) { |full| EnumType.new(full, values) }
         end
 
-        def opaque(name)
+        def opaque(name = nil)
+          name = type_name(name, 'opaque', "opaque 'Statistics'")
           @loader.define(name) { |full| OpaqueType.new(full) }
         end
 
@@ -51,9 +62,15 @@ module Syskit
         end
 
         def explain_missing(name)
-          statements = %w[struct enum opaque alias_type import_types_from accept_unknown_types]
-          ["unknown statement '#{name}' in a typekit file#{Naming.did_you_mean(name, statements)}",
-           "typekit files declare #{statements.join(', ')}"]
+          ["unknown statement '#{name}' in a typekit file#{Naming.did_you_mean(name, STATEMENTS)}",
+           "typekit files declare #{STATEMENTS.join(', ')}"]
+        end
+
+        private
+
+        def type_name(name, statement, example)
+          Arguments.name(name, statement: statement, what: 'a type name', pattern: TYPE_NAME, example: example,
+                               error_class: TypeError)
         end
       end
 
@@ -66,14 +83,18 @@ module Syskit
           @fields = {}
         end
 
-        def field(name, type)
+        def field(name = nil, type = nil)
           location = Location.of_caller
-          if @fields.key?(name.to_s)
+          name = Arguments.name(name, statement: 'field', what: 'a field name', example: "field 'id', '/uint32_t'",
+                                      error_class: TypeError)
+          if @fields.key?(name)
             raise TypeError.new("field '#{name}' is declared twice",
                                 location: location, hint: 'give each field its own name')
           end
 
-          @fields[name.to_s] = @loader.registry.resolve(type, location: location)
+          type = Arguments.given(type, statement: "field '#{name}'", what: 'a type', error_class: TypeError,
+                                       example: "field '#{name}', '/uint32_t'")
+          @fields[name] = @loader.registry.resolve(type, location: location)
         end
       end
 

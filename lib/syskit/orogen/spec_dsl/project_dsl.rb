@@ -6,6 +6,11 @@ module Syskit
     class ProjectDSL
       include StatementsDSL
 
+      # C++ class names, in namespaces or not (Task, test::Replay).
+      TASK_NAME = /\A[A-Za-z_]\w*(?:::[A-Za-z_]\w*)*\z/
+      # Deployments name executables: letters, digits, _ and -.
+      DEPLOYMENT_NAME = /\A[A-Za-z0-9_][A-Za-z0-9_-]*\z/
+
       def initialize(loader)
         @loader = loader
       end
@@ -18,12 +23,20 @@ module Syskit
         @loader.check_project_name(project_name.to_s, Location.of_caller)
       end
 
-      def task_context(task_name, subclasses: nil, **_options, &block)
-        @loader.define_task(task_name.to_s, subclasses, Location.of_caller, &block)
+      def task_context(task_name = nil, subclasses: nil, **_options, &block)
+        task_name = Arguments.name(task_name, statement: 'task_context', what: 'a task name (a C++ class name)',
+                                              example: "task_context 'Task' do ... end", pattern: TASK_NAME,
+                                              rule: 'letters, digits and _, not starting with a digit, ' \
+                                                    'in namespaces or not (test::Replay)',
+                                              error_class: SpecError)
+        @loader.define_task(task_name, subclasses&.to_s, Location.of_caller, &block)
       end
 
-      def deployment(deployment_name, &)
-        @loader.define_deployment(deployment_name.to_s, Location.of_caller, &)
+      def deployment(deployment_name = nil, &)
+        deployment_name = Arguments.name(deployment_name, statement: 'deployment', what: 'a deployment name',
+                                                          example: "deployment 'test_gps' do ... end",
+                                                          pattern: DEPLOYMENT_NAME, error_class: SpecError)
+        @loader.define_deployment(deployment_name, Location.of_caller, &)
       end
 
       def static_deployment(&block)

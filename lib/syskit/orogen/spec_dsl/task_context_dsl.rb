@@ -6,6 +6,16 @@ module Syskit
     class TaskContextDSL
       include StatementsDSL
 
+      # A correct call of each statement, for the hints of argument errors.
+      EXAMPLES = {
+        'property' => "property 'rate', 'int', 100", 'attribute' => "attribute 'rate', 'int', 100",
+        'input_port' => "input_port 'command', '/base/samples/RigidBodyState'",
+        'output_port' => "output_port 'pose_samples', '/base/samples/RigidBodyState'",
+        'dynamic_input_port' => "dynamic_input_port(/^w\\w+$/, '/canbus/Message')",
+        'dynamic_output_port' => "dynamic_output_port(/^\\w+$/, '/canbus/Message')",
+        'operation' => "operation('reset')"
+      }.freeze
+
       def initialize(loader, spec)
         @loader = loader
         @spec = spec
@@ -31,37 +41,31 @@ module Syskit
         @spec.needs_configuration = true
       end
 
-      def property(property_name, type, default = nil)
-        property = declare(@spec.properties, property_name, 'property') do |n|
-          Property.new(n, @loader.resolve_type(type, Location.of_caller), default)
-        end
-        PropertyModifiers.new(property)
+      def property(property_name = nil, type = nil, default = nil)
+        PropertyModifiers.new(add_property(@spec.properties, 'property', property_name, type, default))
       end
 
-      def attribute(attribute_name, type, default = nil)
-        attribute = declare(@spec.attributes, attribute_name, 'attribute') do |n|
-          Property.new(n, @loader.resolve_type(type, Location.of_caller), default)
-        end
-        PropertyModifiers.new(attribute)
+      def attribute(attribute_name = nil, type = nil, default = nil)
+        PropertyModifiers.new(add_property(@spec.attributes, 'attribute', attribute_name, type, default))
       end
 
-      def input_port(port_name, type, **_options)
+      def input_port(port_name = nil, type = nil, **_options)
         add_port(port_name, :input, type)
       end
 
-      def output_port(port_name, type, **_options)
+      def output_port(port_name = nil, type = nil, **_options)
         add_port(port_name, :output, type)
       end
 
-      def dynamic_input_port(pattern, type)
+      def dynamic_input_port(pattern = nil, type = nil)
         add_dynamic_port(pattern, :input, type)
       end
 
-      def dynamic_output_port(pattern, type)
+      def dynamic_output_port(pattern = nil, type = nil)
         add_dynamic_port(pattern, :output, type)
       end
 
-      def operation(operation_name)
+      def operation(operation_name = nil)
         declare(@spec.operations, operation_name, 'operation') { |n| Operation.new(n) }
       end
 
@@ -86,13 +90,10 @@ module Syskit
 
       private
 
-      def declare(table, raw_name, what)
-        declared_name = raw_name.to_s
-        unless declared_name.match?(/\A[A-Za-z_]\w*\z/)
-          raise SpecError.new("'#{declared_name}' is not a valid #{what} name",
-                              location: Location.of_caller,
-                              hint: 'oroGen names are C++ identifiers: letters, digits and _')
-        end
+      # +statement+: the DSL word, when it is not +what+ (input_port for a port).
+      def declare(table, raw_name, what, statement = what)
+        declared_name = Arguments.name(raw_name, statement: statement, what: "a #{what} name (a C++ identifier)",
+                                                 example: EXAMPLES.fetch(statement), error_class: SpecError)
         if table.key?(declared_name)
           raise SpecError.new("#{@spec.name} declares the #{what} '#{declared_name}' twice",
                               location: Location.of_caller, hint: 'remove one of the declarations')
@@ -101,23 +102,64 @@ module Syskit
         table[declared_name] = yield(declared_name)
       end
 
+      # A property or attribute; its default, when given, must be a value of
+      # its type (checked here, at its line, not when a plan shows it).
+      def add_property(table, what, raw_name, type, default)
+        location = Location.of_caller
+        declare(table, raw_name, what) do |name|
+          resolved = @loader.resolve_type(argument_type(type, what, name), location)
+          check_default(what, name, resolved, default, location) unless default.nil?
+          Property.new(name, resolved, default)
+        end
+      end
+
+      def argument_type(type, what, name)
+        Arguments.given(type, statement: "#{what} '#{name}'", what: 'a type', error_class: SpecError,
+                              example: EXAMPLES.fetch(what).sub(/'\w+'/, "'#{name}'"))
+      end
+
+      def check_default(what, name, type, default, location)
+        type.from_ruby(default)
+      rescue Types::ValueError => e
+        zero = type.to_plain(type.zero)
+        example = ", e.g. #{zero.inspect}" if [Numeric, String, TrueClass, FalseClass].any? { |k| zero.is_a?(k) }
+        raise SpecError.new("the default value of #{what} '#{name}' does not fit its type: #{e.message}",
+                            location: location, hint: "give a default of type #{type}#{example}, or none")
+      end
+
       def add_port(port_name, direction, type)
         if @spec.find_port(port_name) && !@spec.ports.key?(port_name.to_s)
           raise SpecError.new("#{@spec.name} redeclares the port '#{port_name}' of its parent",
                               location: Location.of_caller, hint: 'give the port another name')
         end
 
-        port = declare(@spec.ports, port_name, 'port') do |n|
-          Port.new(n, direction, @loader.resolve_type(type, Location.of_caller))
+        what = "#{direction}_port"
+        port = declare(@spec.ports, port_name, 'port', what) do |n|
+          Port.new(n, direction, @loader.resolve_type(argument_type(type, what, n), Location.of_caller))
         end
         PortModifiers.new(port)
       end
 
       def add_dynamic_port(pattern, direction, type)
-        pattern = Regexp.new(pattern.to_s) unless pattern.is_a?(Regexp)
+        what = "dynamic_#{direction}_port"
+        pattern = dynamic_port_pattern(pattern, what)
+        type = Arguments.given(type, statement: "#{what} #{pattern.inspect}", what: 'a type', error_class: SpecError,
+                                     example: EXAMPLES.fetch(what))
         port = DynamicPort.new(pattern, direction, @loader.resolve_type(type, Location.of_caller))
         @spec.dynamic_ports << port
         PortModifiers.new(port)
+      end
+
+      # A dynamic port's name pattern: a Regexp, or a String read as one.
+      def dynamic_port_pattern(pattern, what)
+        Arguments.given(pattern, statement: what, what: 'a name pattern', error_class: SpecError,
+                                 example: EXAMPLES.fetch(what))
+        return pattern if pattern.is_a?(Regexp)
+
+        Regexp.new(pattern.to_s)
+      rescue RegexpError => e
+        raise SpecError.new("#{what}: #{pattern.inspect} is not a regular expression (#{e.message})",
+                            location: Location.of_caller, hint: "write #{EXAMPLES.fetch(what)}")
       end
     end
   end

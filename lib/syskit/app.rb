@@ -5,6 +5,7 @@ require 'syskit/app/files'
 require 'syskit/app/environment'
 require 'syskit/app/bundles'
 require 'syskit/app/settings'
+require 'syskit/app/everything'
 require 'syskit/types/typekit_search'
 require 'syskit/config/robot_config_loader'
 
@@ -16,6 +17,7 @@ module Syskit
   # all again on {#unload}, so that one process can load app after app.
   class App
     include Files
+    include Everything
 
     CONFIG_FILE = 'config/syskit.yml'
     BUNDLED_MODELS = File.join(BundleSearch::BUNDLED.root, 'models')
@@ -43,6 +45,7 @@ module Syskit
       @name = config.name
       @orogen_path = orogen_path.split(File::PATH_SEPARATOR).reject(&:empty?).map { |d| File.expand_path(d) }
       @bundles, @problems = BundleSearch.new.resolve(@root, @name, config)
+      @problems.unshift(*config.problems)
       @types = Types::Registry.new
       @typekits = Types::TypekitSearch.new(@types, typekit_search_dirs)
       @robot_config_loader = Config::RobotConfigLoader.new(self)
@@ -250,35 +253,6 @@ module Syskit
     def search_dirs(kind)
       own = bundles.reject { |b| b.equal?(BundleSearch::BUNDLED) }.map { |b| File.join(b.root, 'models', kind) }
       [*own, *@orogen_path, File.join(BUNDLED_MODELS, kind)]
-    end
-
-    def load_everything
-      app_orogen = File.join(root, 'models', 'orogen')
-      app_libraries = Files.ruby_files(app_orogen, problems, '*.{orogen,rb}').map do |f|
-        File.basename(f).sub(/\.(orogen|rb)\z/, '')
-      end
-      app_libraries.uniq.sort.each do |lib|
-        spec = orogen.spec_path(lib)
-        collect_problems do
-          raise extension_without_library(lib) unless spec
-
-          using_task_library(lib, location: Location.new(spec, 1))
-        end
-      end
-      Files.ruby_files(File.join(root, 'models', 'typekits'), problems).each do |path|
-        collect_problems { import_types(File.basename(path, '.rb'), location: Location.new(path, 1)) }
-      end
-    end
-
-    # A warning: bundles extend libraries that are not installed everywhere
-    # (Rock then does not load the file either), but it may be a typo.
-    def extension_without_library(lib)
-      Warning.new(
-        "this file extends task library '#{lib}', but there is no #{lib}.orogen on the search path: not loaded" \
-        "#{Naming.did_you_mean(lib, orogen.available_library_names)}",
-        location: Location.new(File.join(root, 'models', 'orogen', "#{lib}.rb"), 1),
-        hint: "name the file after its task library, or add #{lib}.orogen to models/orogen or SYSKIT_OROGEN_PATH"
-      )
     end
   end
 end

@@ -63,6 +63,11 @@ module Syskit
       @operation_calls.dup.freeze
     end
 
+    # As TaskContext#abort, for stub blocks.
+    def abort(message = nil)
+      raise SystemExit.new(false, message || 'exit')
+    end
+
     def create_input_port(name, type)
       create_port(:input, name, type)
     end

@@ -54,6 +54,12 @@ module Syskit
     # Configuration hook: user extension files override it and call super.
     def configure; end
 
+    # +abort 'message'+ in configure stops the plan with a located error
+    # saying so (Kernel#abort would also print the message on its own).
+    def abort(message = nil)
+      raise SystemExit.new(false, message || 'exit')
+    end
+
     # The component this task stands for (see Component): its properties
     # and operations, as configure methods and stub blocks use them.
     def orocos_task

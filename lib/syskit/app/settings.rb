@@ -12,15 +12,22 @@ module Syskit
     class Settings
       KEYS = %w[name acronyms bundles].freeze
 
-      attr_reader :path, :data, :name, :acronyms
+      attr_reader :path, :data, :name, :acronyms, :problems
 
-      # The settings of the app at +root+; +name+ overrides the file's.
+      # The settings of the app at +root+; +name+ overrides the file's. A
+      # setting that cannot be read is a problem (see #problems) and takes
+      # its default; a name that is not a constant name is replaced by one
+      # that is, so that the rest of the app can be checked.
       def initialize(root, name: nil)
         @path = File.join(root, CONFIG_FILE)
-        @data = read
-        @acronyms = list('acronyms')
-        @name = name || given_name || Naming.camelize(File.basename(root), @acronyms)
-        check_directory_name(root) unless Naming.constant_name?(@name)
+        @problems = []
+        @data = collecting({}) { read }
+        @acronyms = collecting([]) { list('acronyms') }
+        @name = name || collecting(nil) { given_name } || Naming.camelize(File.basename(root), @acronyms)
+        return if Naming.constant_name?(@name)
+
+        @problems << directory_name_error(root)
+        @name = 'UnnamedApp'
       end
 
       def [](key)
@@ -28,6 +35,13 @@ module Syskit
       end
 
       private
+
+      def collecting(default)
+        yield
+      rescue FileLoadError => e
+        @problems << e
+        default
+      end
 
       def read
         return {} unless File.file?(path)
@@ -61,8 +75,8 @@ module Syskit
       end
 
       # An app whose directory's name makes no module name must be given one.
-      def check_directory_name(root)
-        raise FileLoadError.new(
+      def directory_name_error(root)
+        FileLoadError.new(
           "the directory name '#{File.basename(root)}' does not make a Ruby module name ('#{@name}')",
           location: Location.new(path, 1),
           hint: 'give the app a name in config/syskit.yml: name: AwesomeRobot'

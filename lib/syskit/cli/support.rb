@@ -35,7 +35,7 @@ module Syskit
       # unloaded afterwards.
       def with_app(load: true, robots: ['default'])
         app = nil
-        reporting_errors(-> { app&.root }) do
+        reporting_errors(-> { app&.root || app_root }) do
           app = App.new(app_root)
           begin
             load ? app.load!(robots: robots) : app.activate

@@ -22,6 +22,9 @@ module Syskit
       rescue Interrupt
         # Ctrl-C: the user knows why it stopped.
         exit 130
+      rescue Errno::EPIPE
+        # The reader went away (syskit check | head): nothing more to say.
+        exit 0
       rescue Syskit::Error => e
         report_error(e, root.call)
       rescue StandardError, ScriptError => e

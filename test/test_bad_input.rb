@@ -37,6 +37,16 @@ module Syskit
       assert_match(%r{^models/devices/loop.rb:1: warning: loop.rb is a broken symlink}, out)
     end
 
+    def test_a_reader_that_goes_away_ends_the_command_quietly
+      root = my_app("device(Devices::IMU, as: 'imu')\n")
+      Open3.popen3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'plan', '--app', root,
+                   '--format', 'json') do |_in, out, err, wait|
+        out.close
+        assert_equal 0, wait.value.exitstatus
+        assert_empty err.read
+      end
+    end
+
     def test_ctrl_c_exits_quietly_with_130
       root = my_app(nil, 'models/devices/slow.rb' => "sleep 30\n")
       Open3.popen3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'check', '--app', root) do |_in, out, err, wait|

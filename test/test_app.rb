@@ -204,7 +204,7 @@ module Syskit
     def test_a_deployment_is_found_without_loading_its_library_first
       root = my_app(nil, 'config/robots/default.rb' => "Syskit.conf.use_deployment 'test_canbus'\n")
       app = load_app(root)
-      assert_equal ['can0 (canbus::Task, deployment test_canbus)'], app.robot_config.deployed_tasks.map(&:to_s)
+      assert_equal ['can (canbus::Task, deployment test_canbus)'], app.robot_config.deployed_tasks.map(&:to_s)
     end
 
     def test_a_deployed_task_name_used_twice

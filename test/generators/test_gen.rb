@@ -92,7 +92,7 @@ module Syskit
       assert_equal [0, "AwesomeRobot: 0 error(s), 0 warning(s)\n"], [status, out], err
       out, err, status = rake_test(app)
       assert status.success?, "#{out}\n#{err}"
-      assert_match(/^21 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
+      assert_match(/^22 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
     end
 
     # syskit gen dev, bus, profile and orogen in +app+, from several

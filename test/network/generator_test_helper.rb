@@ -9,11 +9,19 @@ module Syskit
     # A demultiplexing bus driver (per-device ports both ways), a sensor
     # driver with one CAN port per direction, a writer-only driver.
     FILES = {
+      'models/typekits/demux.rb' => <<~RUBY,
+        struct 'Device' do
+          field 'name', '/std/string'
+          field 'id', '/uint32_t'
+          field 'mask', '/uint32_t'
+        end
+      RUBY
       'models/orogen/demux.orogen' => <<~RUBY,
         name 'demux'
         import_types_from 'canbus'
+        import_types_from 'demux'
         task_context 'Task' do
-          property 'devices', '/std/vector</canbus/Device>'
+          property 'devices', '/std/vector</demux/Device>'
           dynamic_input_port(/^w\\w+$/, '/canbus/Message').needs_reliable_connection
           dynamic_output_port(/^\\w+$/, '/canbus/Message')
         end
@@ -26,9 +34,10 @@ module Syskit
       'models/orogen/sensor.orogen' => <<~RUBY,
         name 'sensor'
         import_types_from 'canbus'
+        import_types_from 'demux'
         task_context 'Task' do
           property 'threshold', 'double', 1.5
-          property 'limits', '/canbus/Device'
+          property 'limits', '/demux/Device'
           input_port('can_in', '/canbus/Message').needs_reliable_connection
           output_port 'can_out', '/canbus/Message'
           worstcase_processing_time 0.05

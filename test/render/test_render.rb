@@ -21,7 +21,7 @@ module Syskit
       assert_equal 'default', doc['robot']
       can0 = doc['tasks'].find { |t| t['name'] == 'can0' }
       assert_equal %w[name model deployment devices conf properties ports depends_on operations], can0.keys
-      assert_equal ['canbus::Task', 'test_canbus', ['can0'], ['default']],
+      assert_equal ['canbus::Task', 'can0', ['can0'], ['default']],
                    can0.values_at('model', 'deployment', 'devices', 'conf')
       assert_includes can0['ports'], { 'name' => 'temperature_sensor', 'direction' => 'output',
                                        'type' => '/canbus/Message', 'dynamic' => true }
@@ -124,7 +124,7 @@ module Syskit
     def test_text_lists_tasks_connections_and_order
       text = Render::Text.render(example_plan)
       assert_match(/^Plan of AwesomeRobot::Profiles::Live::Base on robot 'default'$/, text)
-      assert_match(/^  can0  canbus::Task  \(deployment test_canbus, conf default\)$/, text)
+      assert_match(/^  can0  canbus::Task  \(deployment can0, conf default\)$/, text)
       assert_match(%r{^  can0\.temperature_sensor +-> temperature_sensor\.can_in +/canbus/Message  buffer 2$}, text)
       assert_match(/^   2\. configure can0$/, text)
     end

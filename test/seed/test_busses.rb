@@ -36,7 +36,8 @@ module Syskit
       plan = plan_of('can_bus', -> { MyApp::Profiles::Base })
       can0 = plan.find_task('can0')
       assert_equal 'canbus::Task', can0.model
-      assert_equal [{ 'name' => 'temperature_sensor', 'id' => 0x1234, 'mask' => 0xffff }], can0.properties['devices']
+      # As Rock's canbus component is: a watch per device, at configure time.
+      assert_equal [['watch', ['temperature_sensor', 0x1234, 0xffff]]], can0.operations.map(&:to_a)
       port = can0.ports.find { |p| p.name == 'temperature_sensor' }
       assert_equal ['output', '/canbus/Message', true], [port.direction, port.type, port.dynamic]
 
@@ -59,7 +60,7 @@ module Syskit
       assert_equal([['sync.can_out', 'can0.in', { 'type' => 'buffer', 'size' => 20 }]],
                    plan.connections.map { |c| conn(c) })
       refute(plan.find_task('can0').ports.any? { |p| p.name == 'sync' })
-      assert_equal [], plan.find_task('can0').properties['devices']
+      assert_equal [], plan.find_task('can0').operations
     end
 
     def test_a_bus_defined_from_the_generated_template

@@ -1,15 +1,18 @@
-# Syskit integration of the bundled canbus::Task: it drives CAN buses, takes
-# every device's frames on its shared 'in' port (BusInSrv) and creates one
-# output port per device that reads from the bus.
-Syskit.extend_model OroGen.canbus.Task do
+# Syskit integration of the canbus component, configured as Rock's common
+# models configure it: the bus driver takes every device's frames on its
+# shared 'in' port (BusInSrv), and each device that reads from the bus is
+# watched, which creates the output port named after it. A real
+# common_models bundle's canbus extension replaces this one.
+require 'common_models/models/devices/bus/can'
+
+class OroGen::Canbus::Task
   driver_for CommonModels::Devices::Bus::CAN, as: 'can'
   provides CommonModels::Devices::Bus::CAN::BusInSrv, as: 'bus_in'
 
   def configure
     super
 
-    readers = each_declared_attached_device.select(&:bus_to_client?)
-    properties.devices = readers.map do |dev|
+    each_declared_attached_device.select(&:bus_to_client?).each do |dev|
       id, mask = dev.can_id
       unless id
         raise Syskit::ConfigurationError.new(
@@ -18,13 +21,19 @@ Syskit.extend_model OroGen.canbus.Task do
         )
       end
 
-      Types.canbus.Device.new(dev.name, id, mask)
+      orocos_task.watch(dev.name, id, mask)
     end
   end
 
+  # What the component does when watch is called: a port for the device.
   stub do
-    devices.each do |dev|
-      create_output_port dev.name, Types.canbus.Message
+    def watch(name, _id, _mask)
+      create_output_port name, '/canbus/Message'
+      true
+    end
+
+    def unwatch(_name)
+      true
     end
   end
 end

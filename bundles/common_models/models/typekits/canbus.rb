@@ -1,4 +1,4 @@
-# Types of the canbus driver.
+# Types of Rock's canbus driver package.
 import_types_from 'base'
 
 # One CAN frame.
@@ -10,19 +10,21 @@ struct 'Message' do
   field 'data', '/uint8_t[8]'
 end
 
-# One entry of canbus::Task's watch list: frames with (id & mask) == id go to
-# the output port called name.
-struct 'Device' do
-  field 'name', '/std/string'
-  field 'id', '/uint32_t'
+# A port canbus::Task creates at configure time from its outputPorts
+# property: the frames with (id & mask) == id.
+struct 'CanOutputPort' do
+  field 'ports_name', '/std/string'
   field 'mask', '/uint32_t'
+  field 'id', '/uint32_t'
 end
 
 enum 'DRIVER_TYPE', %w[SOCKET HICO HICO_PCI EASY_SYNC]
 
 struct 'Statistics' do
   field 'time', '/base/Time'
-  field 'msg_tx', '/uint32_t'
-  field 'msg_rx', '/uint32_t'
-  field 'error_count', '/uint32_t'
+  field 'msg_tx', '/uint64_t'
+  field 'msg_rx', '/uint64_t'
+  field 'tx', '/uint64_t'
+  field 'rx', '/uint64_t'
+  field 'error_count', '/uint64_t'
 end

@@ -1,7 +1,7 @@
 # What runs on the robot: one deployed task per device.
 Syskit.conf.use_deployment OroGen.gps_ublox.F9Task => 'gps'
 Syskit.conf.use_deployment 'cameras'
-Syskit.conf.use_deployment 'test_canbus'
+Syskit.conf.use_deployment OroGen.canbus.Task => 'can0'
 Syskit.conf.use_deployment OroGen.can_temperature_sensor.Task => 'temperature_sensor'
 Syskit.conf.use_deployment OroGen.can_temperature_sensor.Task => 'water_temperature'
 Syskit.conf.use_deployment OroGen.can_open.SyncTask => 'sync'

@@ -9,7 +9,7 @@ module AwesomeRobot
       syskit_stub_deploy_and_configure(reader)
       bus_task, = task.each_child.first
 
-      assert_equal [Types.canbus.Device.new('reader', 0x100, 0x7f0)], bus_task.properties.devices
+      assert_equal [['watch', ['reader', 0x100, 0x7f0]]], bus_task.operation_calls.map { |c| [c.name, c.arguments] }
       assert_equal ['reader'], bus_task.created_ports.keys
     end
 

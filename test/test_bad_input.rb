@@ -47,7 +47,7 @@ module Syskit
       end
     end
 
-    def test_ctrl_c_exits_quietly_with_130
+    def test_ctrl_c_exits_quietly_with_status_one_hundred_thirty
       root = my_app(nil, 'models/devices/slow.rb' => "sleep 30\n")
       Open3.popen3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'check', '--app', root) do |_in, out, err, wait|
         sleep 1.5

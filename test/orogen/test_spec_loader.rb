@@ -130,13 +130,20 @@ module Syskit
       assert_equal([[/\w+/, :output, '/canbus/Message']],
                    task.dynamic_ports.map { |p| [p.pattern, p.direction, p.type.name] })
       assert_equal %w[bus_in can], task.services.keys.sort
-      # The interface of Rock's canbus component, in this gem's words.
+    end
+
+    # The interface of Rock's canbus component, in this gem's words.
+    def test_the_bundled_canbus_library_is_rocks_canbus
+      app = load_app(my_app)
+      app.using_task_library('canbus')
+      task = OroGen.canbus.Task
       assert_equal %w[unwatch watch], task.operations.keys.sort
       assert_equal %w[name id mask], task.operations['watch'].arguments.map(&:first)
       assert_equal %w[checkBusOkInterval device deviceType fd_activity_timeout outputPorts statsInterval],
                    task.property_declarations.keys.sort
       assert_equal %i[SOCKET HICO HICO_PCI EASY_SYNC], ::Types.canbus.DRIVER_TYPE.values
-      assert_equal [%w[can canbus::Task]], app.orogen.find_deployment('test_canbus').tasks.map { |t| [t.name, t.model.name] }
+      deployed = app.orogen.find_deployment('test_canbus').tasks
+      assert_equal([%w[can canbus::Task]], deployed.map { |t| [t.name, t.model.name] })
       assert OroGen.canbus.InterfaceTask
     end
 

@@ -141,10 +141,16 @@ module Syskit
       assert_equal %w[name id mask], task.operations['watch'].arguments.map(&:first)
       assert_equal %w[checkBusOkInterval device deviceType fd_activity_timeout outputPorts statsInterval],
                    task.property_declarations.keys.sort
-      assert_equal %i[SOCKET HICO HICO_PCI EASY_SYNC], ::Types.canbus.DRIVER_TYPE.values
+      assert_equal %w[can_in can_out], OroGen.canbus.InterfaceTask.ports.keys.sort
+    end
+
+    def test_the_bundled_canbus_deployment_and_types_are_rocks
+      app = load_app(my_app)
+      app.using_task_library('canbus')
       deployed = app.orogen.find_deployment('test_canbus').tasks
       assert_equal([%w[can canbus::Task]], deployed.map { |t| [t.name, t.model.name] })
-      assert OroGen.canbus.InterfaceTask
+      assert_equal %i[SOCKET HICO HICO_PCI EASY_SYNC], ::Types.canbus.DRIVER_TYPE.values
+      assert_equal %w[ports_name mask id], ::Types.canbus.CanOutputPort.fields.keys
     end
 
     def spec_error(spec)

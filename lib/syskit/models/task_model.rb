@@ -2,6 +2,7 @@
 
 require 'syskit/models/bound_service'
 require 'syskit/models/port_mapper'
+require 'syskit/models/dynamic_services'
 
 module Syskit
   module Models
@@ -11,6 +12,8 @@ module Syskit
     # plain +class_eval+: +driver_for+, +provides+ and +stub+ are class
     # methods, +def configure+ defines the method the generator runs.
     module TaskModel
+      include DynamicServices
+
       attr_reader :spec
 
       class << self

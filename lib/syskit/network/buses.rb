@@ -9,6 +9,11 @@ module Syskit
     # dependency of the device's task, and the ports that link them are
     # chosen (see BusPorts). A bus attached through itself never gets here:
     # the robot refuses it where it is declared.
+    #
+    # As in Syskit, a bus driver serves every device declared on its bus,
+    # in the network or not: a bus planned alone gets the per-device ports
+    # of all of them. A bus model declared with lazy_dispatch: true serves
+    # only the devices whose tasks are in the network.
     class Buses
       # What a device's task knows of the bus it depends on (see
       # TaskContext#each_child).
@@ -17,9 +22,13 @@ module Syskit
       def initialize(context)
         @context = context
         @drivers = Drivers.new(context)
+        # The bus side of each attached device's link (false when it
+        # could not be made: the error is reported once).
+        @bus_sides = {}.compare_by_identity
       end
 
       def run
+        @context.tasks.each { |task| serve_declared_devices(task) }
         queue = @context.tasks.dup
         until queue.empty?
           task = queue.shift
@@ -27,9 +36,7 @@ module Syskit
           next unless device.attached?
 
           begin
-            bus_task = bus_task_for(device.bus, queue)
-            task.add_child(bus_task, BUS_CHILD)
-            @context.bus_links << BusPorts.new(device, bus_task, task, @context.expected_ports[bus_task]).link
+            link(device, task, bus_task_for(device.bus, queue))
           rescue Syskit::Error => e
             @context.error(e)
           end
@@ -39,13 +46,45 @@ module Syskit
 
       private
 
+      def link(device, task, bus_task)
+        task.add_child(bus_task, BUS_CHILD)
+        side = bus_side(device, bus_task)
+        return unless side
+
+        @context.bus_links << BusPorts.new(device, bus_task, @context.expected_ports[bus_task]).link(task, side)
+      end
+
       def bus_task_for(bus, queue)
         existing = @context.task_for(bus)
         return existing if existing
 
         task = @drivers.instantiate(Requirement.new(bus, @context.profile))
         queue << task
+        serve_declared_devices(task)
         task
+      end
+
+      # A bus task that does not dispatch lazily gets the ports of every
+      # device declared on its bus, in declaration order.
+      def serve_declared_devices(task)
+        bus = @context.device_of(task)
+        return unless bus.com_bus? && !bus.model.lazy_dispatch?
+
+        bus.each_attached_device { |device| bus_side(device, task) }
+      end
+
+      def bus_side(device, bus_task)
+        @bus_sides.fetch(device) do
+          @bus_sides[device] =
+            begin
+              side = BusPorts.new(device, bus_task, @context.expected_ports[bus_task]).bus_side
+              bus_task.attach_device(device)
+              side
+            rescue Syskit::Error => e
+              @context.error(e)
+              false
+            end
+        end
       end
 
       # Per-device ports of one bus driver must not collide with each other

@@ -46,6 +46,12 @@ module Syskit
         @task_by_device[device]
       end
 
+      # Records that +device+ (a slave device) is served by +task+, its
+      # master's task.
+      def map_device(device, task)
+        @task_by_device[device] = task
+      end
+
       def requirement_for(task)
         task.requirement
       end

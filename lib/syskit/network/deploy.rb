@@ -4,27 +4,39 @@ module Syskit
   module Network
     # Step 3: binds every task to a deployed task of the robot configuration.
     # Among several candidates, the device's prefer_deployed_tasks chooses.
+    # A device's deployed_as gives its driver a deployment of its own.
     class Deploy
       def initialize(context)
         @context = context
       end
 
+      # Deployed tasks are told apart by name: a task named by a device's
+      # deployed_as and one of the robot configuration are one process.
       def run
-        used = {}.compare_by_identity
+        used = {}
         @context.tasks.each do |task|
-          deployed = @context.stub_deployments ? stub_deployment(task) : choose(task)
+          deployed = @context.stub_deployments ? stub_deployment(task) : declared(task) || choose(task)
           next unless deployed
 
-          if (other = used[deployed])
+          if (other = used[deployed.name])
             @context.error(shared(deployed, other, task))
           else
-            used[deployed] = task
+            used[deployed.name] = task
             task.deployed_task = deployed
           end
         end
       end
 
       private
+
+      # The deployed task of the device's deployed_as, if any.
+      def declared(task)
+        declaration = @context.device_of(task).declared_deployment
+        return unless declaration
+
+        Orogen::DeploymentSpec.new(declaration.name, location: declaration.location, unmanaged: declaration.unmanaged)
+                              .add_task(declaration.name, task.model, location: declaration.location)
+      end
 
       def stub_deployment(task)
         name = @context.device_of(task).name
@@ -110,12 +122,17 @@ module Syskit
       def shared(deployed, first_task, second_task)
         first = @context.device_of(first_task)
         second = @context.device_of(second_task)
+        declared = second.declared_deployment
+        hint = if declared
+                 "give each device a deployed task of its own, e.g. deployed_as('#{second.name}')"
+               else
+                 'deploy one task per device (usually named after the device) and tell them apart ' \
+                   "with .prefer_deployed_tasks(/#{second.name}/)"
+               end
         DeploymentError.new(
           "#{first} and #{second} both need the deployed task #{deployed} " \
           "(#{first} is declared at #{first.declared_at})",
-          location: second.declared_at,
-          hint: 'deploy one task per device (usually named after the device) and tell them apart ' \
-                "with .prefer_deployed_tasks(/#{second.name}/)"
+          location: declared&.location || second.declared_at, hint: hint
         )
       end
     end

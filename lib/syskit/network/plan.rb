@@ -6,8 +6,10 @@ module Syskit
     # configured how, connected how, in which order. A frozen value, built
     # from a generated network; renderers only read it.
     class Plan
-      # A task of the plan, named after its deployed task.
-      Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on)
+      # A task of the plan, named after its deployed task; +devices+ are the
+      # devices it drives, each followed by its slaves (+stereo.left+);
+      # +unmanaged+: its deployment is started outside of Syskit.
+      Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on, :unmanaged)
       # A port of a task; dynamic ports are created at configure time.
       Port = Struct.new(:name, :direction, :type, :dynamic)
       # One end of a connection.
@@ -17,9 +19,11 @@ module Syskit
       # 'configure' or 'start' a task.
       Step = Struct.new(:step, :task)
       # A device of the network: its driver task, its bus and what it
-      # declared (attributes such as can_id, period, burst).
+      # declared (attributes such as can_id, period, burst). A slave device
+      # is named +master.slave+, its +master+ is the master's name (nil for
+      # the others) and its task is the master's.
       Device = Struct.new(:name, :model, :task, :bus, :bus_to_client, :client_to_bus, :attributes,
-                          :period, :burst, :sample_size, :declared_at)
+                          :period, :burst, :sample_size, :declared_at, :master)
 
       # Entries are built by position, the fast way; tests and tools name
       # the fields they need (the others are nil):
@@ -49,7 +53,7 @@ module Syskit
         new(
           profile: context.profile&.name, robot: context.robot_config&.name,
           tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports) },
-          devices: context.tasks.map { |t| device_entry(context.device_of(t), t, paths) }.sort_by(&:name),
+          devices: device_entries(context, paths),
           connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
           order: context.order.map { |s| Step.new(s.step, s.task.name).freeze }
         )
@@ -59,13 +63,34 @@ module Syskit
       # without walking it again.
       def self.task_entry(task, static_ports)
         children = task.children
+        deployment = task.deployed_task.deployment
         Task.new(
-          task.name, task.model.name, task.deployed_task.deployment.name,     # name, model, deployment
-          task.devices.map(&:name).freeze, task.conf,                         # devices, conf (frozen)
+          task.name, task.model.name, deployment.name,                        # name, model, deployment
+          device_names(task), task.conf,                                      # devices, conf (frozen)
           freeze_plain(task.properties.to_plain),                             # properties
           task_ports(task, static_ports),                                     # ports
-          children.empty? ? NO_DEPENDENCIES : children.map(&:name).sort!.freeze # depends_on
+          children.empty? ? NO_DEPENDENCIES : children.map(&:name).sort!.freeze, # depends_on
+          deployment.unmanaged? # unmanaged
         ).freeze
+      end
+
+      # The task's devices, each followed by its slaves.
+      def self.device_names(task)
+        devices = task.devices
+        return devices.map(&:name).freeze if devices.all? { |d| d.slaves.empty? }
+
+        devices.flat_map { |d| [d.name, *d.each_slave.map(&:full_name)] }.freeze
+      end
+
+      # A device entry per task, and one per slave of its device, by name.
+      def self.device_entries(context, paths)
+        entries = []
+        context.tasks.each do |task|
+          device = context.device_of(task)
+          entries << device_entry(device, task, paths)
+          device.each_slave { |slave| entries << device_entry(slave, task, paths) }
+        end
+        entries.sort_by!(&:name)
       end
 
       # The model's static ports, then those the task's configure created.
@@ -82,12 +107,13 @@ module Syskit
         attributes = device.dsl_attributes
         attached = device.attached?
         Device.new(
-          device.name, device.model.name, task.name, device.bus&.name,        # name, model, task, bus
+          device.full_name, device.model.name, task.name, device.bus&.name,   # name, model, task, bus
           attached ? device.bus_to_client? : nil,                             # bus_to_client
           attached ? device.client_to_bus? : nil,                             # client_to_bus
           attributes.empty? ? NO_ATTRIBUTES : plain_attributes(attributes),   # attributes
           device.period, device.burst, device.sample_size,                    # period, burst, sample_size
-          declared_at(device.declared_at, paths)                              # declared_at
+          declared_at(device.declared_at, paths),                             # declared_at
+          device.master_device&.name                                          # master
         ).freeze
       end
 
@@ -199,7 +225,7 @@ module Syskit
           'name' => task.name, 'model' => task.model, 'deployment' => task.deployment,
           'devices' => task.devices, 'conf' => task.conf, 'properties' => task.properties,
           'ports' => task.ports.map { |p| port_hashes[p] ||= port_hash(p) },
-          'depends_on' => task.depends_on
+          'depends_on' => task.depends_on, 'unmanaged' => task.unmanaged
         }
       end
 
@@ -212,7 +238,7 @@ module Syskit
           'name' => device.name, 'model' => device.model, 'task' => device.task, 'bus' => device.bus,
           'bus_to_client' => device.bus_to_client, 'client_to_bus' => device.client_to_bus,
           'attributes' => device.attributes, 'period' => device.period, 'burst' => device.burst,
-          'sample_size' => device.sample_size, 'declared_at' => device.declared_at
+          'sample_size' => device.sample_size, 'declared_at' => device.declared_at, 'master' => device.master
         }
       end
 

@@ -139,6 +139,19 @@ module Syskit
       assert_equal %w[cam], plan('cam.right_dev', 'cam_dev', 'cam.left_dev').tasks.map(&:name)
     end
 
+    def test_lookups_of_the_master_task_find_the_slaves
+      load_robot("device(Devices::Stereo, as: 'cam').slave('export', as: 'rear')\n")
+      result = Network::Generator.plan_profile(@app, MyApp::Profiles::Base.syskit_profile)
+      task = result.tasks.first
+      cam = MyApp::Profiles::Base.syskit_profile.robot.find_device('cam')
+      left = cam.slave('left')
+      assert_same left, task.find_device_attached_to('stereo.left')
+      assert_same left, task.left_dev
+      assert_equal [OroGen.stereo.Task.find_data_service('stereo.left')], task.find_all_driver_services_for(left)
+      assert_equal %w[left right clock rear], task.each_slave_device.map(&:name)
+      assert_same task, result.task_for(left)
+    end
+
     def test_a_dynamic_service_makes_slaves_with_ports_of_their_own
       load_robot(<<~RUBY)
         cam = device(Devices::Stereo, as: 'cam')

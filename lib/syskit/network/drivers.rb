@@ -40,15 +40,12 @@ module Syskit
         @context.add_task(task, device, requirement)
       end
 
-      # A slave device is served by its master's task, made here when the
-      # master is not in the network yet (with the slave's conf and hints).
+      # A slave device is served by its master's task (see
+      # Context#task_for), made here when the master is not in the network
+      # yet, with the slave requirement's conf and hints.
       def instantiate_slave(requirement)
-        slave = requirement.device
-        master = slave.master_device
-        task = @context.task_for(master) ||
-               instantiate(Requirement.new(master, requirement.profile, conf: requirement.conf,
-                                                                        deployment_hints: requirement.deployment_hints))
-        @context.map_device(slave, task)
+        instantiate(Requirement.new(requirement.device.master_device, requirement.profile,
+                                    conf: requirement.conf, deployment_hints: requirement.deployment_hints))
       end
 
       private

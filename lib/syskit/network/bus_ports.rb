@@ -14,7 +14,10 @@ module Syskit
     # provides (named by the bus_to_client:/client_to_bus: options when there
     # are several), else its single port of the message type.
     class BusPorts
-      # +expected+ collects the per-device ports the bus driver must create.
+      # Chooses the bus driver's side of the device's link: its port to the
+      # device (+bus_output+) and from it (+bus_input+), nil for a direction
+      # the device does not use. +expected+ collects the per-device ports
+      # the bus driver must create.
       def initialize(device, bus_task, expected)
         @expected = expected
         @device = device
@@ -22,21 +25,14 @@ module Syskit
         @bus_model = @bus.model
         @type = @bus_model.message_type
         @bus_task = bus_task
+        @link = Context::BusLink.new(device, bus_task)
+        @link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', device.name) if device.bus_to_client?
+        @link.bus_input = bus_port(:input, @bus_model.bus_in_srv, 'to_bus', "w#{device.name}") if device.client_to_bus?
       end
 
-      # The bus driver's side of the device's link: its port to the device
-      # (+bus_output+) and from it (+bus_input+), nil for a direction the
-      # device does not use. The device's task and ports are filled by
-      # #link when the device's task is in the network.
-      def bus_side
-        link = Context::BusLink.new(@device, @bus_task)
-        link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', @device.name) if @device.bus_to_client?
-        link.bus_input = bus_port(:input, @bus_model.bus_in_srv, 'to_bus', "w#{@device.name}") if @device.client_to_bus?
-        link
-      end
-
-      # Completes +link+ (from #bus_side) with the ports of +device_task+.
-      def link(device_task, link)
+      # The link, completed with the ports of the device's task.
+      def link(device_task)
+        link = @link
         @device_task = device_task
         link.device_task = device_task
         link.client_input = client_port(:input, @bus_model.client_in_srv, 'from_bus', :bus_to_client) if link.bus_output

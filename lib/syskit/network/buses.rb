@@ -22,9 +22,8 @@ module Syskit
       def initialize(context)
         @context = context
         @drivers = Drivers.new(context)
-        # The bus side of each attached device's link (false when it
-        # could not be made: the error is reported once).
-        @bus_sides = {}.compare_by_identity
+        # The BusPorts of each attached device.
+        @bus_ports = {}.compare_by_identity
       end
 
       def run
@@ -48,10 +47,8 @@ module Syskit
 
       def link(device, task, bus_task)
         task.add_child(bus_task, BUS_CHILD)
-        side = bus_side(device, bus_task)
-        return unless side
-
-        @context.bus_links << BusPorts.new(device, bus_task, @context.expected_ports[bus_task]).link(task, side)
+        ports = bus_ports(device, bus_task)
+        @context.bus_links << ports.link(task) if ports
       end
 
       def bus_task_for(bus, queue)
@@ -70,16 +67,18 @@ module Syskit
         bus = @context.device_of(task)
         return unless bus.com_bus? && !bus.model.lazy_dispatch?
 
-        bus.each_attached_device { |device| bus_side(device, task) }
+        bus.each_attached_device { |device| bus_ports(device, task) }
       end
 
-      def bus_side(device, bus_task)
-        @bus_sides.fetch(device) do
-          @bus_sides[device] =
+      # The device's BusPorts, made once (false when they could not be:
+      # the error is reported once).
+      def bus_ports(device, bus_task)
+        @bus_ports.fetch(device) do
+          @bus_ports[device] =
             begin
-              side = BusPorts.new(device, bus_task, @context.expected_ports[bus_task]).bus_side
+              ports = BusPorts.new(device, bus_task, @context.expected_ports[bus_task])
               bus_task.attach_device(device)
-              side
+              ports
             rescue Syskit::Error => e
               @context.error(e)
               false

@@ -235,7 +235,7 @@ module Syskit
       end
 
       def chainable_methods
-        (%w[with_conf prefer_deployed_tasks period burst sample_size doc attach_to] +
+        (%w[with_conf prefer_deployed_tasks deployed_as period burst sample_size doc attach_to slave] +
           singleton_class.ancestors.grep(Models::DeviceConfigurationModule)
                          .flat_map { |m| m.public_instance_methods(false).map(&:to_s) })
           .reject { |m| m.start_with?('__') }.uniq

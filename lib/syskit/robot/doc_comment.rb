@@ -24,7 +24,7 @@ module Syskit
         lines = lines_of(location.path)
         block = []
         index = location.lineno - 2
-        while index >= 0 && (match = COMMENT.match(lines[index]))
+        while index >= 0 && (line = lines[index]) && (match = COMMENT.match(line))
           block.unshift(match[1].rstrip)
           index -= 1
         end

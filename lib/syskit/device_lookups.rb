@@ -44,9 +44,10 @@ module Syskit
       (@attached_devices || NO_DEVICES).each(&block)
     end
 
-    # Records that this bus driver serves +device+ (the generator's Buses step).
+    # Records that this bus driver serves +device+ (the generator's Buses
+    # step, once per device).
     def attach_device(device)
-      (@attached_devices ||= []) << device unless @attached_devices&.include?(device)
+      (@attached_devices ||= []) << device
     end
 
     # The device bound to +service+: a service of the task model, its (full)

@@ -22,16 +22,15 @@ module Syskit
       def initialize(context)
         @context = context
         @drivers = Drivers.new(context)
-        # The BusPorts of each attached device.
-        @bus_ports = {}.compare_by_identity
       end
 
       def run
-        @context.tasks.each { |task| serve_declared_devices(task) }
         queue = @context.tasks.dup
+        bus_tasks = []
         until queue.empty?
           task = queue.shift
           device = @context.device_of(task)
+          bus_tasks << task if device.com_bus?
           next unless device.attached?
 
           begin
@@ -40,6 +39,10 @@ module Syskit
             @context.error(e)
           end
         end
+        # Once the links are made (each link's ports are chosen where they
+        # are used, the cheap order for the CPU caches), the devices not in
+        # the network.
+        bus_tasks.each { |task| serve_declared_devices(task) }
         check_port_names
       end
 
@@ -47,8 +50,7 @@ module Syskit
 
       def link(device, task, bus_task)
         task.add_child(bus_task, BUS_CHILD)
-        ports = bus_ports(device, bus_task)
-        @context.bus_links << ports.link(task) if ports
+        @context.bus_links << BusPorts.new(device, bus_task, @context.expected_ports[bus_task]).link(task)
       end
 
       def bus_task_for(bus, queue)
@@ -57,33 +59,29 @@ module Syskit
 
         task = @drivers.instantiate(Requirement.new(bus, @context.profile))
         queue << task
-        serve_declared_devices(task)
         task
       end
 
-      # A bus task that does not dispatch lazily gets the ports of every
-      # device declared on its bus, in declaration order.
+      # A bus task records the devices it serves, in declaration order: the
+      # ones linked to it, and, unless it dispatches lazily, the others,
+      # whose ports are chosen here.
       def serve_declared_devices(task)
         bus = @context.device_of(task)
-        return unless bus.com_bus? && !bus.model.lazy_dispatch?
-
-        bus.each_attached_device { |device| bus_ports(device, task) }
+        lazy = bus.model.lazy_dispatch?
+        bus.each_attached_device do |device|
+          if @context.task_for(device)
+            task.attach_device(device)
+          elsif !lazy
+            serve_unplanned(device, task)
+          end
+        end
       end
 
-      # The device's BusPorts, made once (false when they could not be:
-      # the error is reported once).
-      def bus_ports(device, bus_task)
-        @bus_ports.fetch(device) do
-          @bus_ports[device] =
-            begin
-              ports = BusPorts.new(device, bus_task, @context.expected_ports[bus_task])
-              bus_task.attach_device(device)
-              ports
-            rescue Syskit::Error => e
-              @context.error(e)
-              false
-            end
-        end
+      def serve_unplanned(device, task)
+        BusPorts.new(device, task, @context.expected_ports[task])
+        task.attach_device(device)
+      rescue Syskit::Error => e
+        @context.error(e)
       end
 
       # Per-device ports of one bus driver must not collide with each other

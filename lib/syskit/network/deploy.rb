@@ -8,20 +8,24 @@ module Syskit
     class Deploy
       def initialize(context)
         @context = context
+        # What stands for a deployed_as name when telling deployed tasks
+        # apart: the robot configuration's task of that name, else the
+        # first deployed task made under it.
+        @declared_keys = {}
       end
 
-      # Deployed tasks are told apart by name: a task named by a device's
-      # deployed_as and one of the robot configuration are one process.
       def run
-        used = {}
+        used = {}.compare_by_identity
         @context.tasks.each do |task|
-          deployed = @context.stub_deployments ? stub_deployment(task) : declared(task) || choose(task)
+          declared = declared(task) unless @context.stub_deployments
+          deployed = declared || (@context.stub_deployments ? stub_deployment(task) : choose(task))
           next unless deployed
 
-          if (other = used[deployed.name])
+          key = declared ? declared_key(declared) : deployed
+          if (other = used[key])
             @context.error(shared(deployed, other, task))
           else
-            used[deployed.name] = task
+            used[key] = task
             task.deployed_task = deployed
           end
         end
@@ -36,6 +40,13 @@ module Syskit
 
         Orogen::DeploymentSpec.new(declaration.name, location: declaration.location, unmanaged: declaration.unmanaged)
                               .add_task(declaration.name, task.model, location: declaration.location)
+      end
+
+      # A deployed_as name and a deployed task of the robot configuration
+      # of the same name are one process: they share a key.
+      def declared_key(deployed)
+        @config_tasks ||= @context.robot_config.deployed_tasks.to_h { |t| [t.name, t] }
+        @declared_keys[deployed.name] ||= @config_tasks[deployed.name] || deployed
       end
 
       def stub_deployment(task)

@@ -66,6 +66,13 @@ module Syskit
       assert_equal "The water temperature,\nread every second", robot.find_device('water').doc
     end
 
+    def test_a_comment_keeps_its_characters
+      robot = robot("#!not a comment\n#   Caméra avant, 20 images/s\ndevice(Devices::IMU, as: 'imu')\n")
+      doc = robot.find_device('imu').doc
+      assert_equal 'Caméra avant, 20 images/s', doc
+      assert_equal Encoding::UTF_8, doc.encoding
+    end
+
     def test_the_doc_option_wins_over_the_comment
       robot = robot("# from the comment\ndevice(Devices::IMU, as: 'imu', doc: 'from the option')\n")
       assert_equal 'from the option', robot.find_device('imu').doc

@@ -185,7 +185,12 @@ module Syskit
         return enum_for(__method__, master) unless block
 
         name = master.respond_to?(:full_name) ? master.full_name : master.to_s
-        services.each_value { |srv| yield srv if srv.master&.full_name == name }
+        slave_services.each { |srv| yield srv if srv.master.full_name == name }
+      end
+
+      # The services declared +slave_of:+ another, in declaration order.
+      def slave_services
+        cached(:slave_services) { services.values.reject(&:master?).freeze }
       end
 
       # Those of {#driver_services} that can drive a device of +device_model+:

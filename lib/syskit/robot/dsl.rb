@@ -13,13 +13,13 @@ module Syskit
       # Declares a device: +device(Devices::GPS::Ublox::F9, as: 'gps')+.
       # +doc:+, or else the comment block just above, documents it.
       def device(model, as: nil, using: nil, doc: nil, **options)
-        declare(Device, model, { as: as, using: using, doc: doc }, options)
+        declare(Device, model, as, using, doc, options, Location.of_caller)
       end
 
       # Declares a communication bus: +com_bus Devices::Bus::CAN, as: 'can0'+.
       # A block attaches the devices it declares, like +through+.
       def com_bus(model, as: nil, using: nil, doc: nil, **options, &block)
-        bus = declare(ComBus, model, { as: as, using: using, doc: doc }, options)
+        bus = declare(ComBus, model, as, using, doc, options, Location.of_caller)
         through(bus, &block) if block
         bus
       end
@@ -50,12 +50,12 @@ module Syskit
 
       private
 
-      # +given+: the as:, using: and doc: of the statement.
-      def declare(klass, model, given, options)
-        location = Location.of_caller
-        device = @definition.add_device(klass, model, given[:as], using: given[:using], options: options,
-                                                                  location: location, bus: @bus)
-        doc = given[:doc] || @comments.above(location)
+      # The location is found by the statement itself: the user's line is
+      # then its caller, the first frame looked at (Location.of_caller).
+      def declare(klass, model, name, using, doc, options, location) # rubocop:disable Metrics/ParameterLists
+        device = @definition.add_device(klass, model, name, using: using, options: options,
+                                                            location: location, bus: @bus)
+        doc ||= @comments.above(location)
         doc ? device.doc(doc) : device
       end
 

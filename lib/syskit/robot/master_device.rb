@@ -98,9 +98,12 @@ module Syskit
       def resolve_slaves
         return if @slaves_resolved || !driver_resolved?
 
-        asked = slaves
-        @slaves = nil
         @slaves_resolved = true
+        asked = slaves
+        # Most drivers have no slave services, and most devices no slaves.
+        return if asked.empty? && driver_model.slave_services.empty?
+
+        @slaves = nil
         driver_model.driver_services_for(model).each do |srv|
           driver_model.each_slave_data_service(srv) do |slave_srv|
             register_slave(asked[slave_srv.name] || SlaveDevice.new(self, slave_srv.name, location: declared_at))

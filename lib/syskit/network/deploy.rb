@@ -16,9 +16,11 @@ module Syskit
 
       def run
         used = {}.compare_by_identity
+        stub = @context.stub_deployments
         @context.tasks.each do |task|
-          declared = declared(task) unless @context.stub_deployments
-          deployed = declared || (@context.stub_deployments ? stub_deployment(task) : choose(task))
+          requirement = task.requirement
+          declared = declared(task, requirement.device.declared_deployment) unless stub
+          deployed = declared || (stub ? stub_deployment(task) : choose(task, requirement))
           next unless deployed
 
           key = declared ? declared_key(declared) : deployed
@@ -33,9 +35,8 @@ module Syskit
 
       private
 
-      # The deployed task of the device's deployed_as, if any.
-      def declared(task)
-        declaration = @context.device_of(task).declared_deployment
+      # The deployed task of the device's deployed_as (+declaration+), if any.
+      def declared(task, declaration)
         return unless declaration
 
         Orogen::DeploymentSpec.new(declaration.name, location: declaration.location, unmanaged: declaration.unmanaged)
@@ -54,8 +55,7 @@ module Syskit
         Orogen::DeploymentSpec.new("stub_#{name}").add_task(name, task.model)
       end
 
-      def choose(task)
-        requirement = @context.requirement_for(task)
+      def choose(task, requirement)
         index = @context.robot_config.candidates_for(task.model)
         return @context.error(none(task, requirement)) if index.empty?
 

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'helper'
+require 'json'
 
 module Syskit
   # Slave devices, as Syskit's device and robot-definition tests describe
@@ -132,6 +133,15 @@ module Syskit
       assert_equal ['MyApp::Devices::Camera', 'cam', 'cam', 0.5], left.to_h.values_at(:model, :task, :master, :period)
       assert_nil plan.find_device('cam').master
       assert_match(/^    devices     cam, cam.left, cam.right, cam.clock$/, Render::Text.render(plan))
+    end
+
+    def test_syskit_plan_takes_a_slave_action
+      load_robot("device(Devices::Stereo, as: 'cam')\n")
+      @loaded_apps.pop.unload
+      out, err, status = run_cli('plan', 'Base', 'cam.left_dev', '--app', @root, '--format', 'json')
+      assert_equal 0, status, err
+      devices = JSON.parse(out)['devices'].to_h { |d| [d['name'], d['master']] }
+      assert_equal({ 'cam' => nil, 'cam.clock' => 'cam', 'cam.left' => 'cam', 'cam.right' => 'cam' }, devices)
     end
 
     def test_a_slave_and_its_master_share_one_task

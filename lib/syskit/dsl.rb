@@ -54,10 +54,11 @@ module Syskit
         Models::DeviceModel.define(self, name, location: location, root: parent, model_class: parent.class, &block)
       end
 
-      # +com_bus_type 'CAN', message_type: '/canbus/Message' do ... end+
-      def com_bus_type(name, message_type: nil, &block)
+      # +com_bus_type 'CAN', message_type: '/canbus/Message' do ... end+;
+      # also +lazy_dispatch:+ and +override_policy:+ (see ComBusModel).
+      def com_bus_type(name, message_type: nil, **options, &block)
         Models::ComBusModel.define(self, name, location: Location.of_caller, root: Syskit::ComBus,
-                                               message_type: message_type, &block)
+                                               message_type: message_type, **options, &block)
       end
 
       # +profile 'Base' do robot do ... end end+ defines the constant Base.

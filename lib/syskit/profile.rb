@@ -52,9 +52,12 @@ module Syskit
       namespace.singleton_class.send(:public, action)
     end
 
-    # Action names (+gps_dev+, ...), in declaration order.
+    # Action names (+gps_dev+, ...), in declaration order, each device's
+    # slaves after it (+stereo.left_dev+).
     def action_names
-      robot.device_names.map { |n| "#{n}_dev" }
+      robot.devices.flat_map do |device|
+        ["#{device.name}_dev", *device.each_slave.map { |slave| "#{slave.full_name}_dev" }]
+      end
     end
 
     # The requirement of action +name+ ('gps_dev', or the device name 'gps'),
@@ -72,7 +75,23 @@ module Syskit
     end
 
     def requirement_for(device)
-      (@requirements ||= {}.compare_by_identity)[device] ||= Network::Requirement.new(device, self)
+      (@requirements ||= {}.compare_by_identity)[device] ||= begin
+        requirement = Network::Requirement.new(device, self)
+        device.each_slave { |slave| define_slave_action(requirement, slave) }
+        requirement
+      end
+    end
+
+    # Called when +slave+ is registered on its master: the master's action
+    # gains +<slave>_dev+ (+Base.stereo_dev.left_dev+).
+    def slave_registered(slave)
+      requirement = @requirements && @requirements[slave.master_device]
+      define_slave_action(requirement, slave) if requirement
+    end
+
+    def define_slave_action(requirement, slave)
+      profile = self
+      requirement.define_singleton_method("#{slave.name}_dev") { profile.requirement_for(slave) }
     end
 
     # Profile statements about compositions, simulation and the

@@ -27,6 +27,7 @@ module Syskit
           end
           module Devices
             device_type 'Odometer' do
+              output_port 'odometry', '/base/samples/RigidBodyState'
               provides Services::Pose, 'pose' => 'odometry'
               input_port 'reset', '/bool'
             end

@@ -20,7 +20,8 @@ module Syskit
       assert_equal 'AwesomeRobot::Profiles::Live::Base', doc['profile']
       assert_equal 'default', doc['robot']
       can0 = doc['tasks'].find { |t| t['name'] == 'can0' }
-      assert_equal %w[name model deployment devices conf properties ports depends_on operations], can0.keys
+      assert_equal %w[name model deployment devices conf properties ports depends_on unmanaged operations], can0.keys
+      assert_equal false, can0['unmanaged']
       assert_equal ['canbus::Task', 'can0', ['can0'], ['default']],
                    can0.values_at('model', 'deployment', 'devices', 'conf')
       assert_includes can0['ports'], { 'name' => 'temperature_sensor', 'direction' => 'output',

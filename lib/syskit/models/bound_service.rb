@@ -4,16 +4,29 @@ module Syskit
   module Models
     # A service provided by a task model, from +provides+ or +driver_for+:
     # its name (+as:+), the service model and which task port each service
-    # port is.
+    # port is. A service declared +slave_of:+ another has that service as
+    # its +master+ and is named after it (+stereo.left+).
     class BoundService
-      attr_reader :task_model, :name, :model, :port_mappings, :declared_at
+      attr_reader :task_model, :name, :model, :port_mappings, :declared_at, :master
 
-      def initialize(task_model, name, model, port_mappings, location)
+      def initialize(task_model, name, model, port_mappings, location, master: nil)
         @task_model = task_model
         @name = name
         @model = model
         @port_mappings = port_mappings.freeze
         @declared_at = location
+        @master = master
+      end
+
+      # The name the task model knows the service by: +name+, after its
+      # master's full name for a slave.
+      def full_name
+        @full_name ||= master ? "#{master.full_name}.#{name}" : name
+      end
+
+      # Whether it is a root service (not slave of another).
+      def master?
+        master.nil?
       end
 
       # The device or bus model the task drives through this service, if any.
@@ -37,7 +50,7 @@ module Syskit
       end
 
       def to_s
-        "service '#{name}' (#{model}) of #{task_model.name}"
+        "service '#{full_name}' (#{model}) of #{task_model.name}"
       end
     end
   end

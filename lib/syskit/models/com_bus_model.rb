@@ -23,11 +23,32 @@ module Syskit
       def initialize(message_type: nil, **options)
         super(**options)
         @attached_device_configuration = nil
+        @lazy_dispatch = false
+        @override_policy = true
         self.message_type = message_type if message_type
       end
 
-      def apply_options(message_type: nil)
+      # +com_bus_type 'CAN', message_type: T, lazy_dispatch: true,
+      # override_policy: false+ (the defaults are false and true).
+      def apply_options(message_type: nil, lazy_dispatch: false, override_policy: true)
         self.message_type = message_type if message_type
+        @lazy_dispatch = lazy_dispatch ? true : false
+        @override_policy = override_policy ? true : false
+      end
+
+      # Whether the bus driver serves only the attached devices whose tasks
+      # are in the network (Syskit's lazy dispatch). By default, as in
+      # Syskit, it serves every device declared on the bus: a bus planned
+      # alone gets the per-device ports of all of them.
+      def lazy_dispatch?
+        @lazy_dispatch
+      end
+
+      # Whether the bus driver's inputs get a buffered policy even when they
+      # do not declare needs_reliable_connection (true by default, as in
+      # Syskit).
+      def override_policy?
+        @override_policy
       end
 
       def message_type=(type)
@@ -119,7 +140,10 @@ module Syskit
       # Our services provide the provided bus's, so drivers of a sub-bus are
       # drivers of the parent bus too.
       def link_services(model)
-        SERVICES.each { |srv| const_get(srv, false).provides(model.const_get(srv, false)) }
+        SERVICES.each do |srv|
+          parent = model.const_get(srv, false)
+          const_get(srv, false).provides(parent, parent.ports.keys.to_h { |name| [name, name] })
+        end
       end
     end
   end

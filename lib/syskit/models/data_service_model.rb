@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/port'
+require 'syskit/models/provided_ports'
 
 module Syskit
   # The plain model objects the DSL records declarations into.
@@ -37,11 +38,7 @@ module Syskit
 
         model = model_class.new(location: location)
         namespace.const_set(name, model)
-        model.apply_options(**options)
-        model.provides(root) unless model.equal?(root)
-        model.instance_eval(&block) if block
-        model.finalize_declaration
-        model
+        model.send(:declare, root, options, block)
       end
 
       # A model declared again: the gem's bundled common models give way to
@@ -94,6 +91,13 @@ module Syskit
         self
       end
 
+      # A new model of this one's class that provides this one, as Syskit's
+      # +Device.new_submodel(name: 'Camera') { output_port ... }+: for
+      # models made in Ruby rather than with a statement (tests, stubs).
+      def new_submodel(name: nil, **options, &block)
+        self.class.new(location: Location.of_caller, name: name).send(:declare, self, options, block)
+      end
+
       # Options of the declaration statement, applied once the model is named.
       def apply_options(**options)
         return if options.empty?
@@ -115,6 +119,8 @@ module Syskit
         name || "anonymous #{self.class.kind}"
       end
       alias inspect to_s
+      # The name shown to users (Syskit's name for it on every model).
+      alias short_name to_s
 
       def kind
         self.class.kind
@@ -142,31 +148,51 @@ module Syskit
         @timing[:worstcase_processing_time] = seconds
       end
 
-      # Declares that this model provides +model+: its ports become ours,
-      # renamed by +mappings+ (+'their_port' => 'our_port'+).
+      # Declares that this model provides +model+: its ports become ours. As
+      # in Syskit, +mappings+ (+'their_port' => 'our_port'+) bind a port of
+      # +model+ to a port this model already has, and a port of +model+ named
+      # like one of ours must be mapped explicitly, even to itself.
       def provides(model, mappings = {})
         location = Location.of_caller
         check_provides(model, location)
         return self if @parents.key?(model)
 
         renames = Models.normalize_mappings(model, mappings, location, owner: self)
-        @parents[model] = model.ports.each_value.to_h do |port|
-          [port.name, adopt_port(port, renames.fetch(port.name, port.name), model, location)]
-        end
+        adopted = ProvidedPorts.new(self, model, renames, location).adopt
+        @parents[model] = adopted
         @fullfilled_models = nil
         @identity_mappings = nil
         self
       end
 
-      # Whether this model is +model+ or provides it, directly or not.
+      # Whether this model is +model+ or provides it, directly or not; given
+      # a list, whether it fullfills each of them.
       def fullfills?(model)
+        return model.all? { |m| fullfills?(m) } if model.is_a?(Array)
+
         fullfilled_models.include?(model)
       end
       alias fulfills? fullfills?
 
-      # This model and every model it provides, closest first.
+      # This model and every model it provides, in the order Syskit lists
+      # them (Ruby's ancestors when models include what they provide): the
+      # model, what it provided last first, the roots (Device, DataService)
+      # last.
       def fullfilled_models
-        @fullfilled_models ||= ([self] + parents.keys.flat_map(&:fullfilled_models)).uniq
+        @fullfilled_models ||= parents.each_key.with_object([self]) do |parent, chain|
+          at = 0
+          parent.fullfilled_models.each do |m|
+            found = chain.index(m)
+            found ? at = found : chain.insert(at += 1, m)
+          end
+        end.freeze
+      end
+
+      # Enumerates {#fullfilled_models}.
+      def each_fullfilled_model(&block)
+        return enum_for(__method__) unless block
+
+        fullfilled_models.each(&block)
       end
 
       # For a model this one provides, its port names mapped to ours.
@@ -183,6 +209,16 @@ module Syskit
 
       private
 
+      # Applies the statement's options, provides +root+, then evaluates the
+      # declaration block.
+      def declare(root, options, block)
+        apply_options(**options)
+        provides(root) unless equal?(root)
+        instance_eval(&block) if block
+        finalize_declaration
+        self
+      end
+
       def add_port(name, direction, type)
         location = Location.of_caller
         name = name.to_s
@@ -194,20 +230,6 @@ module Syskit
         port = Port.new(name, direction, Models.resolve_type(type, location))
         ports[name] = port
         PortModifiers.new(port)
-      end
-
-      def adopt_port(port, name, model, location)
-        existing = ports[name]
-        if existing && (existing.type != port.type || existing.direction != port.direction)
-          raise DeclarationError.new(
-            "#{model}'s #{port} collides with #{self}'s #{existing}",
-            location: location,
-            hint: "map it to another name: provides #{model}, '#{port.name}' => 'other_name'"
-          )
-        end
-
-        ports[name] ||= Port.new(name, port.direction, port.type)
-        name
       end
 
       # What a model of this kind may provide.

@@ -4,19 +4,31 @@ module Syskit
   module Models
     # Binds the ports of a service model to the ports of a task model, for
     # +provides+ and +driver_for+: explicit mappings first, then same name and
-    # type, then the only port of the same type and direction.
+    # type, then the only port of the same type and direction. As in Syskit,
+    # service ports bound to one task port must all be mapped explicitly.
+    #
+    # In a dynamic service (+dynamic: true+), an explicit mapping may name a
+    # port the task does not have yet but can create (a dynamic_*_port
+    # pattern of the right direction and type): see #created.
     class PortMapper
-      def initialize(task_model, srv_model, mappings, location)
+      def initialize(task_model, srv_model, mappings, location, dynamic: false)
         @task_model = task_model
         @srv_model = srv_model
         @explicit = Models.normalize_mappings(srv_model, mappings, location, owner: task_model.name)
         @location = location
+        @dynamic = dynamic
+        @created = []
       end
+
+      # The ports a dynamic service's mappings need created, once #map ran.
+      attr_reader :created
 
       # +{service port name => task port name}+; raises when a port has no
       # match or several.
       def map
-        @srv_model.ports.each_value.to_h { |port| [port.name, task_port_for(port).name] }
+        mapping = @srv_model.ports.each_value.to_h { |port| [port.name, task_port_for(port).name] }
+        check_shared_ports(mapping)
+        mapping
       end
 
       private
@@ -42,6 +54,7 @@ module Syskit
       def explicit_port(srv_port, name)
         port = @task_model.find_port(name)
         return port if compatible?(port, srv_port)
+        return create(srv_port, name) if !port && @dynamic && dynamic_pattern(srv_port, name)
 
         problem = port ? "is an #{port}" : 'does not exist'
         raise DeclarationError.new(
@@ -49,6 +62,32 @@ module Syskit
           location: @location, hint: "map '#{srv_port.name}' to an #{srv_port.direction} port of type " \
                                      "#{srv_port.type}#{port_list(srv_port)}"
         )
+      end
+
+      def dynamic_pattern(srv_port, name)
+        @task_model.spec&.dynamic_port_for(srv_port.direction, name, srv_port.type)
+      end
+
+      def create(srv_port, name)
+        port = dynamic_pattern(srv_port, name).instantiate(name)
+        @created << port
+        port
+      end
+
+      # Several service ports may share a task port only when each was
+      # mapped on purpose.
+      def check_shared_ports(mapping)
+        mapping.group_by(&:last).each do |task_port, pairs|
+          next if pairs.size == 1 || pairs.all? { |srv_port, _| @explicit.key?(srv_port) }
+
+          names = pairs.map(&:first).sort
+          raise DeclarationError.new(
+            "#{@srv_model}'s ports #{names.join(', ')} would all be bound to #{@task_model.name}'s port " \
+            "'#{task_port}'",
+            location: @location,
+            hint: "to share it, map each of them: #{names.map { |n| "'#{n}' => '#{task_port}'" }.join(', ')}"
+          )
+        end
       end
 
       def no_port(srv_port)

@@ -2,6 +2,7 @@
 
 require 'syskit/models/bound_service'
 require 'syskit/models/port_mapper'
+require 'syskit/models/dynamic_services'
 
 module Syskit
   module Models
@@ -11,6 +12,8 @@ module Syskit
     # plain +class_eval+: +driver_for+, +provides+ and +stub+ are class
     # methods, +def configure+ defines the method the generator runs.
     module TaskModel
+      include DynamicServices
+
       attr_reader :spec
 
       class << self
@@ -93,16 +96,24 @@ module Syskit
         cached(:fulfilling, service_model) { services.values.select { |srv| srv.fullfills?(service_model) }.freeze }
       end
 
+      # The service of full name +name+ ('gps', or 'stereo.left' for a slave).
       def find_service(name)
         services[name.to_s]
+      end
+      alias find_data_service find_service
+
+      # Enumerates the services, inherited ones included, in declaration order.
+      def each_data_service(&)
+        services.each_value(&)
       end
 
       # Declares that this task drives devices of +model+; the device is given
       # to the task as its +<as>_dev+ argument. Ports of the device model are
-      # bound by name and type, or by +'device_port' => 'task_port'+ mappings.
-      def driver_for(model, positional_mappings = {}, as: nil, **mappings)
+      # bound by name and type, or by +'device_port' => 'task_port'+ mappings
+      # (keywords or a hash). +slave_of: 'master'+ makes it a slave device
+      # of the master service's device (see Robot::SlaveDevice).
+      def driver_for(model, mappings = {}, as: nil, slave_of: nil, **more)
         location = Location.of_caller
-        mappings = positional_mappings.merge(mappings)
         unless model.is_a?(DeviceModel)
           raise DeclarationError.new(
             "driver_for expects a device or bus model, got #{model.inspect}",
@@ -112,17 +123,17 @@ module Syskit
         end
 
         as ||= Naming.underscore(model.name.to_s.split('::').last)
-        add_service(as, model, mappings, location)
+        add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
       end
 
       # Declares that this task provides the data service +model+ under the
-      # name +as+, with optional +'service_port' => 'task_port'+ mappings
-      # (also given as a hash: +provides Srv, { 'a' => 'b' }, as: 'x'+).
-      def provides(model, positional_mappings = {}, as: nil, **mappings)
+      # name +as+, with optional +'service_port' => 'task_port'+ mappings;
+      # +slave_of: 'name'+ makes it a slave of the service +name+ (its full
+      # name is then +name.as+).
+      def provides(model, mappings = {}, as: nil, slave_of: nil, **more)
         location = Location.of_caller
         return (@task_services ||= []) << model if model.is_a?(Compat::TaskService) && as.nil?
 
-        mappings = positional_mappings.merge(mappings)
         unless model.is_a?(DataServiceModel)
           raise DeclarationError.new("provides expects a data service model, got #{model.inspect}",
                                      location: location)
@@ -132,7 +143,7 @@ module Syskit
                                      location: location, hint: "write provides #{model}, as: 'name'")
         end
 
-        add_service(as, model, mappings, location)
+        add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
       end
 
       # Stands for what the real component does at configure time, when
@@ -194,9 +205,36 @@ module Syskit
         @worstcase_processing_time = seconds
       end
 
-      # Services through which this task drives a device or a bus.
+      # Services through which this task drives a device or a bus (Syskit's
+      # master driver services: slave services are served with their master).
       def driver_services
-        cached(:driver_services) { services.values.select(&:driven_device_model).freeze }
+        cached(:driver_services) { services.values.select { |srv| srv.master? && srv.driven_device_model }.freeze }
+      end
+
+      # Enumerates {#driver_services}, as Syskit names it.
+      def each_master_driver_service(&)
+        driver_services.each(&)
+      end
+
+      # Enumerates the driver services of buses.
+      def each_com_bus_driver_service(&block)
+        return enum_for(__method__) unless block
+
+        driver_services.each { |srv| yield srv if srv.driven_device_model.is_a?(ComBusModel) }
+      end
+
+      # Enumerates the services declared +slave_of:+ +master+ (a service or
+      # its full name).
+      def each_slave_data_service(master, &block)
+        return enum_for(__method__, master) unless block
+
+        name = master.respond_to?(:full_name) ? master.full_name : master.to_s
+        slave_services.each { |srv| yield srv if srv.master.full_name == name }
+      end
+
+      # The services declared +slave_of:+ another, in declaration order.
+      def slave_services
+        cached(:slave_services) { services.values.reject(&:master?).freeze }
       end
 
       # Those of {#driver_services} that can drive a device of +device_model+:
@@ -253,22 +291,47 @@ module Syskit
         @stub_blocks = []
       end
 
-      def add_service(name, model, mappings, location)
+      def add_service(name, model, mappings, location, slave_of: nil)
         name = name.to_s
         check_service_options(name, mappings, location)
-        existing = find_service(name)
+        master = master_service(slave_of, location) if slave_of
+        full_name = master ? "#{master.full_name}.#{name}" : name
+        existing = find_service(full_name)
         if existing
           raise DeclarationError.new("#{self.name} already has a #{existing} declared at #{existing.declared_at}",
                                      location: location, hint: "give this one another name with as: 'other_name'")
         end
 
         port_mappings = PortMapper.new(self, model, mappings, location).map
-        srv = BoundService.new(self, name, model, port_mappings, location)
-        (@services ||= {})[name] = srv
+        srv = BoundService.new(self, name, model, port_mappings, location, master: master)
+        (@services ||= {})[full_name] = srv
         TaskModel.declarations_changed
-        argument = srv.argument_name
-        define_method(argument) { arguments[argument] } if srv.driven_device_model
+        define_device_reader(srv) if srv.driven_device_model
         srv
+      end
+
+      # +<name>_dev+: a master service's device is a task argument; a slave's
+      # is found from its master's device.
+      def define_device_reader(srv)
+        argument = srv.argument_name
+        if srv.master?
+          define_method(argument) { arguments[argument] }
+        else
+          define_method(argument) { find_device_attached_to(srv) }
+        end
+      end
+
+      def master_service(slave_of, location)
+        name = slave_of.respond_to?(:full_name) ? slave_of.full_name : slave_of.to_s
+        found = find_service(name)
+        return found if found
+
+        known = services.keys.sort
+        hint = known.empty? ? "declare the master first: driver_for Model, as: 'name'" : "services: #{known.join(', ')}"
+        raise DeclarationError.new(
+          "slave_of: '#{name}' names no service of #{self.name}#{Naming.did_you_mean(name, known)}",
+          location: location, hint: hint
+        )
       end
 
       def check_service_options(name, mappings, location)

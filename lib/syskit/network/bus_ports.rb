@@ -14,27 +14,29 @@ module Syskit
     # provides (named by the bus_to_client:/client_to_bus: options when there
     # are several), else its single port of the message type.
     class BusPorts
-      # +expected+ collects the per-device ports the bus driver must create.
-      def initialize(device, bus_task, device_task, expected)
+      # Chooses the bus driver's side of the device's link: its port to the
+      # device (+bus_output+) and from it (+bus_input+), nil for a direction
+      # the device does not use. +expected+ collects the per-device ports
+      # the bus driver must create.
+      def initialize(device, bus_task, expected)
         @expected = expected
         @device = device
         @bus = device.bus
         @bus_model = @bus.model
         @type = @bus_model.message_type
         @bus_task = bus_task
-        @device_task = device_task
+        @link = Context::BusLink.new(device, bus_task)
+        @link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', device.name) if device.bus_to_client?
+        @link.bus_input = bus_port(:input, @bus_model.bus_in_srv, 'to_bus', "w#{device.name}") if device.client_to_bus?
       end
 
-      def link
-        link = Context::BusLink.new(@device, @bus_task, @device_task)
-        if @device.bus_to_client?
-          link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', @device.name)
-          link.client_input = client_port(:input, @bus_model.client_in_srv, 'from_bus', :bus_to_client)
-        end
-        if @device.client_to_bus?
-          link.bus_input = bus_port(:input, @bus_model.bus_in_srv, 'to_bus', "w#{@device.name}")
-          link.client_output = client_port(:output, @bus_model.client_out_srv, 'to_bus', :client_to_bus)
-        end
+      # The link, completed with the ports of the device's task.
+      def link(device_task)
+        link = @link
+        @device_task = device_task
+        link.device_task = device_task
+        link.client_input = client_port(:input, @bus_model.client_in_srv, 'from_bus', :bus_to_client) if link.bus_output
+        link.client_output = client_port(:output, @bus_model.client_out_srv, 'to_bus', :client_to_bus) if link.bus_input
         link
       end
 

@@ -9,6 +9,11 @@ module Syskit
     # dependency of the device's task, and the ports that link them are
     # chosen (see BusPorts). A bus attached through itself never gets here:
     # the robot refuses it where it is declared.
+    #
+    # As in Syskit, a bus driver serves every device declared on its bus,
+    # in the network or not: a bus planned alone gets the per-device ports
+    # of all of them. A bus model declared with lazy_dispatch: true serves
+    # only the devices whose tasks are in the network.
     class Buses
       # What a device's task knows of the bus it depends on (see
       # TaskContext#each_child).
@@ -21,23 +26,32 @@ module Syskit
 
       def run
         queue = @context.tasks.dup
+        bus_tasks = []
         until queue.empty?
           task = queue.shift
           device = @context.device_of(task)
+          bus_tasks << task if device.com_bus?
           next unless device.attached?
 
           begin
-            bus_task = bus_task_for(device.bus, queue)
-            task.add_child(bus_task, BUS_CHILD)
-            @context.bus_links << BusPorts.new(device, bus_task, task, @context.expected_ports[bus_task]).link
+            link(device, task, bus_task_for(device.bus, queue))
           rescue Syskit::Error => e
             @context.error(e)
           end
         end
+        # Once the links are made (each link's ports are chosen where they
+        # are used, the cheap order for the CPU caches), the devices not in
+        # the network.
+        bus_tasks.each { |task| serve_declared_devices(task) }
         check_port_names
       end
 
       private
+
+      def link(device, task, bus_task)
+        task.add_child(bus_task, BUS_CHILD)
+        @context.bus_links << BusPorts.new(device, bus_task, @context.expected_ports[bus_task]).link(task)
+      end
 
       def bus_task_for(bus, queue)
         existing = @context.task_for(bus)
@@ -46,6 +60,28 @@ module Syskit
         task = @drivers.instantiate(Requirement.new(bus, @context.profile))
         queue << task
         task
+      end
+
+      # A bus task records the devices it serves, in declaration order: the
+      # ones linked to it, and, unless it dispatches lazily, the others,
+      # whose ports are chosen here.
+      def serve_declared_devices(task)
+        bus = @context.device_of(task)
+        lazy = bus.model.lazy_dispatch?
+        bus.each_attached_device do |device|
+          if @context.task_for(device)
+            task.attach_device(device)
+          elsif !lazy
+            serve_unplanned(device, task)
+          end
+        end
+      end
+
+      def serve_unplanned(device, task)
+        BusPorts.new(device, task, @context.expected_ports[task])
+        task.attach_device(device)
+      rescue Syskit::Error => e
+        @context.error(e)
       end
 
       # Per-device ports of one bus driver must not collide with each other

@@ -42,8 +42,9 @@ module Syskit
         task
       end
 
+      # The task of +device+; a slave device's is its master's.
       def task_for(device)
-        @task_by_device[device]
+        @task_by_device[device] || ((master = device.master_device) && @task_by_device[master])
       end
 
       def requirement_for(task)

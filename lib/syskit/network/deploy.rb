@@ -4,21 +4,30 @@ module Syskit
   module Network
     # Step 3: binds every task to a deployed task of the robot configuration.
     # Among several candidates, the device's prefer_deployed_tasks chooses.
+    # A device's deployed_as gives its driver a deployment of its own.
     class Deploy
       def initialize(context)
         @context = context
+        # What stands for a deployed_as name when telling deployed tasks
+        # apart: the robot configuration's task of that name, else the
+        # first deployed task made under it.
+        @declared_keys = {}
       end
 
       def run
         used = {}.compare_by_identity
+        stub = @context.stub_deployments
         @context.tasks.each do |task|
-          deployed = @context.stub_deployments ? stub_deployment(task) : choose(task)
+          requirement = task.requirement
+          declared = declared(task, requirement.device.declared_deployment) unless stub
+          deployed = declared || (stub ? stub_deployment(task) : choose(task, requirement))
           next unless deployed
 
-          if (other = used[deployed])
+          key = declared ? declared_key(declared) : deployed
+          if (other = used[key])
             @context.error(shared(deployed, other, task))
           else
-            used[deployed] = task
+            used[key] = task
             task.deployed_task = deployed
           end
         end
@@ -26,13 +35,27 @@ module Syskit
 
       private
 
+      # The deployed task of the device's deployed_as (+declaration+), if any.
+      def declared(task, declaration)
+        return unless declaration
+
+        Orogen::DeploymentSpec.new(declaration.name, location: declaration.location, unmanaged: declaration.unmanaged)
+                              .add_task(declaration.name, task.model, location: declaration.location)
+      end
+
+      # A deployed_as name and a deployed task of the robot configuration
+      # of the same name are one process: they share a key.
+      def declared_key(deployed)
+        @config_tasks ||= @context.robot_config.deployed_tasks.to_h { |t| [t.name, t] }
+        @declared_keys[deployed.name] ||= @config_tasks[deployed.name] || deployed
+      end
+
       def stub_deployment(task)
         name = @context.device_of(task).name
         Orogen::DeploymentSpec.new("stub_#{name}").add_task(name, task.model)
       end
 
-      def choose(task)
-        requirement = @context.requirement_for(task)
+      def choose(task, requirement)
         index = @context.robot_config.candidates_for(task.model)
         return @context.error(none(task, requirement)) if index.empty?
 
@@ -113,12 +136,17 @@ module Syskit
       def shared(deployed, first_task, second_task)
         first = @context.device_of(first_task)
         second = @context.device_of(second_task)
+        declared = second.declared_deployment
+        hint = if declared
+                 "give each device a deployed task of its own, e.g. deployed_as('#{second.name}')"
+               else
+                 'deploy one task per device (usually named after the device) and tell them apart ' \
+                   "with .prefer_deployed_tasks(/#{second.name}/)"
+               end
         DeploymentError.new(
           "#{first} and #{second} both need the deployed task #{deployed} " \
           "(#{first} is declared at #{first.declared_at})",
-          location: second.declared_at,
-          hint: 'deploy one task per device (usually named after the device) and tell them apart ' \
-                "with .prefer_deployed_tasks(/#{second.name}/)"
+          location: declared&.location || second.declared_at, hint: hint
         )
       end
     end

@@ -15,7 +15,7 @@ module Syskit
           next @context.error(not_a_device(requirement)) unless requirement.is_a?(Requirement)
           next if @context.task_for(requirement.device)
 
-          instantiate(requirement)
+          requirement.device.master_device ? instantiate_slave(requirement) : instantiate(requirement)
         rescue Syskit::Error => e
           @context.error(e)
         end
@@ -36,16 +36,37 @@ module Syskit
 
         task = model.new(services.to_h { |srv| [srv.argument_name, device] })
         task.conf = requirement.conf
+        create_slave_ports(task, device)
         @context.add_task(task, device, requirement)
+      end
+
+      # A slave device is served by its master's task (see
+      # Context#task_for), made here when the master is not in the network
+      # yet, with the slave requirement's conf and hints.
+      def instantiate_slave(requirement)
+        instantiate(Requirement.new(requirement.device.master_device, requirement.profile,
+                                    conf: requirement.conf, deployment_hints: requirement.deployment_hints))
       end
 
       private
 
       def resolve(device)
-        return if device.model_resolved? && device.driver_resolved?
+        if device.model_resolved? && device.driver_resolved?
+          device.resolve_slaves # devices stubbed in tests get their driver directly
+        else
+          @index ||= Robot::DriverIndex.new(@context.app.orogen, @context.app)
+          @index.resolve(device)
+        end
+      end
 
-        @index ||= Robot::DriverIndex.new(@context.app.orogen, @context.app)
-        @index.resolve(device)
+      # The ports dynamic services create for the device's slaves (they are
+      # the task's from the start, as in Syskit's specialized models).
+      def create_slave_ports(task, device)
+        device.each_slave do |slave|
+          slave.created_ports.each do |port|
+            task.create_port(port.direction, port.name, port.type, location: slave.declared_at)
+          end
+        end
       end
 
       def not_a_device(requirement)

@@ -6,9 +6,12 @@ module Syskit
     # configured how, connected how, in which order. A frozen value, built
     # from a generated network; renderers only read it.
     class Plan
-      # A task of the plan, named after its deployed task.
+      # A task of the plan, named after its deployed task; +devices+ are the
+      # devices it drives, each followed by its slaves (+stereo.left+);
+      # +unmanaged+: its deployment is started outside of Syskit;
       # +operations+: the operations its configure called, in call order.
-      Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on, :operations)
+      Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on, :unmanaged,
+                        :operations)
       # A call of an operation of a task's component, and its arguments as plain data.
       Operation = Struct.new(:name, :arguments)
       # A port of a task; dynamic ports are created at configure time.
@@ -20,9 +23,11 @@ module Syskit
       # 'configure' or 'start' a task.
       Step = Struct.new(:step, :task)
       # A device of the network: its driver task, its bus and what it
-      # declared (attributes such as can_id, period, burst).
+      # declared (attributes such as can_id, period, burst). A slave device
+      # is named +master.slave+, its +master+ is the master's name (nil for
+      # the others) and its task is the master's.
       Device = Struct.new(:name, :model, :task, :bus, :bus_to_client, :client_to_bus, :attributes,
-                          :period, :burst, :sample_size, :declared_at)
+                          :period, :burst, :sample_size, :declared_at, :master)
       # A CAN bus of the plan and the frames declared on its wire (by every
       # device of the robot attached to it or to a CAN bus attached to it),
       # in priority order; +bitrate+ and +utilization+ (a Rational) are nil
@@ -60,7 +65,7 @@ module Syskit
         new(
           profile: context.profile&.name, robot: context.robot_config&.name,
           tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports) },
-          devices: context.tasks.map { |t| device_entry(context.device_of(t), t, paths) }.sort_by(&:name),
+          devices: device_entries(context, paths),
           connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
           order: context.order.map { |s| Step.new(s.step, s.task.name).freeze },
           buses: bus_entries(context, paths)
@@ -90,13 +95,15 @@ module Syskit
       # without walking it again.
       def self.task_entry(task, static_ports)
         children = task.children
+        deployment = task.deployed_task.deployment
         Task.new(
-          task.name, task.model.name, task.deployed_task.deployment.name,     # name, model, deployment
-          task.devices.map(&:name).freeze, task.conf,                         # devices, conf (frozen)
+          task.name, task.model.name, deployment.name,                        # name, model, deployment
+          device_names(task), task.conf,                                      # devices, conf (frozen)
           freeze_plain(task.properties.to_plain),                             # properties
           task_ports(task, static_ports),                                     # ports
           children.empty? ? NO_DEPENDENCIES : children.map(&:name).sort!.freeze, # depends_on
-          operation_entries(task) # operations
+          deployment.unmanaged?,                                              # unmanaged
+          operation_entries(task)                                             # operations
         ).freeze
       end
 
@@ -117,6 +124,25 @@ module Syskit
         end
       end
 
+      # The task's devices, each followed by its slaves.
+      def self.device_names(task)
+        devices = task.devices
+        return devices.map(&:name).freeze if devices.all? { |d| d.slaves.empty? }
+
+        devices.flat_map { |d| [d.name, *d.each_slave.map(&:full_name)] }.freeze
+      end
+
+      # A device entry per task, and one per slave of its device, by name.
+      def self.device_entries(context, paths)
+        entries = []
+        context.tasks.each do |task|
+          device = context.device_of(task)
+          entries << device_entry(device, task, paths)
+          device.each_slave { |slave| entries << device_entry(slave, task, paths) }
+        end
+        entries.sort_by!(&:name)
+      end
+
       # The model's static ports, then those the task's configure created.
       def self.task_ports(task, static_ports)
         ports = static_ports[task.model] ||= task.model.ports.each_value.map do |p|
@@ -131,12 +157,13 @@ module Syskit
         attributes = device.dsl_attributes
         attached = device.attached?
         Device.new(
-          device.name, device.model.name, task.name, device.bus&.name,        # name, model, task, bus
+          device.full_name, device.model.name, task.name, device.bus&.name,   # name, model, task, bus
           attached ? device.bus_to_client? : nil,                             # bus_to_client
           attached ? device.client_to_bus? : nil,                             # client_to_bus
           attributes.empty? ? NO_ATTRIBUTES : plain_attributes(attributes),   # attributes
           device.period, device.burst, device.sample_size,                    # period, burst, sample_size
-          declared_at(device.declared_at, paths)                              # declared_at
+          declared_at(device.declared_at, paths),                             # declared_at
+          device.master_device&.name                                          # master
         ).freeze
       end
 
@@ -255,7 +282,7 @@ module Syskit
           'name' => task.name, 'model' => task.model, 'deployment' => task.deployment,
           'devices' => task.devices, 'conf' => task.conf, 'properties' => task.properties,
           'ports' => task.ports.map { |p| port_hashes[p] ||= port_hash(p) },
-          'depends_on' => task.depends_on,
+          'depends_on' => task.depends_on, 'unmanaged' => task.unmanaged,
           'operations' => task.operations.map { |op| { 'name' => op.name, 'arguments' => op.arguments } }
         }
       end
@@ -269,7 +296,7 @@ module Syskit
           'name' => device.name, 'model' => device.model, 'task' => device.task, 'bus' => device.bus,
           'bus_to_client' => device.bus_to_client, 'client_to_bus' => device.client_to_bus,
           'attributes' => device.attributes, 'period' => device.period, 'burst' => device.burst,
-          'sample_size' => device.sample_size, 'declared_at' => device.declared_at
+          'sample_size' => device.sample_size, 'declared_at' => device.declared_at, 'master' => device.master
         }
       end
 

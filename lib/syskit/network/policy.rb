@@ -5,15 +5,20 @@ module Syskit
     # Connection policies. A connection into a bus driver's input, or into a
     # port that needs_reliable_connection, is buffered; its size is
     #
-    #   burst + ceil(latency / period)
+    #   sample_size * (burst + ceil(latency / period))
     #
-    # where period and burst are the writing device's (+.period(s)+,
-    # +.burst(n)+, burst 1 when not given) and latency is the reading task
-    # model's worstcase_processing_time (DEFAULT_LATENCY when not declared):
-    # the messages the device can send while the reader is busy. Without a
-    # period the size is burst + DEFAULT_BUFFER_SIZE - 1 (20 with no burst).
-    # A port's needs_buffered_connection(n) is a minimum. Other connections
-    # get a data policy (the last sample only).
+    # where period and burst are the device's (+.period(s)+, +.burst(n)+,
+    # burst 1 when not given) and latency is the reading task model's
+    # worstcase_processing_time (DEFAULT_LATENCY when not declared): the
+    # samples the device can send while the reader is busy. Without a period
+    # the samples are burst + DEFAULT_BUFFER_SIZE - 1 (20 with no burst).
+    # As in Syskit's dataflow dynamics, +.sample_size(n)+ (the bus messages
+    # one sample of the device takes, 1 when not given) counts on the
+    # connections from the bus to the device; the device's own writes to
+    # the bus are counted in samples. A port's needs_buffered_connection(n)
+    # is a minimum. Other connections get a data policy (the last sample
+    # only). A bus model declared override_policy: false does not buffer the
+    # inputs of its driver that do not ask for it.
     module Policy
       DEFAULT_BUFFER_SIZE = 20
       DEFAULT_LATENCY = 0.1
@@ -22,10 +27,15 @@ module Syskit
 
       DATA = { 'type' => 'data' }.freeze
 
-      def for(sink_port, sink_task, writer_device, into_bus:)
-        return DATA unless into_bus || sink_port.reliable? || sink_port.buffer_size
+      # The policy of a connection into +sink_port+ of +sink_task+ on the
+      # link of the attached +device+; +into_bus+: the device writes to its
+      # bus (else the bus writes to the device).
+      def for(sink_port, sink_task, device, into_bus:)
+        forced = into_bus && device.bus.model.override_policy?
+        return DATA unless forced || sink_port.reliable? || sink_port.buffer_size
 
-        size = buffer_size(writer_device, sink_task.model.worstcase_processing_time)
+        size = buffer_size(device, sink_task.model.worstcase_processing_time)
+        size *= device.sample_size || 1 unless into_bus
         size = [size, sink_port.buffer_size].max if sink_port.buffer_size
         buffer(size)
       end
@@ -35,6 +45,7 @@ module Syskit
         (@buffers ||= {})[size] ||= { 'type' => 'buffer', 'size' => size }.freeze
       end
 
+      # The samples +device+ may send while its reader is busy for +latency+.
       def buffer_size(device, latency)
         burst = device.burst || 1
         period = device.period

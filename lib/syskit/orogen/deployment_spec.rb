@@ -15,10 +15,17 @@ module Syskit
 
       attr_reader :name, :tasks, :declared_at
 
-      def initialize(name, location: nil)
+      # +unmanaged:+ a process started outside of Syskit (a device's
+      # deployed_as_unmanaged).
+      def initialize(name, location: nil, unmanaged: false)
         @name = name
         @tasks = []
         @declared_at = location
+        @unmanaged = unmanaged
+      end
+
+      def unmanaged?
+        @unmanaged
       end
 
       # A copy whose task names start with +prefix+ (use_deployment's

@@ -87,6 +87,7 @@ module Syskit
       # and ports.
       def task_text(task, out)
         out << '  ' << task.name << '  ' << task.model << '  (deployment ' << task.deployment
+        out << ', unmanaged' if task.unmanaged
         list(task.conf, out << ', conf ') << ")\n"
         list(task.devices, out << DEVICES) << "\n" unless task.devices.empty?
         list(task.depends_on, out << DEPENDS_ON) << "\n" unless task.depends_on.empty?

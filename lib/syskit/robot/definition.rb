@@ -32,8 +32,21 @@ module Syskit
         @declaring
       end
 
+      # The device +name+; +master.slave+ names a slave device.
       def find_device(name)
-        @devices[name.to_s]
+        name = name.to_s
+        found = @devices[name]
+        return found if found || !name.include?('.')
+
+        master, slave = name.split('.', 2)
+        @devices[master]&.find_slave(slave)
+      end
+
+      # Enumerates the slave devices of every device, master by master.
+      def each_slave_device(&block)
+        return enum_for(__method__) unless block
+
+        @devices.each_value { |device| device.each_slave(&block) }
       end
 
       def device_names

@@ -115,8 +115,21 @@ module Syskit
         setting(:sample_size, size, 'a positive integer') { |v| v.is_a?(Integer) && v.positive? }
       end
 
-      def doc(text = nil)
-        setting(:doc, text, 'a string') { |v| v.is_a?(String) }
+      # Documentation of the device. As Syskit's dsl_attribute: no argument
+      # reads it, +doc(text)+ sets it (anything with #to_str), +doc(nil)+
+      # removes it. Without one, the robot block takes the comment lines
+      # just above the +device+ statement.
+      def doc(*text)
+        return @doc if text.empty?
+
+        value = text.first
+        unless text.size == 1 && (value.nil? || value.respond_to?(:to_str))
+          raise DeclarationError.new("invalid doc #{text.map(&:inspect).join(', ')} for #{self}",
+                                     location: Location.of_caller, hint: 'doc takes a string, or nil to remove it')
+        end
+
+        @doc = value&.to_str
+        self
       end
 
       # Attaches the device to a bus (the same as declaring it in a
@@ -237,7 +250,7 @@ module Syskit
       end
 
       def chainable_methods
-        (%w[with_conf prefer_deployed_tasks period burst sample_size doc attach_to frame] +
+        (%w[with_conf prefer_deployed_tasks deployed_as period burst sample_size doc attach_to slave frame] +
           singleton_class.ancestors.grep(Models::DeviceConfigurationModule)
                          .flat_map { |m| m.public_instance_methods(false).map(&:to_s) })
           .reject { |m| m.start_with?('__') }.uniq

@@ -27,10 +27,12 @@ module Syskit
         @drivers.fetch(device_model, NONE)
       end
 
-      # Sets the model and driver of +device+, or raises a DriverError.
+      # Sets the model and driver of +device+ and binds its slave devices,
+      # or raises a DriverError (a DeclarationError for a slave).
       def resolve(device)
         device.assign_model(model_from_task(device)) unless device.model_resolved?
         device.driver_model = device.using ? check_using(device) : single_driver(device)
+        device.resolve_slaves
       end
 
       private

@@ -7,19 +7,19 @@ module Syskit
       def initialize(definition)
         @definition = definition
         @bus = nil
+        @comments = DocComment.new
       end
 
       # Declares a device: +device(Devices::GPS::Ublox::F9, as: 'gps')+.
-      def device(model, as: nil, using: nil, **options)
-        @definition.add_device(Device, model, as, using: using, options: options,
-                                                  location: Location.of_caller, bus: @bus)
+      # +doc:+, or else the comment block just above, documents it.
+      def device(model, as: nil, using: nil, doc: nil, **options)
+        declare(Device, model, as, using, doc, options, Location.of_caller)
       end
 
       # Declares a communication bus: +com_bus Devices::Bus::CAN, as: 'can0'+.
       # A block attaches the devices it declares, like +through+.
-      def com_bus(model, as: nil, using: nil, **options, &block)
-        bus = @definition.add_device(ComBus, model, as, using: using, options: options,
-                                                        location: Location.of_caller, bus: @bus)
+      def com_bus(model, as: nil, using: nil, doc: nil, **options, &block)
+        bus = declare(ComBus, model, as, using, doc, options, Location.of_caller)
         through(bus, &block) if block
         bus
       end
@@ -49,6 +49,15 @@ module Syskit
       end
 
       private
+
+      # The location is found by the statement itself: the user's line is
+      # then its caller, the first frame looked at (Location.of_caller).
+      def declare(klass, model, name, using, doc, options, location) # rubocop:disable Metrics/ParameterLists
+        device = @definition.add_device(klass, model, name, using: using, options: options,
+                                                            location: location, bus: @bus)
+        doc ||= @comments.above(location)
+        doc ? device.doc(doc) : device
+      end
 
       def chained?(name)
         Device.public_method_defined?(name)

@@ -6,6 +6,7 @@ module AwesomeRobot
       module Ublox
         # Ublox's 9th generation GNSS receivers (F9P, F9R).
         device_type 'F9' do
+          output_port 'pose_samples', '/base/samples/RigidBodyState'
           provides Services::Position, 'position_samples' => 'pose_samples'
         end
       end

@@ -1,0 +1,108 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Models
+    # A service a task model provides under names chosen later, with ports
+    # it creates for each (Syskit's +dynamic_service+): a gazebo model task
+    # exports any link as a device, each on its own port.
+    #
+    #   Syskit.extend_model OroGen.rock_gazebo.ModelTask do
+    #     dynamic_service Devices::Gazebo::Link, as: 'link_export' do
+    #       driver_for Devices::Gazebo::Link, 'link_state_samples' => "#{name}_samples"
+    #     end
+    #   end
+    #
+    # The block runs once per instance (+device(...).slave('link_export',
+    # as: 'camera_link')+), with the instance's +name+ and +options+. Its
+    # mappings may name ports the task does not have: they are created,
+    # when one of the task's dynamic_*_port patterns allows them.
+    class DynamicService
+      attr_reader :task_model, :name, :model, :declared_at
+
+      def initialize(task_model, name, model, block, location)
+        @task_model = task_model
+        @name = name
+        @model = model
+        @block = block
+        @declared_at = location
+      end
+
+      # The service named +as+ (a BoundService) and the ports it needs
+      # created; +location+ is where the instance is asked for.
+      def instantiate(as, options, location)
+        context = Context.new(self, as, options)
+        begin
+          context.instance_exec(&@block)
+        rescue ScriptError, StandardError => e
+          raise UserCode.translate(e, error_class: DeclarationError,
+                                      context: "in dynamic service '#{name}' of #{task_model.name} for '#{as}'")
+        end
+        return [context.service, context.created_ports] if context.service
+
+        raise DeclarationError.new(
+          "the block of dynamic service '#{name}' of #{task_model.name} provides nothing for '#{as}'",
+          location: declared_at || location,
+          hint: "call provides #{model}, 'service_port' => \"\#{name}_port\" (or driver_for) in the block"
+        )
+      end
+
+      def to_s
+        "dynamic service '#{name}' (#{model}) of #{task_model.name}"
+      end
+
+      # What the block of a dynamic service is evaluated on.
+      class Context
+        # The instance's name and options.
+        attr_reader :name, :options, :service, :created_ports
+
+        def initialize(dynamic, name, options)
+          @dynamic = dynamic
+          @name = name
+          @options = options
+          @created_ports = []
+        end
+
+        # The task model (Syskit's name for it in these blocks).
+        def component_model
+          @dynamic.task_model
+        end
+
+        # Provides +model+ (the dynamic service's model or one providing it)
+        # as this instance, its ports mapped by +mappings+.
+        def provides(model, mappings = {}, as: nil, **more)
+          location = Location.of_caller
+          check(model, as, location)
+          mapper = PortMapper.new(component_model, model, mappings.merge(more), location, dynamic: true)
+          @service = BoundService.new(component_model, name, model, mapper.map, location)
+          @created_ports = mapper.created
+          @service
+        end
+        alias driver_for provides
+
+        def explain_missing(method_name)
+          ["unknown statement '#{method_name}' in dynamic service '#{@dynamic.name}'",
+           'the block declares the instance with provides or driver_for, from its name and options']
+        end
+
+        private
+
+        def check(model, as, location)
+          if @service
+            raise DeclarationError.new("dynamic service '#{@dynamic.name}' provides twice for '#{name}'",
+                                       location: location, hint: 'call provides (or driver_for) once')
+          end
+          if as && as.to_s != name
+            raise DeclarationError.new("as: '#{as}' in dynamic service '#{@dynamic.name}': the instance is '#{name}'",
+                                       location: location, hint: 'leave as: out, the name is the instance\'s')
+          end
+          return if model.is_a?(DataServiceModel) && model.fullfills?(@dynamic.model)
+
+          raise DeclarationError.new(
+            "dynamic service '#{@dynamic.name}' is a #{@dynamic.model}, the block provides #{model.inspect}",
+            location: location, hint: "provide #{@dynamic.model} or a model that provides it"
+          )
+        end
+      end
+    end
+  end
+end

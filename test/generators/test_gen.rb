@@ -118,7 +118,8 @@ module Syskit
       assert_file app, 'models/devices/gps/ublox/f9.rb', "module GPS\n      module Ublox\n", "device_type 'F9' do"
       assert_file app, 'models/devices/camera/gig_e.rb', "module Camera\n", "device_type 'GigE' do"
       assert_file app, 'models/devices/bus/can.rb', "import_types_from 'canbus'",
-                  "com_bus_type 'CAN', message_type: Types.canbus.Message do", '  #   dsl_attribute :address do |address|'
+                  "com_bus_type 'CAN', message_type: Types.canbus.Message do",
+                  '  #   dsl_attribute :address do |address|'
       assert_file app, 'test/devices/bus/test_can.rb', "  # it 'gives attached devices an address' do"
       assert_file app, 'models/profiles/live/base.rb', "    module Live\n",
                   "      profile 'Base' do\n        robot do\n"

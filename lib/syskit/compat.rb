@@ -31,7 +31,7 @@ module Syskit
 
     # The top-level constants an active app installs besides OroGen and Types.
     def self.constants
-      { Robot: Config::RobotDSL, Roby: Roby, Conf: Conf }
+      { Robot: Config::RobotDSL, Roby: Roby, Conf: Conf, Typelib: Typelib }
     end
 
     # Records that a model of kind +kind+ (a composition, ...) was defined,
@@ -91,11 +91,23 @@ module Syskit
       end
     end
 
-    # +OroGen::Spec+: the namespace of oroGen's specification classes.
-    OrogenSpec = Module.new
-    %i[Project TaskContext Deployment Typekit Port Operation].each do |name|
-      OrogenSpec.const_set(name, Class.new.extend(NotModelledCalls))
+    # A module of classes that take any call with a warning (see
+    # NotModelledCalls), named as Rock code writes them.
+    def self.not_modelled_namespace(shown_name, class_names)
+      namespace = Module.new
+      class_names.each do |name|
+        klass = Class.new.extend(NotModelledCalls)
+        full_name = "#{shown_name}::#{name}"
+        klass.define_singleton_method(:to_s) { full_name }
+        namespace.const_set(name, klass)
+      end
+      namespace
     end
+
+    # +Typelib+: Rock's type system, which a few specs call in Ruby.
+    Typelib = not_modelled_namespace('Typelib', %i[Registry Type CompoundType ContainerType EnumType OpaqueType])
+    # +OroGen::Spec+: the namespace of oroGen's specification classes.
+    OrogenSpec = not_modelled_namespace('OroGen::Spec', %i[Project TaskContext Deployment Typekit Port Operation])
 
     # Declares a class of a model kind this gem does not model.
     def self.not_modelled_class(namespace, name, kind)

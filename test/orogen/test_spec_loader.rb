@@ -179,11 +179,18 @@ module Syskit
                       at: 'models/orogen/broken.orogen:4', root: Syskit.app.root
     end
 
-    def test_subclass_of_a_library_that_is_not_loaded
-      error = spec_error("name 'broken'\ntask_context 'Task', subclasses: 'iodrivers_base::Task' do\nend\n")
-      assert_reported error, /iodrivers_base::Task is unknown: task library 'iodrivers_base' is not loaded/,
-                      at: 'models/orogen/broken.orogen:2',
-                      hint: /add using_task_library 'iodrivers_base' before this line/, root: Syskit.app.root
+    # As oroGen does: a full task name loads its library.
+    def test_a_full_task_name_loads_its_library
+      app = load_spec("name 'mine'\ntask_context 'Task', subclasses: 'iodrivers_base::Task' do\nend\n" \
+                      "deployment 'mine_test' do\n  task 'logs', 'logger::Logger'\nend\n", name: 'mine')
+      assert_empty %w[iodrivers_base logger mine] - app.orogen.loaded_library_names
+      assert_operator OroGen.mine.Task, :<, OroGen.iodrivers_base.Task
+    end
+
+    def test_subclass_of_a_library_that_does_not_exist
+      error = spec_error("name 'broken'\ntask_context 'Task', subclasses: 'iodriver_base::Task' do\nend\n")
+      assert_reported error, /no task library 'iodriver_base' \(did you mean 'iodrivers_base'\?\)/,
+                      at: 'models/orogen/broken.orogen:2', root: Syskit.app.root
     end
 
     def test_duplicate_port

@@ -38,6 +38,14 @@ module Syskit
       end
     end
 
+    # What an activity statement (+periodic(0.01)+, +fd_driven+) returns:
+    # its modifiers are accepted, they only matter to a running component.
+    class ActivityModifiers
+      def doc(_text)
+        self
+      end
+    end
+
     # An operation (RPC) of a task model, recorded for completeness.
     class Operation
       attr_reader :name, :arguments

@@ -77,17 +77,26 @@ module Syskit
 
       # A task model by full name, or by name relative to this library.
       def find_task_model(name, location)
-        found = library.find_task(name) || @app.orogen.find_task_model(name)
+        found = library.find_task(name) || @app.orogen.find_task_model(name) || load_library_of(name, location)
         return found if found
 
         lib_name = name.split('::').first
         if name.include?('::') && !@app.orogen.loaded?(lib_name) && lib_name != library.name
-          raise SpecError.new("#{name} is unknown: task library '#{lib_name}' is not loaded",
-                              location: location, hint: "add using_task_library '#{lib_name}' before this line")
+          raise @app.orogen.unknown_library(lib_name, location, error_class: SpecError)
         end
 
         raise SpecError.new("unknown task model '#{name}'#{Naming.did_you_mean(name, known_task_names)}",
                             location: location, hint: "the task models known here are #{known_task_names.join(', ')}")
+      end
+
+      # A full name loads its library, as oroGen does ('logger::Logger').
+      def load_library_of(name, location)
+        lib_name = name.split('::').first
+        return unless name.include?('::') && lib_name != library.name &&
+                      @app.orogen.available_library_names.include?(lib_name)
+
+        @app.using_task_library(lib_name, location: location)
+        @app.orogen.find_task_model(name)
       end
 
       private

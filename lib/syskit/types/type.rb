@@ -124,7 +124,11 @@ module Syskit
         false
       end
 
+      # 0 and 1 are false and true, as C++ and Typelib convert them (oroGen
+      # specs write property defaults that way).
       def from_ruby(value)
+        return value == 1 if [0, 1].include?(value)
+
         mismatch(value, 'true or false') unless [true, false].include?(value)
         value
       end

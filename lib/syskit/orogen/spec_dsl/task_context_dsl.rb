@@ -78,7 +78,22 @@ module Syskit
       end
 
       %i[port_driven fd_driven periodic default_activity required_activity].each do |kind|
-        define_method(kind) { |*args| @spec.activity = [kind, *args] }
+        define_method(kind) do |*args|
+          @spec.activity = [kind, *args]
+          ActivityModifiers.new
+        end
+      end
+
+      # A property declared before (or inherited), to change it:
+      # +find_property('timeout').dynamic+.
+      def find_property(property_name)
+        found = @spec.all_properties[property_name.to_s] || @spec.properties[property_name.to_s]
+        unless found
+          raise SpecError.new("#{@spec.name} has no property '#{property_name}'",
+                              location: Location.of_caller, hint: 'declare it with property before this line')
+        end
+
+        PropertyModifiers.new(found)
       end
 
       # Code-generation statements: accepted, meaningless for planning.

@@ -20,8 +20,15 @@ module Syskit
       # Build statements, accepted: only the build reads them.
       %i[export_types load opaque_type include_directories link_directories target_link_libraries
          orogen_pkg_check_modules using_library enable_namespace max_sizes type_export_policy
-         smart_ptr ro_ptr_type shared_ptr].each do |statement|
+         smart_ptr ro_ptr_type shared_ptr remove_types ros_mappings resolve_registry_includes
+         export_types_from].each do |statement|
         define_method(statement) { |*_args, **_options, &_block| self }
+      end
+
+      # The typekit's Typelib registry, which some specs (Rock's std
+      # typekit) fill in Ruby: not modelled, whatever is called on it.
+      def registry
+        Compat::Ignored.instance
       end
     end
   end

@@ -1,0 +1,111 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # The statements and type forms of real driver packages' .orogen files
+  # (SPEC 12), each in a spec written for this test.
+  class TestRealSpecForms < Minitest::Test
+    SONAR_SPEC = <<~RUBY
+      name 'sonar'
+      version '1.2'
+      cxx_standard 'c++17'
+      self.define_default_deployments = false
+      using_library 'sonar_driver', typekit: false
+      import_types_from 'base'
+      import_types_from 'gps_base'
+      import_types_from 'sonar/Config.hpp'
+
+      typekit do
+        export_types '/sonar/Config'
+        remove_types '/sonar/Internal'
+      end
+      typekit.export_types '/sonar/Beam'
+
+      OroGen::Spec::Deployment.register_global_initializer(:sonar)
+
+      task_context 'Task' do
+        needs_configuration
+        property 'config', 'sonar::Config'
+        property 'gains', 'std::vector<double>'
+        property 'enabled', 'bool', 0
+        property 'speed_of_sound', '/double', 1500.0
+        property 'counts', 'int[4]'
+        property 'origin', '/std/vector</gps_base/Solution>'
+        property 'timeout', '/base/Time'
+        find_property('timeout').dynamic
+        output_port 'beam', 'sonar::Beam'
+        output_port 'frame', ro_ptr('/base/samples/frame/Frame')
+        output_port 'poses', 'std::vector<base::samples::RigidBodyState>'
+        operation('set_gain').arg('gain', 'double').returns('bool')
+        periodic(0.1).doc('every 100 ms')
+      end
+
+      simple_deployment 'sonar_test', 'sonar::Task'
+
+      deployment 'sonar_logged' do
+        task 'sonar', 'sonar::Task'
+        task 'sonar_logger', 'logger::Logger'
+      end
+    RUBY
+
+    def load_sonar
+      app = load_app(my_app(nil, 'models/orogen/sonar.orogen' => SONAR_SPEC))
+      app.using_task_library('sonar')
+      app
+    end
+
+    def test_the_types_of_a_spec_written_as_real_packages_write_them
+      load_sonar
+      task = OroGen.sonar.Task
+      types = task.property_declarations.transform_values { |p| p.type.name }
+      assert_equal({ 'config' => '/sonar/Config', 'gains' => '/std/vector</double>', 'enabled' => '/bool',
+                     'speed_of_sound' => '/double', 'counts' => '/int32_t[4]',
+                     'origin' => '/std/vector</gps_base/Solution>', 'timeout' => '/base/Time' }, types)
+      assert_equal false, task.property_declarations['enabled'].initial_value
+      assert_equal '/RTT/extras/ReadOnlyPointer</base/samples/frame/Frame>', task.find_port('frame').type.name
+      assert_equal '/std/vector</base/samples/RigidBodyState>', task.find_port('poses').type.name
+    end
+
+    def test_the_statements_of_a_spec_written_as_real_packages_write_them
+      app = load_sonar
+      assert_equal [%w[gain double]], OroGen.sonar.Task.operations['set_gain'].arguments
+      deployed = app.orogen.find_deployment('sonar_test').tasks.map { |t| [t.name, t.model.name] }
+      assert_equal [%w[sonar_test sonar::Task]], deployed
+      assert_equal 'logger::Logger', app.orogen.find_deployment('sonar_logged').tasks.last.model.name
+    end
+
+    def test_calls_on_orogen_spec_are_a_warning
+      app = load_sonar
+      reports = app.problems.map { |p| p.report(app.root).lines.first.strip }
+      assert_equal ['models/orogen/sonar.orogen:16: warning: OroGen::Spec::Deployment.register_global_initializer: ' \
+                    'not modelled by this gem, ignored in the plan'], reports
+    end
+
+    def test_a_vector_of_a_base_type_resolves_whatever_was_seen_before
+      app = load_app(my_app(nil, 'models/devices/x.rb' => <<~RUBY))
+        module MyApp
+          data_service_type('Poses') { output_port 'poses', '/std/vector</base/samples/RigidBodyState>' }
+          data_service_type('Frames') { output_port 'frame', ro_ptr('/base/samples/frame/Frame') }
+        end
+      RUBY
+      assert_predicate app.types.find('/base/samples/RigidBodyState'), :opaque?
+      assert_equal '/RTT/extras/ReadOnlyPointer</base/samples/frame/Frame>', MyApp::Frames.ports['frame'].type.name
+    end
+
+    def test_numeric_aliases_with_or_without_a_slash
+      app = load_app(my_app)
+      %w[int /int int32_t /int32_t].each { |name| assert_equal '/int32_t', app.types.find(name).name }
+      assert_equal '/std/vector</std/string>', app.types.find('/std::vector</std::string>').name
+      assert_equal '/std/vector</double>', app.types.find('/std/vector</double').name, "oroGen accepts a missing '>'"
+    end
+
+    def test_an_unknown_statement_is_still_a_located_error
+      root = my_app(nil, 'models/orogen/sonar.orogen' => "name 'sonar'\ntask_context 'Task' do\n  sampling 10\nend\n")
+      app = load_app(root)
+      error = assert_raises(SpecError) { app.using_task_library('sonar') }
+      assert_reported(error, /unknown statement 'sampling' in task_context 'Task'/,
+                      at: 'models/orogen/sonar.orogen:3', root: root)
+    end
+  end
+end

@@ -68,17 +68,20 @@ module Syskit
       @type = type
     end
 
+    # A pattern without a type (oroGen's dynamic ports of any type) matches
+    # every type.
     def match?(port_name, port_type)
-      pattern.match?(port_name) && port_type == type
+      pattern.match?(port_name) && (type.nil? || port_type == type)
     end
 
-    # The concrete port this pattern gives for +port_name+.
-    def instantiate(port_name)
-      Port.new(port_name, direction, type, dynamic: true).copy_needs_from(self)
+    # The concrete port this pattern gives for +port_name+ (of +port_type+
+    # for a pattern of any type).
+    def instantiate(port_name, port_type = type)
+      Port.new(port_name, direction, type || port_type, dynamic: true).copy_needs_from(self)
     end
 
     def to_s
-      "dynamic #{direction} port #{pattern.inspect} (#{type.name})"
+      "dynamic #{direction} port #{pattern.inspect} (#{type ? type.name : 'any type'})"
     end
   end
 
@@ -126,7 +129,7 @@ module Syskit
 
     # Accepted and recorded by oroGen, meaningless for planning.
     %i[needs_data_connection keep_last_written_value default_policy
-       triggered_on_update max_sizes].each do |name|
+       triggered_on_update max_sizes task_trigger trigger_port].each do |name|
       define_method(name) { |*_args, **_kwargs| self }
     end
   end

@@ -146,7 +146,7 @@ module Syskit
       raise no_dynamic_port(direction, name, type, location) unless pattern
 
       @created_ports = {} if @created_ports.frozen?
-      @created_ports[name] = pattern.instantiate(name)
+      @created_ports[name] = pattern.instantiate(name, type)
     end
 
     def to_s

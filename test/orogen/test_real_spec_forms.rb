@@ -6,7 +6,7 @@ module Syskit
   # The statements and type forms of real driver packages' .orogen files
   # (SPEC 12), each in a spec written for this test.
   class TestRealSpecForms < Minitest::Test
-    SONAR_SPEC = <<~RUBY
+    SONAR_SPEC = <<~'RUBY'
       name 'sonar'
       version '1.2'
       cxx_standard 'c++17'
@@ -41,6 +41,14 @@ module Syskit
         periodic(0.1).doc('every 100 ms')
       end
 
+      task_context 'Recorder' do
+        dynamic_input_port(/\w+\.\w+/, nil).needs_reliable_connection.task_trigger
+        transformer do
+          max_latency 0.1
+        end
+        find_property('transformer_max_latency').dynamic
+      end
+
       simple_deployment 'sonar_test', 'sonar::Task'
 
       deployment 'sonar_logged' do
@@ -73,6 +81,14 @@ module Syskit
       deployed = app.orogen.find_deployment('sonar_test').tasks.map { |t| [t.name, t.model.name] }
       assert_equal [%w[sonar_test sonar::Task]], deployed
       assert_equal 'logger::Logger', app.orogen.find_deployment('sonar_logged').tasks.last.model.name
+    end
+
+    def test_dynamic_ports_of_any_type_and_what_plugins_add
+      load_sonar
+      pattern = OroGen.sonar.Recorder.dynamic_ports.first
+      assert_nil pattern.type
+      assert pattern.match?('gps.pose', OroGen.sonar.Task.find_port('beam').type)
+      assert_equal 'dynamic input port /\\w+\\.\\w+/ (any type)', pattern.to_s
     end
 
     def test_calls_on_orogen_spec_are_a_warning

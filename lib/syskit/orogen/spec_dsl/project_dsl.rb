@@ -67,10 +67,12 @@ module Syskit
         DeploymentDSL::DeployedTaskDSL.new
       end
 
-      # A ROS node (oroGen's ROS integration): not modelled, with a warning.
-      def ros_node(*_args, **_options, &)
-        Syskit.app&.not_modelled('ros_node', Location.of_caller)
-        Compat::Ignored.instance
+      # oroGen's ROS integration: not modelled, with a warning.
+      %i[ros_node ros_launcher].each do |statement|
+        define_method(statement) do |*_args, **_options, &_block|
+          Syskit.app&.not_modelled(statement.to_s, Location.of_caller)
+          Compat::Ignored.instance
+        end
       end
 
       # +typekit do ... end+ or +typekit.export_types ...+ (see TypekitDSL).
@@ -84,7 +86,7 @@ module Syskit
       # Build-level statements: accepted, meaningless for planning.
       %i[version using_library using_typekit enable_namespace max_sizes cxx_standard
          export_types orogen_version default_task_context_superclass global_scope
-         define_default_deployments= type_export_policy].each do |statement|
+         define_default_deployments= type_export_policy add_definitions].each do |statement|
         define_method(statement) { |*_args, **_options, &_block| nil }
       end
     end

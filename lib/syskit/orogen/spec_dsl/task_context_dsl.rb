@@ -88,6 +88,9 @@ module Syskit
       # +find_property('timeout').dynamic+.
       def find_property(property_name)
         found = @spec.all_properties[property_name.to_s] || @spec.properties[property_name.to_s]
+        # A property an oroGen plugin adds: not modelled.
+        return Compat::Ignored.instance if !found && @plugins
+
         unless found
           raise SpecError.new("#{@spec.name} has no property '#{property_name}'",
                               location: Location.of_caller, hint: 'declare it with property before this line')
@@ -98,9 +101,17 @@ module Syskit
 
       # Code-generation statements: accepted, meaningless for planning.
       %i[implements reports extended_state_support needs_global_initializer hidden_operations
-         reconfigurable keep_last_written_value transformer stream_aligner dynamic_property
-         default_policy].each do |statement|
+         reconfigurable keep_last_written_value dynamic_property default_policy].each do |statement|
         define_method(statement) { |*_args, **_options, &_block| nil }
+      end
+
+      # oroGen plugins, which add properties and ports of their own (e.g.
+      # transformer_max_latency) that this gem does not model.
+      %i[transformer stream_aligner].each do |plugin|
+        define_method(plugin) do |*_args, **_options, &_block|
+          @plugins = true
+          nil
+        end
       end
 
       private
@@ -158,9 +169,9 @@ module Syskit
       def add_dynamic_port(pattern, direction, type)
         what = "dynamic_#{direction}_port"
         pattern = dynamic_port_pattern(pattern, what)
-        type = Arguments.given(type, statement: "#{what} #{pattern.inspect}", what: 'a type', error_class: SpecError,
-                                     example: EXAMPLES.fetch(what))
-        port = DynamicPort.new(pattern, direction, @loader.resolve_type(type, Location.of_caller))
+        # Without a type, oroGen creates ports of any type (a logger's inputs).
+        type &&= @loader.resolve_type(type, Location.of_caller)
+        port = DynamicPort.new(pattern, direction, type)
         @spec.dynamic_ports << port
         PortModifiers.new(port)
       end

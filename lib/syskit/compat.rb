@@ -3,6 +3,7 @@
 require 'syskit/compat/ignored'
 require 'syskit/compat/roby'
 require 'syskit/compat/core_extensions'
+require 'syskit/compat/task_statements'
 
 module Syskit
   # Compatibility with real Rock files, in one place: the names Rock code
@@ -14,7 +15,7 @@ module Syskit
   # - accepted, with one located "not modelled by this gem" warning each:
   #   compositions, ruby task contexts, Roby tasks, action interfaces and
   #   command libraries (the classes below), runtime-only task statements
-  #   (TaskModel::RUNTIME_STATEMENTS), profile statements about compositions
+  #   (TaskStatements::RUNTIME_STATEMENTS), profile statements about compositions
   #   (Profile::NOT_MODELLED), Roby.app's runtime settings;
   # - accepted silently: what only a running system needs (use_deployment's
   #   process options).
@@ -158,3 +159,5 @@ module Syskit
     not_modelled_class(Roby::Interface, :CommandLibrary, 'Roby command library')
   end
 end
+
+Syskit::TaskContext.extend(Syskit::Compat::TaskStatements)

@@ -2,6 +2,8 @@
 
 require 'syskit/models/bound_service'
 require 'syskit/models/port_mapper'
+require 'syskit/models/task_arguments'
+require 'syskit/models/driver_services'
 require 'syskit/models/dynamic_services'
 
 module Syskit
@@ -13,6 +15,8 @@ module Syskit
     # methods, +def configure+ defines the method the generator runs.
     module TaskModel
       include DynamicServices
+      include TaskArguments
+      include DriverServices
 
       attr_reader :spec
 
@@ -162,97 +166,11 @@ module Syskit
         end
       end
 
-      # Declares a task argument, readable in configure as a method of the
-      # task: +argument :port, default: '/dev/ttyS0'+. Profiles set
-      # arguments through compositions, which are not modelled: every
-      # task has its arguments' defaults.
-      def argument(name, default: nil, doc: nil) # rubocop:disable Lint/UnusedMethodArgument -- Syskit's signature
-        name = name.to_sym
-        if name.end_with?('_dev') || !name.match?(/\A[a-z_]\w*\z/)
-          raise DeclarationError.new("'#{name}' is not a valid argument name",
-                                     location: Location.of_caller,
-                                     hint: 'arguments are lower-case names not ending in _dev')
-        end
-
-        (@argument_defaults ||= {})[name] = default
-        define_method(name) { arguments.fetch(name) { self.class.argument_defaults[name] } }
-        name
-      end
-
-      # Default values of the arguments declared with {#argument}, inherited ones included.
-      def argument_defaults
-        inherited = superclass.respond_to?(:argument_defaults) ? superclass.argument_defaults : {}
-        inherited.merge(@argument_defaults || {})
-      end
-
-      # Statements of real extension files about what a running component
-      # does (the transformer's frames, polling, event handlers, scripts):
-      # accepted, with a "not modelled" warning each (see Compat).
-      RUNTIME_STATEMENTS = %i[transformer poll on script event terminates forward signal
-                              stream_aligner on_exception].freeze
-
-      RUNTIME_STATEMENTS.each do |statement|
-        define_method(statement) do |*_args, **_options, &_block|
-          Syskit.app&.not_modelled("#{statement} in #{name}", Location.of_caller)
-          Compat::Ignored.instance
-        end
-      end
-
       # Timing statement of real bundles; recorded, used to size buffers.
       def worstcase_processing_time(seconds = nil)
         return @worstcase_processing_time || spec&.worstcase_processing_time if seconds.nil?
 
         @worstcase_processing_time = seconds
-      end
-
-      # Services through which this task drives a device or a bus (Syskit's
-      # master driver services: slave services are served with their master).
-      def driver_services
-        cached(:driver_services) { services.values.select { |srv| srv.master? && srv.driven_device_model }.freeze }
-      end
-
-      # Enumerates {#driver_services}, as Syskit names it.
-      def each_master_driver_service(&)
-        driver_services.each(&)
-      end
-
-      # Enumerates the driver services of buses.
-      def each_com_bus_driver_service(&block)
-        return enum_for(__method__) unless block
-
-        driver_services.each { |srv| yield srv if srv.driven_device_model.is_a?(ComBusModel) }
-      end
-
-      # Enumerates the services declared +slave_of:+ +master+ (a service or
-      # its full name).
-      def each_slave_data_service(master, &block)
-        return enum_for(__method__, master) unless block
-
-        name = master.respond_to?(:full_name) ? master.full_name : master.to_s
-        slave_services.each { |srv| yield srv if srv.master.full_name == name }
-      end
-
-      # The services declared +slave_of:+ another, in declaration order.
-      def slave_services
-        cached(:slave_services) { services.values.reject(&:master?).freeze }
-      end
-
-      # Those of {#driver_services} that can drive a device of +device_model+:
-      # the service's device model must be it or provide it.
-      def driver_services_for(device_model)
-        cached(:driver_services_for, device_model) do
-          driver_services.select { |srv| srv.driven_device_model.fullfills?(device_model) }.freeze
-        end
-      end
-
-      def driven_device_models
-        driver_services.map(&:driven_device_model).uniq
-      end
-
-      # The device models a `device(ThisTask, ...)` declaration can mean
-      # (buses are declared with com_bus and their model).
-      def declarable_device_models
-        driven_device_models.grep_v(ComBusModel)
       end
 
       # The class of this model's +properties+ objects.

@@ -34,6 +34,7 @@ require 'syskit/robot/driver_index'
 require 'syskit/profile'
 require 'syskit/config/robot_config'
 require 'syskit/config/robot_dsl'
+require 'syskit/config/global_conf'
 require 'syskit/config/conf_file'
 require 'syskit/network/generator'
 require 'syskit/app'
@@ -71,13 +72,9 @@ module Syskit
     end
 
     # The robot configuration being loaded (config/robots/NAME.rb).
+    # Elsewhere, what model files may ask of it (Config::GlobalConf).
     def conf
-      config = app&.loading_robot_config
-      return config if config
-
-      raise Error.new('Syskit.conf is only available in robot configuration files',
-                      location: Location.of_caller,
-                      hint: 'declare deployments in config/robots/<robot>.rb')
+      app&.loading_robot_config || Config::GlobalConf.new
     end
   end
 end

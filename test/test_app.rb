@@ -190,8 +190,8 @@ module Syskit
     end
 
     def test_syskit_conf_outside_a_robot_configuration
-      root = my_app(nil, 'models/profiles/x.rb' => "Syskit.conf.use_deployment 'test_canbus'\n")
-      assert_reported load_problem(root), /Syskit.conf is only available in robot configuration files/,
+      root = my_app(nil, 'models/profiles/x.rb' => "Syskit.conf.sim? || Syskit.conf.use_deployment('test_canbus')\n")
+      assert_reported load_problem(root), /Syskit.conf.use_deployment is only available in robot configuration files/,
                       at: 'models/profiles/x.rb:1', hint: %r{config/robots/<robot>.rb}, root: root
     end
 

@@ -24,7 +24,8 @@ module Syskit
     # schedulers, the Gazebo bridge, Rock's Ruby types): when they are not
     # installed, requiring one is a "not modelled" warning, not an error.
     RUNTIME_LIBRARIES =
-      %r{\A(roby|orocos|rock_gazebo|rock|syskit|transformer|base|concurrent|vizkit|typelib|utilrb)(/|\z)}
+      %r{\A(roby|orocos|rock_gazebo|rock|syskit|transformer|base|concurrent|vizkit|typelib|utilrb|eigen|fipa-message)
+         (/|\z)}x
 
     def self.runtime_library?(name)
       RUNTIME_LIBRARIES.match?(name.to_s)
@@ -32,7 +33,7 @@ module Syskit
 
     # The top-level constants an active app installs besides OroGen and Types.
     def self.constants
-      { Robot: Config::RobotDSL, Roby: Roby, Conf: Conf, Typelib: Typelib }
+      { Robot: Config::RobotDSL, Roby: Roby, Conf: Conf, Typelib: Typelib, Eigen: Eigen }
     end
 
     # Records that a model of kind +kind+ (a composition, ...) was defined,
@@ -69,8 +70,26 @@ module Syskit
         Ignored.instance
       end
 
-      def respond_to_missing?(name, _include_private = false)
-        !Ignored::CONVERSIONS.include?(name)
+      # Calls are accepted, but nothing is advertised: code that asks
+      # (respond_to?) gets the truth.
+      def respond_to_missing?(_name, _include_private = false)
+        false
+      end
+
+      # A constant the body names that nothing defines (an old name, a
+      # model of a library that is not here): the body goes on.
+      def const_missing(_name)
+        IgnoredNamespace
+      end
+    end
+
+    # What a not-modelled body gets for a constant nothing defines: any
+    # constant or call on it is accepted too.
+    module IgnoredNamespace
+      extend NotModelledModel
+
+      def self.to_s
+        '(not modelled)'
       end
     end
 
@@ -148,6 +167,13 @@ module Syskit
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
     not_modelled_class(Syskit, :RubyTaskContext, 'ruby task context')
     not_modelled_class(Roby, :Task, 'Roby task')
+    # Roby's task library (Roby::Tasks::Simple, ...).
+    Roby.const_set(:Tasks, Module.new)
+    %i[Simple Timeout Virtual Group Parallel Sequence ExternalProcess Thread].each do |name|
+      not_modelled_class(Roby::Tasks, name, 'Roby task')
+    end
+    # Rock's Ruby bindings of Eigen (Eigen::Vector3.new(1, 2, 3)).
+    Eigen = not_modelled_namespace('Eigen', %i[Vector3 Quaternion Isometry3 AngleAxis MatrixX VectorX Affine3])
     Roby.const_set(:Schedulers, Module.new)
     not_modelled_class(Roby::Schedulers, :Temporal, 'Roby scheduler')
     # Roby's configuration object (+Conf.gazebo.use_sim_time = true+).

@@ -92,6 +92,15 @@ module Syskit
       @port = port
     end
 
+    # The port's own readers, for code that looked the port up.
+    def name
+      @port.respond_to?(:name) ? @port.name : @port.pattern
+    end
+
+    def type
+      @port.type
+    end
+
     def multiplexes
       @port.multiplexes = true
       self
@@ -129,7 +138,7 @@ module Syskit
 
     # Accepted and recorded by oroGen, meaningless for planning.
     %i[needs_data_connection keep_last_written_value default_policy
-       triggered_on_update max_sizes task_trigger trigger_port].each do |name|
+       triggered_on_update max_sizes task_trigger trigger_port triggered_once_per_update].each do |name|
       define_method(name) { |*_args, **_kwargs| self }
     end
   end

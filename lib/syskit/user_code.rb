@@ -108,9 +108,25 @@ module Syskit
     def explain(exception)
       receiver = receiver_of(exception)
       return receiver.explain_missing(exception.name.to_s) if exception.name && receiver.respond_to?(:explain_missing)
+      return not_a_task_model(receiver) if made_by_a_class_statement?(receiver)
 
       message = original_message(exception).sub(/ for #<[^>]*>\z/, '')
       [message, suggestion(exception, receiver) || missing_hint(exception)]
+    end
+
+    # +class OroGen::Lib::Name ... end+ for a task the library does not
+    # have makes a plain class in its namespace, which has none of a task
+    # model's statements.
+    def made_by_a_class_statement?(receiver)
+      receiver.is_a?(Class) && receiver.name.to_s.start_with?('OroGen::') && !(receiver < Syskit::TaskContext)
+    end
+
+    def not_a_task_model(klass)
+      namespace = Object.const_get(klass.name.split('::')[0..-2].join('::'))
+      tasks = namespace.respond_to?(:names) ? namespace.names.join(', ') : 'none'
+      ["#{klass.name} is not a task model: the class statement made a new class, as #{namespace} has no " \
+       "task model #{klass.name.split('::').last}",
+       "its task models are #{tasks}; check the name against the library's .orogen file"]
     end
 
     # Ruby's own message, without the code excerpt error_highlight adds.

@@ -166,6 +166,39 @@ module Syskit
       assert_includes load_app(for_robot).bundle_roots, other
     end
 
+    def test_what_rock_model_files_call_loads_with_warnings
+      root = my_app(nil, 'models/orogen/imu.rb' => <<~RUBY, 'models/compositions/stack.rb' => <<~RUBY2)
+        class OroGen::Imu::Task
+          driver_for MyApp::Devices::IMU, as: 'imu'
+          find_output_port('samples').triggered_once_per_update
+          argument :origin, default: from(:planned_task).origin.of_type(Eigen::Vector3)
+        end
+      RUBY
+        using_task_library 'imu'
+        module MyApp
+          class Stack < Syskit::Composition
+            add OldName::Task, as: 'filter'
+            ok = Syskit::Models.is_model?(Stack) && Syskit::Models.is_model?(OroGen.imu.Task) && Syskit.conf.sim? == false
+            raise 'Rock helpers answer wrongly' unless ok
+          end
+          class Idle < Roby::Tasks::Simple; end
+        end
+      RUBY2
+      app = load_app(root)
+      app.using_task_library('imu')
+      assert_empty app.errors
+      assert_equal(['from in imu::Task', 'composition MyApp::Stack', 'Roby task MyApp::Idle'],
+                   app.problems.map { |p| p.message.sub(/: not modelled.*/, '') })
+    end
+
+    def test_a_class_statement_for_a_task_the_library_does_not_have
+      root = my_app(nil, 'models/orogen/imu.rb' => "class OroGen::Imu::Taks\n  driver_for MyApp::Devices::IMU\nend\n")
+      error = load_problem(root)
+      assert_match(/OroGen::Imu::Taks is not a task model: the class statement made a new class/, error.message)
+      assert_equal 'models/orogen/imu.rb:2', error.location.to_s(root)
+      assert_match(/its task models are Task/, error.hint)
+    end
+
     private
 
     def with_env(vars)

@@ -7,7 +7,7 @@ module Syskit
     # accepted in task model bodies, with a "not modelled" warning each.
     module TaskStatements
       RUNTIME_STATEMENTS = %i[transformer poll on script event terminates forward signal
-                              stream_aligner on_exception].freeze
+                              stream_aligner on_exception from].freeze
 
       RUNTIME_STATEMENTS.each do |statement|
         define_method(statement) do |*_args, **_options, &_block|

@@ -13,6 +13,9 @@ module Syskit
     # does for any module (+Device = DeviceModel.new+ is then called Device).
     class DataServiceModel < Module
       attr_reader :ports, :parents, :declared_at
+      # MetaRuby's mark of the root of a hierarchy of models, which custom
+      # model classes of Rock's bundles set; recorded.
+      attr_accessor :root
       attr_accessor :doc
 
       # The word used for this kind of model in messages.
@@ -247,6 +250,13 @@ module Syskit
           location: location, hint: 'only devices provide devices: declare it with device_type'
         )
       end
+    end
+
+    # Syskit's +Syskit::Models.is_model?(object)+: whether +object+ is a
+    # model (a service, device or bus model, or a task model).
+    def self.is_model?(object) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+      object.is_a?(DataServiceModel) || (object.is_a?(Class) && object < Syskit::TaskContext) ||
+        (object.is_a?(Module) && object.singleton_class.include?(Compat::NotModelledModel))
     end
 
     # The model of type names in declarations: a Types::Type, or a name the

@@ -71,6 +71,19 @@ module Syskit
         ports[name.to_s]
       end
 
+      # Syskit's port lookups, with oroGen's port modifiers
+      # (+find_output_port('pose').triggered_once_per_update+); nil when
+      # there is no such port.
+      def find_output_port(name)
+        port = find_port(name)
+        PortModifiers.new(port) if port&.output?
+      end
+
+      def find_input_port(name)
+        port = find_port(name)
+        PortModifiers.new(port) if port&.input?
+      end
+
       # Static ports of +direction+ and +type+, sorted by name.
       def static_ports_of(direction, type)
         cached(direction, type) do

@@ -59,7 +59,7 @@ module Syskit
     def test_an_unknown_robot_configuration
       _, err, status = run_cli('plan', '--app', EXAMPLE, '--robot', 'sim')
       assert_equal 1, status
-      assert_match(%r{\Aconfig/robots/sim.rb:0: no configuration for robot 'sim'}, err)
+      assert_match(%r{\Aconfig/robots/sim.rb: no configuration for robot 'sim'}, err)
     end
 
     def test_check_passes_on_the_example_app

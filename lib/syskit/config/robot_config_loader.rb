@@ -36,8 +36,10 @@ module Syskit
       end
 
       def load(name)
-        path = File.join(dir, "#{name}.rb")
         # A name is a file of config/robots/, never a path leading elsewhere.
+        raise not_a_name(name) if name.include?('/') || name.start_with?('.')
+
+        path = File.join(dir, "#{name}.rb")
         raise missing(name, path) unless names.include?(name)
 
         config = RobotConfig.new(@app, name)
@@ -79,10 +81,17 @@ module Syskit
         @app.not_modelled("Robot.#{entry.phase} from this line on (#{e.message})", e.location)
       end
 
+      def not_a_name(name)
+        FileLoadError.new(
+          "'#{name}' is not a robot name: robots are the files of config/robots/ (#{names.join(', ')})",
+          location: Location.new(dir, nil), hint: 'give the name of a file of config/robots/, without .rb'
+        )
+      end
+
       def missing(name, path)
         FileLoadError.new(
           "no configuration for robot '#{name}'#{Naming.did_you_mean(name, names)}",
-          location: Location.new(path, 0),
+          location: Location.new(path, nil),
           hint: "create config/robots/#{name}.rb with Syskit.conf.use_deployment statements"
         )
       end

@@ -104,10 +104,22 @@ module Syskit
 
     def test_an_app_with_problems_is_reported_before_its_tests_run
       app = write_app(BROKEN_PROFILE.merge('models/devices/imu.rb' => "device_type 'imu'\n"), name: 'my_app')
+      # The test file describes a profile the broken files left undefined:
+      # the app's problems come before the test file's.
       _out, err, status = syskit_test(app)
       refute status.success?
-      assert_match(%r{models/devices/imu\.rb:1: 'imu' is not a valid name for a device}, err)
-      assert_match(/has 2 problem\(s\), fix them first/, err)
+      assert_match(%r{\Amodels/devices/imu\.rb:1: 'imu' is not a valid name for a device}, err)
+      assert_match(%r{^test/profiles/test_base.rb:5: uninitialized constant MyApp::Profiles::Base}, err)
+    end
+
+    def test_an_app_with_problems_runs_the_tests_that_do_not_depend_on_them
+      deploy = "Syskit.conf.use_deployment OroGen.imu.Task => 'imu'\n"
+      files = BROKEN_PROFILE.merge('models/devices/other.rb' => "device_type 'other'\n", 'config/robots/default.rb' => deploy)
+      out, _err, status = syskit_test(write_app(files, name: 'my_app'))
+      refute status.success?
+      assert_match(/^MyApp \(loading\)#test_the_app_loads_without_problems/, out)
+      assert_match(%r{^models/devices/other\.rb:1: 'other' is not a valid name for a device}, out)
+      assert_match(/^3 runs, \d+ assertions, 1 failures, 0 errors/, out)
     end
   end
 end

@@ -64,10 +64,12 @@ module Syskit
 
       # The one place where any statement is accepted: the body of a model
       # kind that this gem does not model. (Modelled code never comes here.)
+      # What a statement returns is itself a not-modelled model, so that it
+      # may be chained, or subclassed (+class X < Generator.for(type)+).
       def method_missing(name, *_args, **_options, &)
         return super if Ignored::CONVERSIONS.include?(name)
 
-        Ignored.instance
+        IgnoredNamespace
       end
 
       # Calls are accepted, but nothing is advertised: code that asks
@@ -83,15 +85,13 @@ module Syskit
       end
     end
 
-    # What a not-modelled body gets for a constant nothing defines: any
-    # constant or call on it is accepted too.
-    module IgnoredNamespace
-      extend NotModelledModel
-
-      def self.to_s
-        '(not modelled)'
-      end
-    end
+    # What a not-modelled body gets for a constant nothing defines, or for
+    # a statement it makes: any constant or call on it is accepted too, and
+    # a class made from it is not modelled either.
+    IgnoredNamespace = Class.new
+    IgnoredNamespace.extend(NotModelledModel)
+    IgnoredNamespace.instance_variable_set(:@not_modelled_kind, 'model made from a statement that is not modelled')
+    IgnoredNamespace.define_singleton_method(:to_s) { '(not modelled)' }
 
     # oroGen's own classes, which specs sometimes call at their top level
     # (+OroGen::Spec::Deployment.register_global_initializer(:x)+): any call

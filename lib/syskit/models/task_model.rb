@@ -4,6 +4,7 @@ require 'syskit/models/bound_service'
 require 'syskit/models/port_mapper'
 require 'syskit/models/task_arguments'
 require 'syskit/models/driver_services'
+require 'syskit/models/task_requirements'
 require 'syskit/models/dynamic_services'
 
 module Syskit
@@ -17,6 +18,7 @@ module Syskit
       include DynamicServices
       include TaskArguments
       include DriverServices
+      include TaskRequirementStatements
 
       attr_reader :spec
 

@@ -34,7 +34,9 @@ module Syskit
                                  hint: "declare driver_for #{device.model} in #{model.name}'s extension")
         end
 
-        task = model.new(services.to_h { |srv| [srv.argument_name, device] })
+        arguments = services.to_h { |srv| [srv.argument_name, device] }
+        arguments = requirement.arguments.merge(arguments) unless requirement.arguments.empty?
+        task = model.new(arguments)
         task.conf = requirement.conf
         create_slave_ports(task, device)
         @context.add_task(task, device, requirement)

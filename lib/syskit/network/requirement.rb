@@ -6,13 +6,17 @@ module Syskit
     # with other configuration sections or deployment hints than the
     # device's own (+Base.gps_dev.with_conf('default', 'rtk')+ returns a copy).
     class Requirement
-      attr_reader :device, :profile
+      attr_reader :device, :profile, :arguments
 
-      def initialize(device, profile = nil, conf: nil, deployment_hints: nil)
+      NO_ARGUMENTS = {}.freeze
+
+      # +arguments+: task arguments for the driver (tests' with_arguments).
+      def initialize(device, profile = nil, conf: nil, deployment_hints: nil, arguments: NO_ARGUMENTS)
         @device = device
         @profile = profile
         @conf = conf
         @deployment_hints = deployment_hints
+        @arguments = arguments
       end
 
       def conf

@@ -99,6 +99,8 @@ module Syskit
         require path
       rescue Syskit::Error, ScriptError, StandardError => e
         error = UserCode.translate(e, path: path, root: Test.app.root)
+        # The app's own problems come first: they are often the cause.
+        Test.app.errors.each { |problem| warn problem.report(Dir.pwd) }
         warn error.report(Dir.pwd)
         exit 1
       end

@@ -56,12 +56,8 @@ module Syskit
       # Given a task model instead, its devices are stubbed first (see
       # TaskAssertions#is_configurable).
       def syskit_stub_deploy_and_configure(device)
-        if device.is_a?(Class) && device < TaskContext
-          devices = syskit_stub_driven_devices(device)
-          return syskit_configure_alone(device) if devices.empty?
-
-          return devices.map { |dev| syskit_stub_deploy_and_configure(dev) }.first
-        end
+        device = Models::TaskRequirements.new(device) if device.is_a?(Class) && device < TaskContext
+        return syskit_stub_requirements_and_configure(device) if device.is_a?(Models::TaskRequirements)
 
         # Anything else than a device is refused by the generator, with the reason.
         requirement = device.is_a?(Robot::Device) ? Network::Requirement.new(device) : device

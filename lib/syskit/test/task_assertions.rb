@@ -41,7 +41,7 @@ module Syskit
       # Stub devices for the services through which +model+ drives devices
       # and buses (one each), or none when it drives nothing.
       def syskit_stub_driven_devices(model)
-        model.driver_services.reject { |srv| srv.respond_to?(:master) && srv.master }.map do |srv|
+        model.driver_services.map do |srv|
           driven = srv.driven_device_model
           if driven.is_a?(Models::ComBusModel)
             syskit_stub_com_bus(driven, driver: model)
@@ -51,10 +51,24 @@ module Syskit
         end
       end
 
-      # Configures a task of +model+ made for no device.
-      def syskit_configure_alone(model)
+      # A task model, or its requirements (+with_conf+, +with_arguments+):
+      # its devices stubbed, deployed and configured.
+      def syskit_stub_requirements_and_configure(requirements)
+        devices = syskit_stub_driven_devices(requirements.model)
+        return syskit_configure_alone(requirements) if devices.empty?
+
+        devices.map do |dev|
+          requirement = Network::Requirement.new(dev, conf: requirements.conf, arguments: requirements.arguments)
+          syskit_stub_deploy_and_configure(requirement)
+        end.first
+      end
+
+      # Configures a task of +requirements+' model made for no device.
+      def syskit_configure_alone(requirements)
+        model = requirements.model
         context = Network::Context.new(app: Test.app, requirements: [], stub_deployments: true)
-        task = model.new
+        task = model.new(requirements.arguments.dup)
+        task.conf = requirements.conf if requirements.conf
         deployment = Orogen::DeploymentSpec.new("stub_#{model.name.tr(':', '_')}")
         task.deployed_task = deployment.add_task("stub_#{model.name.split('::').last.downcase}", model)
         Network::Configure.new(context).configure(task)

@@ -114,7 +114,8 @@ module Syskit
 
     def test_an_app_with_problems_runs_the_tests_that_do_not_depend_on_them
       deploy = "Syskit.conf.use_deployment OroGen.imu.Task => 'imu'\n"
-      files = BROKEN_PROFILE.merge('models/devices/other.rb' => "device_type 'other'\n", 'config/robots/default.rb' => deploy)
+      files = BROKEN_PROFILE.merge('models/devices/other.rb' => "device_type 'other'\n",
+                                   'config/robots/default.rb' => deploy)
       out, _err, status = syskit_test(write_app(files, name: 'my_app'))
       refute status.success?
       assert_match(/^MyApp \(loading\)#test_the_app_loads_without_problems/, out)

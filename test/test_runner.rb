@@ -62,6 +62,22 @@ module Syskit
         end
     end
 
+    def test_a_file_that_cannot_load_fails_on_its_own_and_the_others_run
+      app = write_app({ 'config/syskit.yml' => "name: Plain\n",
+                        'models/compositions/follow.rb' => "module Plain\n  class Follow < Syskit::Composition\n  end\nend\n",
+                        'test/test_gem.rb' => "require 'a_gem_that_is_not_installed'\n",
+                        'test/test_follow.rb' => "module Plain\n  describe Follow do\n    it('runs') { flunk }\n  end\nend\n",
+                        'test/test_class.rb' => "class TestPlain < Syskit::Test::ComponentTest\n  " \
+                                                "def test_it\n    assert true\n  end\nend\n" })
+      out, err, status = syskit_test('-v', chdir: app)
+      assert_equal 1, status.exitstatus
+      assert_match(%r{^test/test_gem.rb:1: LoadError: cannot load such file -- a_gem_that_is_not_installed$}, err)
+      assert_match(%r{^test/test_gem.rb \(loading\)#test_the_file_loads = [\d.]+ s = F$}, out)
+      assert_match(/^Plain::Follow is about what this gem does not model \(compositions, Roby\): skipped$/, out)
+      assert_match(/^TestPlain#test_it = [\d.]+ s = \.$/, out)
+      assert_match(/^3 runs, \d+ assertions, 1 failures, 0 errors, 1 skips$/, out)
+    end
+
     def test_a_failure_is_reported_at_the_line_of_the_test_and_sets_the_exit_status
       root = my_app("device(Devices::IMU, as: 'imu')\n",
                     'config/robots/default.rb' => "# nothing deployed\n",

@@ -31,6 +31,12 @@ module Syskit
       extend RuntimeOnly::ClassMethods
     end
 
+    # Syskit's test base classes, for tests written as classes
+    # (+class TestX < Syskit::Test::ComponentTest+).
+    %i[ComponentTest TaskContextTest RubyTaskContextTest ProfileTest ActionInterfaceTest].each do |name|
+      const_set(name, Class.new(Spec))
+    end
+
     # Failures are reported at the test's line: frames of minitest and of
     # this gem are left out of their backtraces.
     class BacktraceFilter < Minitest::BacktraceFilter

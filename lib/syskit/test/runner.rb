@@ -93,16 +93,22 @@ module Syskit
       end
 
       # Loads a test file; what it raises while being loaded (a syntax
-      # error, a typo at its top level) is reported at its line, and the
-      # tests do not run.
+      # error, a typo at its top level, a library that is not installed) is
+      # reported at its line, on stderr and as a failing test of its own,
+      # and the other files' tests run.
       def self.load_test_file(path)
         require path
       rescue Syskit::Error, ScriptError, StandardError => e
         error = UserCode.translate(e, path: path, root: Test.app.root)
         # The app's own problems come first: they are often the cause.
-        Test.app.errors.each { |problem| warn problem.report(Dir.pwd) }
-        warn error.report(Dir.pwd)
-        exit 1
+        Test.app.errors.each { |problem| warn problem.report(Dir.pwd) } unless @app_problems_shown
+        @app_problems_shown = true
+        report = error.report(Dir.pwd)
+        warn report
+        Class.new(Minitest::Test) do
+          define_singleton_method(:name) { "#{Location.new(path, nil).relative_path(Dir.pwd)} (loading)" }
+          define_method(:test_the_file_loads) { flunk report }
+        end
       end
     end
   end

@@ -23,6 +23,26 @@ module Syskit
         define_method(name) { |*_args, **_options, &_block| skip("#{name} #{REASON}") }
       end
 
+      # Test helpers of Syskit about models this gem does not model
+      # (compositions, made-up types): the test is skipped, saying so.
+      NOT_MODELLED_HELPERS = %i[stub_type clear_newly_defined_models syskit_stub_requirements
+                                syskit_stub_network syskit_generate_network].freeze
+      NOT_MODELLED = 'is about what this gem does not model (compositions, Roby): skipped'
+
+      NOT_MODELLED_HELPERS.each do |name|
+        define_method(name) { |*_args, **_options, &_block| skip("#{name} #{NOT_MODELLED}") }
+      end
+
+      # The tests of a composition, a Roby task or an action interface are
+      # skipped: these are not modelled.
+      def before_setup
+        super
+        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
+        return unless desc.is_a?(Module) && desc.singleton_class.include?(Compat::NotModelledModel)
+
+        skip("#{desc} #{NOT_MODELLED}")
+      end
+
       # Mocks (the flexmock gem) stand for runtime objects in Syskit's tests.
       def flexmock(*)
         skip("flexmock #{REASON}")

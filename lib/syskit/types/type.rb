@@ -227,6 +227,12 @@ module Syskit
         true
       end
 
+      # A value of an opaque type is plain data: +Types.base.Pose.new(position:
+      # [1, 2, 3])+ is the hash of its fields.
+      def new(**fields)
+        from_ruby(fields.transform_keys(&:to_s))
+      end
+
       def from_ruby(value)
         case value
         when Hash then value.to_h { |k, v| [from_ruby(k), from_ruby(v)] }

@@ -63,8 +63,8 @@ module Syskit
     end
 
     def test_a_file_that_cannot_load_fails_on_its_own_and_the_others_run
-      app = write_app({ 'config/syskit.yml' => "name: Plain\n",
-                        'models/compositions/follow.rb' => "module Plain; class Follow < Syskit::Composition; end; end\n",
+      composition = "module Plain; class Follow < Syskit::Composition; end; end\n"
+      app = write_app({ 'config/syskit.yml' => "name: Plain\n", 'models/compositions/follow.rb' => composition,
                         'test/test_gem.rb' => "require 'a_gem_that_is_not_installed'\n",
                         'test/test_follow.rb' => "module Plain\n  describe(Follow) { it('runs') { flunk } }\nend\n",
                         'test/test_class.rb' => "class TestPlain < Syskit::Test::ComponentTest\n  " \

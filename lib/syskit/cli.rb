@@ -47,6 +47,7 @@ module Syskit
         profile = find_profile(app, profile_name)
         result = Network::Generator.plan_profile(app, profile, actions: actions, robot: options[:robot])
         RENDERERS.fetch(options[:format]).write(result.plan, $stdout)
+        note_warnings(app)
       end
     end
 
@@ -95,6 +96,13 @@ module Syskit
     end
 
     private
+
+    # Warnings do not stop a plan (constructs of Rock files this gem does
+    # not model, ...): one line on stderr says there are some.
+    def note_warnings(app)
+      count = app.problems.grep(Warning).size
+      warn "#{count} warning#{'s' unless count == 1} while loading (syskit check lists them)" if count.positive?
+    end
 
     def print_check(app, report)
       return print_check_json(app, report) if options[:format] == 'json'

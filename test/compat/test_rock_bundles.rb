@@ -62,6 +62,12 @@ module Syskit
       assert_match(/^    operations  watch\("motor_temp", 528, 2047\)\n {16}watch\("battery_temp", 529, 2047\)$/, out)
     end
 
+    def test_plan_says_in_one_line_that_there_are_warnings
+      _, err, status = run_cli('plan', '--app', ROVER)
+      assert_equal 0, status
+      assert_equal "10 warnings while loading (syskit check lists them)\n", err
+    end
+
     def test_a_robot_configuration_that_requires_another_one
       plan = plan_json('--robot', 'sim')
       assert_equal 'sim', plan['robot']

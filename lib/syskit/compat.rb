@@ -4,6 +4,7 @@ require 'syskit/compat/ignored'
 require 'syskit/compat/roby'
 require 'syskit/compat/core_extensions'
 require 'syskit/compat/task_statements'
+require 'syskit/compat/conf'
 
 module Syskit
   # Compatibility with real Rock files, in one place: the names Rock code
@@ -33,7 +34,7 @@ module Syskit
 
     # The top-level constants an active app installs besides OroGen and Types.
     def self.constants
-      { Robot: Config::RobotDSL, Roby: Roby, Conf: Conf, Typelib: Typelib, Eigen: Eigen }
+      { Robot: Config::RobotDSL, Roby: Roby, Conf: ConfStruct.new, Typelib: Typelib, Eigen: Eigen }
     end
 
     # Records that a model of kind +kind+ (a composition, ...) was defined,
@@ -176,9 +177,6 @@ module Syskit
     Eigen = not_modelled_namespace('Eigen', %i[Vector3 Quaternion Isometry3 AngleAxis MatrixX VectorX Affine3])
     Roby.const_set(:Schedulers, Module.new)
     not_modelled_class(Roby::Schedulers, :Temporal, 'Roby scheduler')
-    # Roby's configuration object (+Conf.gazebo.use_sim_time = true+).
-    Conf = Module.new.extend(NotModelledCalls)
-    def Conf.to_s = 'Conf'
     Roby.const_set(:Actions, Module.new)
     not_modelled_class(Roby::Actions, :Interface, 'action interface')
     Roby.const_set(:Interface, Module.new)

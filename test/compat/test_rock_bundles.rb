@@ -32,11 +32,10 @@ module Syskit
         'models/profiles/base.rb:26: warning: define in profile Rover::Profiles::Base',
         "config/robots/default.rb:4: warning: the Ruby library 'roby/schedulers/temporal' (part of Rock's runtime)",
         'config/robots/default.rb:5: warning: Roby.scheduler',
-        'config/robots/default.rb:20: warning: Conf.rover',
         'config/robots/sim.rb:5: warning: Syskit.conf.use_gazebo_world',
         'config/robots/sim.rb:6: warning: Syskit.conf.use_ruby_tasks'
       ], warnings
-      assert_match(/^Rover: 0 error\(s\), 12 warning\(s\)$/, out)
+      assert_match(/^Rover: 0 error\(s\), 11 warning\(s\)$/, out)
     end
 
     def test_the_plan_of_a_rock_style_robot
@@ -65,7 +64,16 @@ module Syskit
     def test_plan_says_in_one_line_that_there_are_warnings
       _, err, status = run_cli('plan', '--app', ROVER)
       assert_equal 0, status
-      assert_equal "10 warnings while loading (syskit check lists them)\n", err
+      assert_equal "9 warnings while loading (syskit check lists them)\n", err
+    end
+
+    # Roby's Conf: what robot configurations write, configure methods read.
+    def test_conf_keeps_the_settings_written_to_it
+      load_app(ROVER, robots: ['default'])
+      assert_equal({ 'rover' => { 'max_speed' => 1.5 } }, ::Conf.to_h)
+      assert_equal 1.5, ::Conf.rover.max_speed
+      assert ::Conf.rover.max_speed?
+      refute ::Conf.gazebo.use_sim_time?, 'a setting never written is false'
     end
 
     def test_a_robot_configuration_that_requires_another_one

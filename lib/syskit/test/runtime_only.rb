@@ -35,12 +35,14 @@ module Syskit
 
       # The tests of a composition, a Roby task or an action interface are
       # skipped: these are not modelled.
+      # Nested describe blocks count: their classes are subclasses of the
+      # outer ones.
       def before_setup
         super
-        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
-        return unless desc.is_a?(Module) && desc.singleton_class.include?(Compat::NotModelledModel)
-
-        skip("#{desc} #{NOT_MODELLED}")
+        model = self.class.ancestors.grep(Class).filter_map { |k| k.desc if k.respond_to?(:desc) }.find do |desc|
+          desc.is_a?(Module) && desc.singleton_class.include?(Compat::NotModelledModel)
+        end
+        skip("#{model} #{NOT_MODELLED}") if model
       end
 
       # Mocks (the flexmock gem) stand for runtime objects in Syskit's tests.

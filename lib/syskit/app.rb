@@ -24,12 +24,36 @@ module Syskit
 
     attr_reader :root, :name, :acronyms, :types, :orogen, :profiles, :problems, :bundles
 
-    # The app containing +dir+: the closest parent with a models/ directory
-    # or a config/syskit.yml file.
+    # Whether +dir+ is an app: it has a models/ directory, a
+    # config/syskit.yml, or is a Rock bundle (config/app.yml).
+    def self.root?(dir)
+      File.directory?(File.join(dir, 'models')) || File.file?(File.join(dir, CONFIG_FILE)) ||
+        File.file?(File.join(dir, 'config', 'app.yml'))
+    end
+
+    # +dir+ given as an app (--app): its root, or an error saying what it
+    # is instead (nothing, a file, a directory inside an app).
+    def self.check_root(dir)
+      path = File.expand_path(dir)
+      return path if File.directory?(path) && root?(path)
+
+      inside = File.directory?(path) && find_root(path)
+      what = if !File.exist?(path) then 'there is no such directory'
+             elsif !File.directory?(path) then 'it is a file, not a directory'
+             elsif inside then "it is inside the app at #{inside}"
+             else 'it is not a Syskit app'
+             end
+      raise FileLoadError.new("'#{dir}' is not an app: #{what}",
+                              hint: inside ? "give --app #{inside}" : APP_HINT)
+    end
+
+    APP_HINT = 'an app has a models/ directory or a config/syskit.yml; create one with: syskit gen app NAME'
+
+    # The app containing +dir+: the closest parent that is one (see root?).
     def self.find_root(dir = Dir.pwd)
       dir = File.expand_path(dir)
       loop do
-        return dir if File.directory?(File.join(dir, 'models')) || File.file?(File.join(dir, CONFIG_FILE))
+        return dir if root?(dir)
 
         parent = File.dirname(dir)
         return nil if parent == dir

@@ -7,6 +7,7 @@ require 'syskit/render/text'
 require 'syskit/render/json'
 require 'syskit/render/dot'
 require 'syskit/cli/support'
+require 'syskit/cli/command_line'
 require 'syskit/test/runner'
 
 module Syskit
@@ -19,11 +20,46 @@ module Syskit
       true
     end
 
+    # Usage lines say syskit, however the command was started.
+    def self.basename
+      'syskit'
+    end
+
+    # The command line as users type it (see CommandLine), errors as
+    # syskit prints them (see Shell).
+    def self.start(given_args = ARGV, config = {})
+      config[:shell] ||= Shell.new
+      super(CommandLine.normalize(given_args), config)
+    end
+
+    # Options every command takes, said once under the list of commands.
+    COMMON_OPTIONS = <<~TEXT
+      Every command takes --help (-h), and --trace: errors with Ruby's backtrace.
+      syskit --version (-v) prints the version.
+    TEXT
+
+    # `syskit help`: the commands, then the options every command takes.
+    def self.help(shell, subcommand = false) # rubocop:disable Style/OptionalBooleanParameter -- Thor's signature
+      list = printable_commands(true, subcommand)
+      Thor::Util.thor_classes_in(self).each { |klass| list += klass.printable_commands(false) }
+      list.reject! { |usage, _| usage.start_with?("#{basename} tree") } # Thor's own, not syskit's
+      shell.say 'Commands:'
+      shell.print_table(list.sort_by(&:first), indent: 2, truncate: true)
+      shell.say
+      shell.say COMMON_OPTIONS
+    end
+
     include Support
 
-    class_option :trace, type: :boolean, default: false, desc: 'show the backtrace of errors'
+    # Options are checked: a typo is an error, not a profile name. `syskit
+    # test` hands the options it does not know to minitest.
+    check_unknown_options!(except: %i[test])
 
-    desc 'version', 'print the version'
+    # --trace is accepted everywhere; the help says so once, in each
+    # command's description, rather than as Thor's --[no-,skip-]trace.
+    class_option :trace, type: :boolean, default: false, hide: true, desc: 'show the backtrace of errors'
+
+    desc 'version', 'print the version (also: syskit --version, syskit -v)'
     def version
       puts "syskit #{Syskit::VERSION}"
     end
@@ -88,7 +124,7 @@ module Syskit
       status = 0
       reporting_errors(-> { Dir.pwd }) do
         parsed = Test::Runner.parse(args)
-        root = parsed.app ? File.expand_path(parsed.app) : app_root
+        root = parsed.app ? App.check_root(parsed.app) : app_root
         files = Test::Runner.test_files(root, parsed.files)
         status = Test::Runner.spawn(root, files, parsed.minitest)
       end

@@ -13,7 +13,13 @@ module Syskit
         true
       end
 
-      class_option :trace, type: :boolean, default: false, desc: 'show the backtrace of errors'
+      def self.basename
+        'syskit'
+      end
+
+      check_unknown_options!
+
+      class_option :trace, type: :boolean, default: false, hide: true, desc: 'show the backtrace of errors'
       class_option :app, type: :string, desc: 'the app directory'
       class_option :robot, type: :string, default: 'default', desc: 'the robot configuration (config/robots/NAME.rb)'
       class_option :bus, type: :string, desc: 'the bus device of the plan (default: the only bus with devices)'

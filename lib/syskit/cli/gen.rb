@@ -31,6 +31,12 @@ module Syskit
         true
       end
 
+      def self.basename
+        'syskit'
+      end
+
+      check_unknown_options!
+
       # `syskit gen --help`: the commands, then examples of each.
       def self.help(shell, subcommand = false) # rubocop:disable Style/OptionalBooleanParameter -- Thor's signature
         super
@@ -40,7 +46,7 @@ module Syskit
 
       # No default: the main command parses --trace first, and a default here
       # would override what it found.
-      class_option :trace, type: :boolean, desc: 'show the backtrace of errors'
+      class_option :trace, type: :boolean, hide: true, desc: 'show the backtrace of errors'
       class_option :force, type: :boolean, default: false, desc: 'overwrite files that exist'
       class_option :dry_run, type: :boolean, default: false, desc: 'list the files that would be written, write nothing'
 

@@ -38,7 +38,7 @@ module Syskit
       # unloaded afterwards.
       def with_app(load: true, robots: ['default'])
         app = nil
-        reporting_errors(-> { app&.root || app_root }) do
+        reporting_errors(-> { app&.root }) do
           app = App.new(app_root)
           begin
             load ? app.load!(robots: robots) : app.activate
@@ -49,13 +49,17 @@ module Syskit
         end
       end
 
-      # --app, else the app containing the current directory, else the
-      # bundled example app.
+      # --app (which must be an app), else the app containing the current
+      # directory, else the example app of a checkout of the gem (an
+      # installed gem has none).
       def app_root
-        return File.expand_path(options[:app]) if options[:app]
+        return App.check_root(options[:app]) if options[:app]
 
         found = App.find_root(Dir.pwd)
-        found && found != GEM_ROOT ? found : EXAMPLE_APP
+        return found if found && !found.start_with?("#{GEM_ROOT}/bundles/")
+        return EXAMPLE_APP if File.directory?(EXAMPLE_APP)
+
+        raise Error.new("#{Dir.pwd} is not in a Syskit app", hint: "pass --app DIR, or cd into an app; #{App::APP_HINT}")
       end
 
       # The profile called +name+ (its full name or the end of it), the

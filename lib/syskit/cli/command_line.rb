@@ -1,0 +1,44 @@
+# frozen_string_literal: true
+
+require 'thor'
+
+module Syskit
+  class CLI < Thor
+    # What `syskit` users type that Thor reads otherwise: `--version`/`-v`
+    # alone is the version command, and `--help`/`-h` after a command is
+    # that command's help (`syskit plan --help` is `syskit help plan`,
+    # `syskit gen dev -h` is `syskit gen help dev`). Everything else goes to
+    # Thor as given.
+    module CommandLine
+      HELP = %w[-h --help].freeze
+      VERSION = %w[-v --version].freeze
+      # Commands that have commands of their own.
+      GROUPS = %w[gen bus].freeze
+
+      module_function
+
+      def normalize(args)
+        return ['version'] if args.size == 1 && VERSION.include?(args.first)
+
+        options = args.take_while { |a| a != '--' }
+        return args unless options.size > 1 && options.drop(1).intersect?(HELP)
+
+        command, sub = options.reject { |a| HELP.include?(a) }
+        return [command, 'help', *(sub unless sub&.start_with?('-'))] if GROUPS.include?(command)
+
+        ['help', command]
+      end
+    end
+
+    # Thor's own errors (an unknown option, a missing argument) as syskit
+    # prints errors: a message then a hint.
+    class Shell < Thor::Shell::Basic
+      def error(message)
+        if (option = message[/\AUnknown switches ["'](.*?)["']/, 1])
+          message = "unknown option '#{option}'\n  hint: `syskit help COMMAND` lists the options of a command"
+        end
+        super
+      end
+    end
+  end
+end

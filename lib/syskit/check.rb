@@ -28,6 +28,14 @@ module Syskit
       self
     end
 
+    # `check --strict`: every warning is reported as the error it becomes.
+    def strict!
+      @problems = problems.map do |p|
+        p.is_a?(Warning) ? Error.new(p.message, location: p.location, hint: p.hint) : p
+      end
+      self
+    end
+
     def errors
       problems.grep_v(Warning)
     end

@@ -8,6 +8,7 @@ require 'syskit/render/json'
 require 'syskit/render/dot'
 require 'syskit/cli/support'
 require 'syskit/cli/command_line'
+require 'syskit/cli/style'
 require 'syskit/test/runner'
 
 module Syskit
@@ -101,9 +102,9 @@ module Syskit
     def check
       with_app(load: false) do |app|
         report = Check.new(app).run
-        failed = report.errors.any? || (options[:strict] && report.warnings.any?)
+        report.strict! if options[:strict]
         print_check(app, report)
-        exit(1) if failed
+        exit(1) if report.errors.any?
       end
     end
 
@@ -137,7 +138,9 @@ module Syskit
     # not model, ...): one line on stderr says there are some.
     def note_warnings(app)
       count = app.problems.grep(Warning).size
-      warn "#{count} warning#{'s' unless count == 1} while loading (syskit check lists them)" if count.positive?
+      return unless count.positive?
+
+      warn Style.for($stderr).warning("#{Naming.count(count, 'warning')} while loading (syskit check lists them)")
     end
 
     def print_check(app, report)
@@ -155,8 +158,9 @@ module Syskit
 
     # The problems of one file, in line order.
     def print_problems(app, problems)
+      style = Style.for($stdout)
       problems.sort_by { |p| p.location&.lineno.to_i }.each do |p|
-        puts p.report(app.root)
+        puts style.report(p, app.root)
         puts((p.backtrace || []).map { |l| "    #{l}" }) if trace?
       end
     end

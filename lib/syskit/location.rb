@@ -60,7 +60,7 @@ module Syskit
     # "file:line"; only the path for a location without a line (a
     # directory, a file as a whole).
     def to_s(root = Syskit.app&.root)
-      lineno ? "#{relative_path(root)}:#{lineno}" : relative_path(root)
+      lineno&.positive? ? "#{relative_path(root)}:#{lineno}" : relative_path(root)
     end
   end
 end

@@ -44,6 +44,11 @@ module Syskit
       items.size > max ? "#{shown} and #{items.size - max} more" : shown
     end
 
+    # "1 frame", "2 frames"
+    def count(number, word)
+      "#{number} #{word}#{'s' unless number == 1}"
+    end
+
     # " (did you mean 'x'?)" or an empty string.
     def did_you_mean(name, candidates)
       found = suggest(name, candidates)

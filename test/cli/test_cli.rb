@@ -36,6 +36,23 @@ module Syskit
       assert_equal(%w[can0 gps], JSON.parse(out)['tasks'].map { |t| t['name'] })
     end
 
+    def test_plan_takes_the_path_form_of_gen_profile
+      out, err, status = run_cli('plan', 'live/base', '--app', EXAMPLE)
+      assert_equal 0, status, err
+      assert_match(/\APlan of AwesomeRobot::Profiles::Live::Base /, out)
+      _, err, = run_cli('plan', 'live/bsae', '--app', EXAMPLE)
+      assert_match(%r{\Ano profile named 'live/bsae' \(did you mean 'live/base'\?\)}, err)
+    end
+
+    def test_plan_without_a_profile_when_the_first_has_no_device
+      arm = "module MyApp\n  module Profiles\n    profile('Arm') { robot {} }\n  end\nend\n"
+      root = my_app("device MyApp::Devices::IMU, as: 'imu'", 'models/profiles/arm.rb' => arm)
+      out, err, status = run_cli('plan', '--app', root)
+      assert_equal [1, ''], [status, out]
+      assert_equal "MyApp::Profiles::Arm, the app's first profile, has no device\n  hint: name the profile to plan: " \
+                   "MyApp::Profiles::Base (e.g. syskit plan MyApp::Profiles::Base)\n", err
+    end
+
     def test_unknown_profile
       _, err, status = run_cli('plan', 'Bsae', '--app', EXAMPLE)
       assert_equal 1, status
@@ -125,8 +142,11 @@ module Syskit
       out, err, status = run_cli('check', '--app', root)
       assert_equal 0, status, "#{out}#{err}"
       assert_match(/0 error\(s\), 1 warning\(s\)/, out)
-      _, _, status = run_cli('check', '--app', root, '--strict')
+      out, _, status = run_cli('check', '--app', root, '--strict')
       assert_equal 1, status
+      assert_match(%r{^models/profiles/base.rb:12: device '\w' .* have overlapping filters}, out)
+      refute_match(/warning:/, out)
+      assert_match(/1 error\(s\), 0 warning\(s\)/, out)
       out, = run_cli('check', '--app', root, '--format', 'json')
       doc = JSON.parse(out)
       assert_equal [0, 1], doc.values_at('errors', 'warnings')
@@ -134,11 +154,39 @@ module Syskit
                    doc['problems'].first.slice('file', 'line', 'severity'))
     end
 
+    def test_problems_are_coloured_on_a_terminal_only
+      root = my_app("device MyApp::Devices::IMU, as: 'imu'\ndevice MyApp::Devices::IMUU, as: 'imu2'")
+      plain, = run_cli('check', '--app', root)
+      refute_match(/\e\[/, plain)
+      coloured = on_terminal('check', '--app', root)
+      assert_match(%r{\e\[1mmodels/profiles/base.rb:10\e\[0m: \e\[31m.*IMUU}, coloured)
+      assert_match(/^  \e\[36mhint:\e\[0m /, coloured)
+      refute_match(/\e\[/, on_terminal('check', '--app', root, env: { 'NO_COLOR' => '1' }))
+    end
+
     def test_exit_status_of_the_real_executable
       _, err, status = Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'plan', 'Nope',
                                       '--app', EXAMPLE)
       assert_equal 1, status.exitstatus
       assert_match(/no profile named 'Nope'/, err)
+    end
+
+    private
+
+    # What syskit writes on a terminal (a pseudo-terminal: stdout and
+    # stderr together).
+    def on_terminal(*args, env: {})
+      require 'pty'
+      out = +''
+      PTY.spawn(env, RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), *args) do |reader, _, pid|
+        begin
+          reader.each_line { |l| out << l }
+        rescue Errno::EIO
+          # the terminal closes when syskit exits
+        end
+        Process.wait(pid)
+      end
+      out
     end
   end
 end

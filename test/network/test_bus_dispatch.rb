@@ -87,7 +87,8 @@ module Syskit
       robot = on_can0(b_opts: ', client_to_bus: false')
       errors = generation_error(robot, { 'models/orogen/demux.orogen' => ONE_INPUT }, actions: %w[b_dev])
       assert_equal 1, errors.size
-      assert_reported errors.first, /demux::Task, the driver of bus 'can0', has no way to receive device 'a''s frames/,
+      assert_reported errors.first,
+                      /demux::Task, the driver of bus 'can0', has no way to receive the frames of device 'a'/,
                       at: 'models/profiles/base.rb:11', root: @root
     end
 

@@ -29,7 +29,8 @@ module Syskit
         Syskit.conf.use_deployment OroGen.sensor.Task => 'in'
       RUBY
       errors = generation_error(robot, { 'config/robots/default.rb' => config }, libraries: %w[demux sensor canbus])
-      assert_reported errors.first, /device 'in''s output port 'in' on canbus::Task collides with its input port 'in'/,
+      assert_reported errors.first,
+                      /the output port 'in' of device 'in' on canbus::Task collides with its input port 'in'/,
                       at: 'models/profiles/base.rb:11', hint: /rename the device/, root: @root
     end
 
@@ -96,7 +97,8 @@ module Syskit
         end
       RUBY
       errors = generation_error(on_can0, files)
-      assert_reported errors.first, /demux::Task, the driver of bus 'can0', has no way to receive device 'a''s frames/,
+      assert_reported errors.first,
+                      /demux::Task, the driver of bus 'can0', has no way to receive the frames of device 'a'/,
                       at: 'models/profiles/base.rb:11',
                       hint: %r{dynamic_input_port\(/\^\\w\+\$/, '/canbus/Message'\)}, root: @root
     end
@@ -113,7 +115,7 @@ module Syskit
     def test_several_deployments_without_preference
       errors = generation_error(on_can0.sub(".prefer_deployed_tasks('a')", ''))
       assert_reported errors.first,
-                      Regexp.new('several deployed tasks can run device \'a\'\'s driver sensor::Task: ' \
+                      Regexp.new('several deployed tasks can run the driver of device \'a\' \\(sensor::Task\\): ' \
                                  'a \(sensor::Task, deployment a\), b \(sensor::Task, deployment b\)'),
                       at: 'models/profiles/base.rb:11', hint: /\.prefer_deployed_tasks\('a'\)/, root: @root
     end
@@ -127,7 +129,7 @@ module Syskit
       config = "#{FILES['config/robots/default.rb']}#{deployments.join("\n")}\n"
       errors = generation_error(robot, 'config/robots/default.rb' => config)
       assert_equal 12, errors.size
-      assert_match(/driver sensor::Task: a \(sensor::Task, deployment a\), b \(.*\), d0 .*, d5 \(.*\) and 4 more\z/,
+      assert_match(/\(sensor::Task\): a \(sensor::Task, deployment a\), b \(.*\), d0 .*, d5 \(.*\) and 4 more\z/,
                    errors.first.message)
       assert_match(/prefer_deployed_tasks\('d0'\)/, errors.first.hint)
     end
@@ -135,7 +137,7 @@ module Syskit
     def test_preference_matching_nothing
       errors = generation_error(on_can0.sub(".prefer_deployed_tasks('a')", '.prefer_deployed_tasks(/front/)'))
       assert_reported errors.first,
-                      Regexp.new('none of the deployed tasks that can run device \'a\'\'s driver sensor::Task ' \
+                      Regexp.new('no deployed task that can run the driver of device \'a\' \\(sensor::Task\\) ' \
                                  'matches prefer_deployed_tasks\(/front/\)'),
                       at: 'models/profiles/base.rb:11', root: @root
     end

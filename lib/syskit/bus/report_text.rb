@@ -45,7 +45,7 @@ module Syskit
         src = report.source
         from = [src['log'] && "log #{src['log']}", src['interface'] && "interface #{src['interface']}"]
         span = report.duration ? format(' in %.3f s', report.duration) : ''
-        "#{from.compact.join(', ')}: #{report.traffic.frames} frames#{span}"
+        "#{from.compact.join(', ')}: #{Naming.count(report.traffic.frames, 'frame')}#{span}"
       end
 
       def kinds(traffic)
@@ -162,7 +162,7 @@ module Syskit
       def count(rows)
         return 'none' if rows.empty?
 
-        "#{rows.size} #{rows.size == 1 ? 'id' : 'ids'}, #{rows.sum(&:frames)} frames"
+        "#{Naming.count(rows.size, 'id')}, #{Naming.count(rows.sum(&:frames), 'frame')}"
       end
 
       def id_cells(report, row)

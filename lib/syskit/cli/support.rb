@@ -62,23 +62,22 @@ module Syskit
         raise Error.new("#{Dir.pwd} is not in a Syskit app", hint: "pass --app DIR, or cd into an app; #{App::APP_HINT}")
       end
 
-      # The profile called +name+ (its full name or the end of it), the
-      # app's first profile when +name+ is nil.
+      # The profile called +name+: its full name or the end of it, in
+      # constant form (Live::Base) or in the path form of `gen profile`
+      # (live/base). Without +name+, the app's first profile, unless it has
+      # no device while others do.
       def find_profile(app, name)
         profiles = app.profiles.values.sort_by(&:name)
-        if name.nil?
-          return profiles.first if profiles.any?
+        return default_profile(app, profiles) if name.nil?
 
-          raise UnknownName.new("#{app} has no profile",
-                                hint: 'declare one in models/profiles/ (syskit gen profile NAME)')
-        end
-
-        matches = profiles.select { |p| p.name == name || p.name.end_with?("::#{name}") }
+        wanted = profile_segments(name)
+        matches = profiles.select { |p| profile_segments(p.name).last(wanted.size) == wanted }
         return matches.first if matches.size == 1
 
         names = profiles.map(&:name)
         if matches.empty?
-          raise UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, names)}",
+          spelled = name.include?('/') ? profiles.map { |p| profile_path(p.name) } : names
+          raise UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, spelled)}",
                                 hint: "profiles: #{names.join(', ')}")
         end
 
@@ -86,8 +85,37 @@ module Syskit
                               hint: 'give more of the name')
       end
 
+      # 'Live::Base', 'live/base' and 'Profiles::Live::Base' -> [..., 'live', 'base']
+      def profile_segments(name)
+        name.to_s.split(%r{::|/}).reject(&:empty?).map { |s| Naming.underscore(s) }
+      end
+
+      # AwesomeRobot::Profiles::Live::Base -> 'live/base', as gen profile takes it
+      def profile_path(name)
+        segments = profile_segments(name)
+        after = segments.index('profiles')
+        (after ? segments.drop(after + 1) : segments).join('/')
+      end
+
+      def default_profile(app, profiles)
+        if profiles.empty?
+          raise UnknownName.new("#{app} has no profile",
+                                hint: 'declare one in models/profiles/ (syskit gen profile NAME)')
+        end
+
+        first = profiles.first
+        return first unless first.action_names.empty?
+
+        with_devices = profiles.reject { |p| p.action_names.empty? }
+        return first if with_devices.empty?
+
+        raise UnknownName.new("#{first.name}, the app's first profile, has no device",
+                              hint: "name the profile to plan: #{with_devices.map(&:name).join(', ')} " \
+                                    "(e.g. syskit plan #{with_devices.first.name})")
+      end
+
       def report_error(error, root)
-        warn error.report(root)
+        warn Style.for($stderr).report(error, root)
         warn (error.backtrace || []).map { |l| "    #{l}" }.join("\n") if trace?
         exit(1)
       end

@@ -87,7 +87,7 @@ module Syskit
       end
 
       def no_bus_port(direction, dynamic_name)
-        what = direction == :output ? "send #{@device}'s frames to it" : "receive #{@device}'s frames"
+        what = direction == :output ? "send the frames of #{@device} to it" : "receive the frames of #{@device}"
         NetworkError.new(
           "#{@bus_task.model.name}, the driver of #{@bus}, has no way to #{what}: " \
           "no #{direction == :output ? 'BusOutSrv/BusSrv' : 'BusInSrv/BusSrv'} service, no dynamic #{direction} " \

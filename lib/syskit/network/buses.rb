@@ -111,7 +111,7 @@ module Syskit
 
       def static_clash(bus_task, port, static)
         NetworkError.new(
-          "#{port.device}'s #{port.direction} port '#{port.name}' on #{bus_task.model.name} " \
+          "the #{port.direction} port '#{port.name}' of #{port.device} on #{bus_task.model.name} " \
           "collides with its #{static}",
           location: port.device.declared_at, hint: 'rename the device'
         )

@@ -112,7 +112,7 @@ module Syskit
       def no_preferred(task, requirement, candidates)
         hints = requirement.deployment_hints.map(&:inspect).join(', ')
         DeploymentError.new(
-          "none of the deployed tasks that can run #{requirement.device}'s driver #{task.model.name} " \
+          "no deployed task that can run the driver of #{requirement.device} (#{task.model.name}) " \
           "matches prefer_deployed_tasks(#{hints}): #{Naming.enumerate(candidates)}",
           location: requirement.device.deployment_hints_location || device_location(requirement),
           hint: 'change the pattern, or deploy a task whose name matches it'
@@ -126,7 +126,7 @@ module Syskit
         named = found && (candidates.equal?(index.list) || candidates.include?(found))
         example = named ? "'#{name}'" : "/#{candidates.first.name}/"
         DeploymentError.new(
-          "several deployed tasks can run #{requirement.device}'s driver #{task.model.name}: " \
+          "several deployed tasks can run the driver of #{requirement.device} (#{task.model.name}): " \
           "#{Naming.enumerate(candidates)}",
           location: device_location(requirement),
           hint: "choose one with .prefer_deployed_tasks(#{example}) on the device declaration"

@@ -13,10 +13,13 @@ Gem::Specification.new do |spec|
     minitest helpers.
   TEXT
   spec.authors = ['Syskit gem authors']
-  spec.license = 'BSD-3-Clause'
+  spec.license = 'BSD-3-Clause' # see LICENSE
+  # The gem has no site of its own: its homepage is the documentation of the
+  # Syskit concepts it implements. Change it where the gem is published.
+  spec.homepage = 'https://www.rock-robotics.org'
   spec.required_ruby_version = '>= 3.1'
 
-  spec.files = Dir['lib/**/*.rb', 'bundles/**/*', 'templates/**/*', 'bin/*', 'README.md']
+  spec.files = Dir['lib/**/*.rb', 'bundles/**/*', 'templates/**/*', 'bin/*', 'README.md', 'LICENSE']
   spec.bindir = 'bin'
   spec.executables = ['syskit']
   spec.require_paths = ['lib']
@@ -25,4 +28,5 @@ Gem::Specification.new do |spec|
   spec.add_dependency 'thor', '~> 1.2'
 
   spec.metadata['rubygems_mfa_required'] = 'true'
+  spec.metadata['documentation_uri'] = 'https://www.rock-robotics.org/rock-and-syskit/'
 end

@@ -63,6 +63,7 @@ module Syskit
     desc 'version', 'print the version (also: syskit --version, syskit -v)'
     def version
       puts "syskit #{Syskit::VERSION}"
+      puts "#{Syskit::ABOUT}, from #{GEM_ROOT}"
     end
 
     desc 'plan [PROFILE] [ACTION...]', 'print the connection plan of a profile'

@@ -13,7 +13,7 @@ module Syskit
 
     def test_version_and_help
       out, = run_cli('version')
-      assert_equal "syskit #{VERSION}\n", out
+      assert_equal "syskit #{VERSION}\n#{ABOUT}, from #{GEM_ROOT}\n", out
       out, = run_cli('help', 'plan')
       assert_match(/Example: syskit plan Live::Base temperature_sensor_dev --format json/, out)
     end

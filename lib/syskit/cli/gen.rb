@@ -5,6 +5,8 @@ require 'syskit/generators/device_generator'
 require 'syskit/generators/bus_generator'
 require 'syskit/generators/orogen_generator'
 require 'syskit/generators/profile_generator'
+require 'syskit/generators/service_generator'
+require 'syskit/generators/orogen_conf_generator'
 
 module Syskit
   # The `syskit` command line (see syskit/cli.rb), here given its `gen` subcommand.
@@ -20,8 +22,10 @@ module Syskit
           syskit gen app awesome_robot      # a new app in ./awesome_robot
           syskit gen dev gps/ublox/f9       # models/devices/gps/ublox/f9.rb, Devices::GPS::Ublox::F9
           syskit gen bus can                # models/devices/bus/can.rb, Devices::Bus::CAN
+          syskit gen srv pose               # models/services/pose.rb, Services::Pose
           syskit gen orogen gps_ublox       # models/orogen/gps_ublox.rb, from gps_ublox.orogen
           syskit gen profile live/base      # models/profiles/live/base.rb, Profiles::Live::Base
+          syskit gen orogenconf gps_ublox::Task  # config/orogen/gps_ublox::Task.yml
 
         Names are given in path form (gps/ublox/f9) or constant form (GPS::Ublox::F9);
         the acronyms of config/syskit.yml are kept (GPS, not Gps).
@@ -53,7 +57,7 @@ module Syskit
       desc 'app NAME', 'create a new app in the directory NAME'
       long_desc <<~TEXT
         Creates the directory NAME (relative to the current directory) with an
-        app's layout: models/{devices,orogen,profiles,typekits}, config/orogen,
+        app's layout: models/{devices,services,orogen,profiles,typekits}, config/orogen,
         config/robots/default.rb, config/syskit.yml, test/, a Rakefile, a
         Gemfile, a README and a first profile, Profiles::Base, with its test.
         The app's name is NAME's basename, camelized (awesome_robot ->
@@ -93,6 +97,20 @@ module Syskit
         generate { |opts| Generators::BusGenerator.new(target_app, name, **opts) }
       end
 
+      desc 'srv NAME', 'create a data service and its test'
+      long_desc <<~TEXT
+        Creates models/services/NAME.rb, defining AppName::Services::NAME with
+        data_service_type, and its test in test/services/test_NAME.rb. Device
+        models and drivers provide data services; other components connect to
+        their ports. NAME may have a namespace (sensing/pose).
+
+        Example: syskit gen srv pose
+      TEXT
+      method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
+      def srv(name)
+        generate { |opts| Generators::ServiceGenerator.new(target_app, name, **opts) }
+      end
+
       desc 'orogen LIB', 'create the Syskit extension file of a task library and its test'
       long_desc <<~TEXT
         Creates models/orogen/LIB.rb with one Syskit.extend_model block per
@@ -106,6 +124,21 @@ module Syskit
       method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
       def orogen(library)
         generate { |opts| Generators::OrogenGenerator.new(target_app, library, **opts) }
+      end
+
+      desc 'orogenconf LIB::TASK', 'create the configuration file of a task model, with its properties'
+      long_desc <<~TEXT
+        Creates config/orogen/LIB::TASK.yml with a 'default' section that sets
+        every property of the task to its initial value (the default of its
+        .orogen declaration, else its type's zero), each under its
+        documentation. Edit the values, delete what you keep as is, and add
+        sections for other configurations (--- name:other).
+
+        Example: syskit gen orogenconf gps_ublox::Task
+      TEXT
+      method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
+      def orogenconf(task_name)
+        generate { |opts| Generators::OrogenConfGenerator.new(target_app, task_name, **opts) }
       end
 
       desc 'profile PATH/NAME', 'create a profile with an empty robot block and its test'
@@ -141,7 +174,7 @@ module Syskit
           puts 'dry run: nothing was written'
         elsif generator.is_a?(Generators::AppGenerator)
           dir = generator.root.delete_prefix("#{Dir.pwd}/")
-          puts "#{generator.app_name} is in #{dir}/; next: cd #{dir} && rake test"
+          puts "#{generator.app_name} is in #{dir}/; next: #{generator.next_step}"
         end
       end
 
@@ -152,7 +185,8 @@ module Syskit
       end
     end
 
-    desc 'gen SUBCOMMAND', 'generate an app, a device, a bus, a task library extension or a profile, with tests'
+    desc 'gen SUBCOMMAND', 'generate an app, a device, a bus, a data service, a task library extension, ' \
+                           'a configuration file or a profile'
     subcommand 'gen', Gen
   end
 end

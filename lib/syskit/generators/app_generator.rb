@@ -2,6 +2,7 @@
 
 require 'syskit/generators/base'
 require 'syskit/generators/profile_generator'
+require 'shellwords'
 require 'syskit/version'
 
 module Syskit
@@ -13,7 +14,7 @@ module Syskit
       # Acronyms most robots need; the app's config lists them, to edit.
       ACRONYMS = %w[GPS CAN IMU].freeze
       # Directories that start empty, kept by git through a .gitkeep.
-      EMPTY_DIRS = %w[models/devices models/orogen models/typekits config/orogen].freeze
+      EMPTY_DIRS = %w[models/devices models/services models/orogen models/typekits config/orogen].freeze
 
       attr_reader :root, :app_name
 
@@ -37,8 +38,7 @@ module Syskit
 
       # Relative path => content of the files to write.
       def files
-        locals = { app_name: app_name, dir_name: File.basename(root), acronyms: ACRONYMS,
-                   syskit_gem: syskit_gem_line }
+        locals = { app_name: app_name, dir_name: File.basename(root), acronyms: ACRONYMS, version: Syskit::VERSION }
         files = {
           'README.md' => Template.render('app_readme', **locals),
           'Gemfile' => Template.render('app_gemfile', **locals),
@@ -50,6 +50,15 @@ module Syskit
         files.merge(ProfileGenerator.files(app_name, Name.new(['Base']))).sort.to_h
       end
 
+      # How to run the new app's tests: rake finds an installed syskit;
+      # from a checkout, Bundler takes it from SYSKIT_PATH (see the Gemfile).
+      def next_step
+        dir = Shellwords.escape(root.delete_prefix("#{Dir.pwd}/"))
+        return "cd #{dir} && rake test" unless checkout?
+
+        "cd #{dir} && SYSKIT_PATH=#{Shellwords.escape(GEM_ROOT)} bundle exec rake test"
+      end
+
       private
 
       def check_dir(dir)
@@ -58,15 +67,6 @@ module Syskit
         raise GeneratorError.new("'#{dir}' is not a directory name relative to the current directory",
                                  hint: 'run syskit gen app from the directory the app goes in, ' \
                                        'e.g. syskit gen app awesome_robot')
-      end
-
-      # The Gemfile's line for this gem: the checkout it runs from, or the
-      # installed version.
-      def syskit_gem_line
-        return "gem 'syskit', '~> #{Syskit::VERSION}'" unless checkout?
-
-        path = GEM_ROOT.match?(/['\\\r\n]/) ? GEM_ROOT.inspect : "'#{GEM_ROOT}'"
-        "gem 'syskit', path: #{path}"
       end
 
       # Installed gems do not ship their gemspec, checkouts do.

@@ -52,7 +52,7 @@ module Syskit
       # Writes the generated files (or only checks them on a dry run) and
       # returns what was, or would be, written.
       def run
-        FileWriter.new(root, allowed: ALLOWED, force: @force, dry_run: @dry_run).write(files)
+        FileWriter.new(root, allowed: self.class::ALLOWED, force: @force, dry_run: @dry_run).write(files)
       end
 
       # The modules a generated file of +kind+ ('Devices', 'Profiles') for

@@ -109,6 +109,21 @@ module Syskit
                       at: 'models/profiles/base.rb:9', hint: /did you mean 'MyApp::Devices::IMU'\?/, root: root
     end
 
+    def test_a_service_whose_file_is_not_required_names_the_require
+      service = "module MyApp\n  module Services\n    data_service_type 'Pose'\n  end\nend\n"
+      device = "module MyApp\n  module Devices\n    device_type 'Gyro' do\n      provides Services::Pose\n    " \
+               "end\n  end\nend\n"
+      # models/devices/ loads before models/services/: the service is not defined yet.
+      root = my_app(nil, 'models/services/pose.rb' => service, 'models/devices/gyro.rb' => device)
+      assert_reported load_problem(root), /uninitialized constant MyApp::Devices::Services/,
+                      at: 'models/devices/gyro.rb:4',
+                      hint: 'Services::Pose is defined in models/services/pose.rb, which this file does not require: ' \
+                            "add require 'models/services/pose' at its top", root: root
+      @loaded_apps.pop.unload
+      File.write(File.join(root, 'models/devices/gyro.rb'), "require 'models/services/pose'\n#{device}")
+      assert load_app(root)
+    end
+
     def test_a_misspelled_task_library_in_the_orogen_namespace
       root = my_app("device(Devices::IMU, as: 'imu', using: OroGen.imuu.Task)\n")
       assert_reported load_problem(root),

@@ -100,7 +100,29 @@ module Syskit
     def name_error(exception, path, root, error_class, context)
       message, hint = explain(exception)
       message = "#{context}: #{message}" if context
-      error_class.new(message, location: location_of(exception, path, root), hint: hint)
+      location = location_of(exception, path, root)
+      error_class.new(message, location: location, hint: require_hint(exception, location) || hint)
+    end
+
+    # For a constant of the app's models that its file was not required
+    # for: the require to add, which a spelling suggestion would hide.
+    def require_hint(exception, location)
+      return unless exception.instance_of?(NameError) && exception.name && location&.lineno.to_i.positive?
+
+      constant = constant_at(location, exception.name.to_s)
+      path = constant && Syskit.app&.file_defining(constant)
+      return unless path && File.expand_path("#{path}.rb", Syskit.app.root) != location.path
+
+      "#{constant} is defined in #{path}.rb, which this file does not require: add require '#{path}' at its top"
+    end
+
+    # The constant path written at +location+ that names +name+
+    # (Services::Pose for Services).
+    def constant_at(location, name)
+      line = File.foreach(location.path).drop(location.lineno - 1).first.to_s
+      line[/(?:\b[A-Z]\w*::)*\b#{Regexp.escape(name)}\b(?:::[A-Z]\w*)*/]
+    rescue SystemCallError, IOError
+      nil
     end
 
     # The receiver's own explanation of a missing method or constant, or

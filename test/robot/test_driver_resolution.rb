@@ -35,6 +35,16 @@ module Syskit
                       root: root
     end
 
+    def test_no_driver_for_a_bus_of_the_app_named_like_a_bundled_one
+      bus = "module MyApp\n  module Devices\n    module Bus\n" \
+            "      com_bus_type 'CAN', message_type: '/canbus/Message'\n    end\n  end\nend\n"
+      root = my_app("com_bus(Devices::Bus::CAN, as: 'can0')\n", { 'models/devices/bus/can.rb' => bus },
+                    libraries: [])
+      error = load_problem(root, robots: [])
+      assert_reported error, /no driver is known for bus 'can0' \(MyApp::Devices::Bus::CAN\): none is loaded/,
+                      at: 'models/profiles/base.rb:7', hint: /declare driver_for MyApp::Devices::Bus::CAN/, root: root
+    end
+
     def test_no_driver_anywhere
       root = my_app("device(Devices::TemperatureSensor, as: 't')\n", { 'models/orogen/temp.rb' => "# no driver\n" })
       error = load_problem(root)

@@ -53,6 +53,22 @@ module Syskit
         eval_in_namespace(UserFile.read(path), path, namespace_for(path))
       end
 
+      # The require path ('models/services/pose') of the file of the app or
+      # of its bundles that, by the layout's convention, defines +constant+
+      # ('Services::Pose', 'AppName::Services::Pose'); nil when there is none.
+      def file_defining(constant)
+        segments = constant.to_s.split('::').reject(&:empty?)
+        # The app's or a bundle's own module may lead the name (AppName::, CommonModels::).
+        [0, 1].each do |dropped|
+          kept = segments.drop(dropped)
+          kept.size.downto(2) do |n|
+            path = File.join('models', *kept.first(n).map { |s| Naming.underscore(s) })
+            return path if bundle_roots.any? { |r| File.file?(File.join(r, "#{path}.rb")) }
+          end
+        end
+        nil
+      end
+
       private
 
       # Model files in load order: devices first, then other model

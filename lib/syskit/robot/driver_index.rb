@@ -22,6 +22,9 @@ module Syskit
 
       NONE = [].freeze
 
+      # The model a driver_for statement names: driver_for(CommonModels::Devices::GPS, ...)
+      DRIVER_FOR = /driver_for\s*\(?\s*((?:::)?[A-Z]\w*(?:::[A-Z]\w*)*)/
+
       # Task models that can drive devices of +device_model+, by name.
       def drivers_for(device_model)
         @drivers.fetch(device_model, NONE)
@@ -99,13 +102,20 @@ module Syskit
       end
 
       # Task libraries, not loaded yet, whose extension file has a
-      # driver_for naming the model.
+      # driver_for naming the model: what it writes must be the end of the
+      # model's name (Devices::Bus::CAN for CommonModels::Devices::Bus::CAN,
+      # not for an app's own MyApp::Devices::Bus::CAN).
       def libraries_mentioning(model)
         return [] unless @app && model.name
 
-        pattern = /driver_for\s*\(?\s*[\w:]*\b#{Regexp.escape(short_name(model))}\b/
+        segments = model.name.split('::')
         (@orogen.available_library_names - @orogen.loaded_library_names).select do |lib|
-          @app.extension_files(lib, @orogen.spec_path(lib)).any? { |f| UserFile.read(f).match?(pattern) }
+          @app.extension_files(lib, @orogen.spec_path(lib)).any? do |file|
+            UserFile.read(file).scan(DRIVER_FOR).any? do |(written)|
+              names = written.delete_prefix('::').split('::')
+              names.last == segments.last && segments.last(names.size) == names
+            end
+          end
         end
       end
 

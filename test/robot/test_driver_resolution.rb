@@ -36,8 +36,8 @@ module Syskit
     end
 
     def test_no_driver_for_a_bus_of_the_app_named_like_a_bundled_one
-      bus = "module MyApp\n  module Devices\n    module Bus\n" \
-            "      com_bus_type 'CAN', message_type: '/canbus/Message'\n    end\n  end\nend\n"
+      bus = "module MyApp\n  module Devices\n    module Bus\n      " \
+            "com_bus_type 'CAN', message_type: '/canbus/Message'\n    end\n  end\nend\n"
       root = my_app("com_bus(Devices::Bus::CAN, as: 'can0')\n", { 'models/devices/bus/can.rb' => bus },
                     libraries: [])
       error = load_problem(root, robots: [])

@@ -6,6 +6,7 @@ module Syskit
   # What the README claims is what the commands show.
   class TestReadme < Minitest::Test
     README = File.read(File.join(GEM_ROOT, 'README.md'))
+    EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
 
     def test_it_starts_with_the_two_setup_commands
       commands = README[/```sh\n(.*?)```/m, 1].lines.map(&:strip)
@@ -15,11 +16,35 @@ module Syskit
                    File.read(File.join(GEM_ROOT, '.ci', 'run')).lines.last.strip
     end
 
+    # The tour's snippets headed by a file of the example app are excerpts
+    # of that file: each line, in order (comments after code aside).
+    def test_the_tour_snippets_are_excerpts_of_the_example_app
+      snippets = README.scan(/^```(?:ruby|yaml)\n# (\S+\.(?:rb|yml))\n(.*?)^```/m)
+      assert_operator snippets.size, :>=, 5
+      snippets.each do |path, body|
+        file = File.join(EXAMPLE, path)
+        assert File.file?(file), "README's snippet of #{path}: the example app has no such file"
+        lines = File.readlines(file).map { |l| code_of(l) }
+        at = 0
+        body.lines.map { |l| code_of(l) }.reject { |l| l.empty? || l.start_with?('#') }.each do |line|
+          found = lines[at..].index(line)
+          assert found, "README's snippet of #{path}: '#{line}' is not in the file (after line #{at})"
+          at += found + 1
+        end
+      end
+    end
+
     def test_the_example_plan_is_the_one_the_command_prints
       shown = README[%r{^\$ bundle exec bin/syskit plan --app examples/awesome_robot\n(.*?)^```}m, 1]
       out, err, status = run_cli('plan', '--app', 'examples/awesome_robot')
       assert_equal 0, status, err
       assert_equal out, shown
+    end
+
+    private
+
+    def code_of(line)
+      line.sub(/\s+# .*$/, '').strip
     end
   end
 end

@@ -6,6 +6,7 @@ require 'syskit/check'
 require 'syskit/render/text'
 require 'syskit/render/json'
 require 'syskit/render/dot'
+require 'syskit/render/svg'
 require 'syskit/cli/support'
 require 'syskit/cli/command_line'
 require 'syskit/cli/style'
@@ -15,7 +16,7 @@ module Syskit
   # `syskit`: thin Thor commands that parse options, call one function of the
   # library and print its result.
   class CLI < Thor
-    RENDERERS = { 'text' => Render::Text, 'json' => Render::JSON, 'dot' => Render::Dot }.freeze
+    RENDERERS = { 'text' => Render::Text, 'json' => Render::JSON, 'dot' => Render::Dot, 'svg' => Render::Svg }.freeze
 
     def self.exit_on_failure?
       true

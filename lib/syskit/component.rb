@@ -25,8 +25,9 @@ module Syskit
   # (see Network::Configure). An operation therefore returns nil in
   # +configure+.
   class Component
-    # One call of an operation: its name, arguments and where it was made.
-    OperationCall = Struct.new(:name, :arguments, :location)
+    # One call of an operation: its name and arguments.
+    OperationCall = Struct.new(:name, :arguments)
+    NO_CALLS = [].freeze
 
     # The component class of +task_model+: a reader and a writer per
     # property, a method per operation. Names already taken by this class
@@ -60,7 +61,7 @@ module Syskit
 
     # The operations called so far, in call order.
     def operation_calls
-      @operation_calls.dup.freeze
+      @operation_calls.empty? ? NO_CALLS : @operation_calls.dup.freeze
     end
 
     # As TaskContext#abort, for stub blocks.
@@ -104,7 +105,7 @@ module Syskit
     private
 
     def call_operation(name, args)
-      @operation_calls << OperationCall.new(name, args.freeze, Location.of_caller)
+      @operation_calls << OperationCall.new(name, args.freeze)
       nil
     end
 

@@ -22,6 +22,14 @@ module Syskit
       }
     end
 
+    # Copy of this error whose message says first where it happened
+    # ("in gps::Task's configure: ...").
+    def in_context(context)
+      copy = self.class.new("#{context}: #{message}", location: location, hint: hint)
+      copy.set_backtrace(backtrace) if backtrace
+      copy
+    end
+
     # Copy of this error pointing at another location, when the first
     # location found is not the user's (e.g. inside a bundled model).
     def at(location)

@@ -30,8 +30,8 @@ module Syskit
     # exceptions included (+exit+, +abort+, an endless recursion), becomes a
     # located Syskit error (see #translate); Syskit errors pass as they are.
     # Only signals (Ctrl-C) go through untouched.
-    def guard(path: nil, root: nil, error_class: FileLoadError, context: nil, &block)
-      block.call
+    def guard(path: nil, root: nil, error_class: FileLoadError, context: nil)
+      yield
     rescue Exception => e # rubocop:disable Lint/RescueException -- user code may raise anything
       raise if e.is_a?(SignalException) || Syskit::Error === e # rubocop:disable Style/CaseEquality -- see Error.===
 

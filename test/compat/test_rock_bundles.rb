@@ -58,7 +58,9 @@ module Syskit
       assert_equal %w[battery_temp motor_temp], created
       assert_equal({ 'device' => 'can0', 'deviceType' => 'SOCKET' }, can0['properties'])
       out, = run_cli('plan', '--app', ROVER)
-      assert_match(/^    operations  watch\("motor_temp", 528, 2047\)\n {16}watch\("battery_temp", 529, 2047\)$/, out)
+      # Ids in hex, as the robot declares them: the spec names watch's arguments id and mask.
+      assert_match(/^    operations  watch\("motor_temp", 0x210, 0x7FF\)\n {16}watch\("battery_temp", 0x211, 0x7FF\)$/,
+                   out)
     end
 
     def test_plan_says_in_one_line_that_there_are_warnings

@@ -40,10 +40,16 @@ module Syskit
                      json.first['frames'][1].except('declared_at'))
         assert_equal [0.03114, 250_000], json.first.values_at('utilization', 'bitrate')
         text = Render::Text.render(plan)[/^Buses.*/m]
-        assert_match(%r{^  can0  250 kbit/s, utilisation 3.1 %\n    00001234  temperature_sensor  2 bytes, period 100},
-                     text)
-        assert_match(/^    080       sync                0 bytes, period 10 ms, deadline 2 ms, jitter 0.1 ms$/, text)
-        assert_match(%r{^  can1  1 Mbit/s, utilisation 54.1 %$}, text)
+        assert_includes text, "  can0  CommonModels::Devices::Bus::CAN, driven by can0 (canbus::Task)\n    " \
+                              "250 kbit/s, utilisation 3.1 %\n"
+        assert_match(/^    frames\n      00001234  temperature_sensor  2 bytes, period 100/, text)
+        assert_match(/^      080       sync                0 bytes, period 10 ms, deadline 2 ms, jitter 0.1 ms$/, text)
+        assert_includes text, "  can1  CommonModels::Devices::Bus::CAN, driven by can1 (simple_can::Task)\n    " \
+                              "1 Mbit/s, utilisation 54.1 %\n"
+        # Each bus's devices, a bus through a bus followed by its own, with their filters in hex.
+        n2k = '      n2k  +AwesomeRobot::Devices::N2k::Bus  +id 0x1F21100 mask 0x3FFFF00\n'
+        fuel_level = '        fuel_level  +AwesomeRobot::Devices::N2k::FluidLevel\n'
+        assert_match(Regexp.new("^    devices\n#{n2k}#{fuel_level}      sync  "), text)
       end
 
       def test_a_plan_without_can_bus_lists_none

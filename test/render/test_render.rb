@@ -95,15 +95,51 @@ module Syskit
       assert_raises(FrozenError) { plan.tasks << nil }
     end
 
-    def test_dot_is_accepted_by_graphviz
+    def test_dot_draws_tasks_as_records_of_their_ports_connected_port_to_port
       dot = Render::Dot.render(example_plan)
-      assert_match(/\Adigraph "AwesomeRobot::Profiles::Live::Base" \{/, dot)
-      assert_match(/"can0" -> "temperature_sensor" \[label="temperature_sensor -> can_in\\nbuffer 2"\];/, dot)
+      title = %(  label="AwesomeRobot::Profiles::Live::Base on robot 'default'";\n  labelloc=t;)
+      assert dot.start_with?(%(digraph "AwesomeRobot::Profiles::Live::Base" {\n#{title}))
+      # Inputs on the left, the task in the middle, outputs on the right.
+      assert_includes dot, '"temperature_sensor" [label="{{<i0> can_in}|' \
+                           'temperature_sensor\\ncan_temperature_sensor::Task|{<o0> can_out|<o1> temperature}}"'
+      assert_includes dot, '"can0":o2 -> "temperature_sensor":i0 [label="buffer 2"];'
+      assert_includes dot, '"sync":o0 -> "can0":i0 [label="buffer 12"];'
+    end
+
+    def test_dot_groups_the_devices_of_a_bus_with_its_driver_and_draws_bus_drivers_apart
+      dot = Render::Dot.render(example_plan)
+      can0 = dot[/^  subgraph "cluster_bus_can0" \{\n.*?^  \}\n/m]
+      refute_nil can0
+      %w[can0 sync temperature_sensor water_temperature].each { |task| assert_match(/^    "#{task}" \[/, can0) }
+      # n2k is attached through can0, and fuel_level through n2k.
+      assert_match(/^    subgraph "cluster_bus_n2k" \{\n.*^      "fuel_level" \[.*^      "n2k" \[/m, can0)
+      assert_match(/^    "can0" \[label=.*style="filled,bold"/, can0)
+      assert_match(/^    "sync" \[label=.*style=filled, fillcolor="#ffffff"\];$/, can0)
+      # A deployment of several tasks is a box, one of a single task none.
+      assert_match(/^    subgraph "cluster_deployment_motors" \{\n.*"left_motor".*"right_motor"/m, dot)
+      refute_match(/cluster_deployment_(gps|can0|sync)"/, dot)
+      assert_match(/^  "gps" \[/, dot)
+    end
+
+    def test_dot_is_accepted_by_graphviz
       skip 'graphviz (dot) is not installed' unless system('command -v dot >/dev/null 2>&1')
 
-      svg, err, status = Open3.capture3('dot', '-Tsvg', stdin_data: dot)
+      out, err, status = run_cli('plan', '--app', EXAMPLE, '--format', 'svg')
+      assert_equal [0, ''], [status, err]
+      svg, err, status = Open3.capture3('dot', '-Tsvg', stdin_data: Render::Dot.render(example_plan))
       assert status.success?, err
       assert_match(/<svg/, svg)
+      assert_equal svg, out
+    end
+
+    def test_svg_without_graphviz_says_what_to_install
+      error = assert_raises(Syskit::Error) do
+        ENV.stub(:fetch, ->(key, *default) { key == 'PATH' ? '/nonexistent' : ENV.to_h.fetch(key, *default) }) do
+          Render::Svg.dot_command
+        end
+      end
+      assert_equal '--format svg needs graphviz, whose dot command is not on PATH', error.message
+      assert_match(/install graphviz .* or write the graph with --format dot/, error.hint)
     end
 
     # Padding comes from a table of widths up to 79; longer names still line up.
@@ -120,6 +156,28 @@ module Syskit
 
     def test_dot_escapes_quotes_backslashes_and_line_breaks
       assert_equal '"a\\"b\\\\c\\nd"', Render::Dot.quote("a\"b\\c\nd", +'')
+      assert_equal 'a\\{b\\}\\|\\<c\\>\\ d', Render::Dot.record('a{b}|<c> d', +'')
+    end
+
+    def test_text_writes_ids_in_hex_and_wraps_long_values
+      filters = Array.new(6) { |i| { 'id' => 0x100 + i, 'mask' => 0x7ff, 'name' => "dev#{i}" } }
+      task = Network::Plan::Task.with(
+        name: 'can0', model: 'hub::Task', deployment: 'can0', devices: [], conf: ['default'], depends_on: [],
+        ports: [], operations: [Network::Plan::Operation.new('watch', ['a', 0x10, 0xff], %w[name id mask])],
+        properties: [['filters', filters], ['baud', 500_000], ['can_id', 0x181], ['rx_ids', [1, 2]]]
+      )
+      plan = Network::Plan.new(profile: 'P', robot: 'r', tasks: [task], devices: [], connections: [], order: [])
+      text = Render::Text.render(plan)
+      assert_includes text, <<-TEXT
+    properties  filters: [
+                  {"id":0x100,"mask":0x7FF,"name":"dev0"},
+                  {"id":0x101,"mask":0x7FF,"name":"dev1"},
+      TEXT
+      assert_includes text, %(                  {"id":0x105,"mask":0x7FF,"name":"dev5"}\n                ]\n)
+      assert_includes text,
+                      "                baud: 500000\n                can_id: 0x181\n                rx_ids: [0x1,0x2]\n"
+      assert_includes text, "    operations  watch(\"a\", 0x10, 0xFF)\n"
+      assert_operator text.lines.map(&:size).max, :<=, 101
     end
 
     def test_text_lists_tasks_connections_and_order

@@ -37,7 +37,7 @@ module Syskit
       can0 = plan.find_task('can0')
       assert_equal 'canbus::Task', can0.model
       # As Rock's canbus component is: a watch per device, at configure time.
-      assert_equal [['watch', ['temperature_sensor', 0x1234, 0xffff]]], can0.operations.map(&:to_a)
+      assert_equal [['watch', ['temperature_sensor', 0x1234, 0xffff], %w[name id mask]]], can0.operations.map(&:to_a)
       port = can0.ports.find { |p| p.name == 'temperature_sensor' }
       assert_equal ['output', '/canbus/Message', true], [port.direction, port.type, port.dynamic]
 

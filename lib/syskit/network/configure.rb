@@ -84,8 +84,10 @@ module Syskit
       end
 
       def user_code(task, device, what, &)
-        UserCode.guard(root: @context.app.root, error_class: ConfigureMethodError,
-                       context: "in #{task.model.name}'s #{what}#{" for #{device}" if device}", &)
+        UserCode.guard(root: @context.app.root, error_class: ConfigureMethodError, &)
+      rescue ConfigureMethodError => e
+        # Said only for an error: a plan runs user code for every task.
+        raise e.in_context("in #{task.model.name}'s #{what}#{" for #{device}" if device}")
       end
 
       # Per-device ports the bus driver must have: created by its stub blocks

@@ -12,8 +12,10 @@ module Syskit
       # +operations+: the operations its configure called, in call order.
       Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on, :unmanaged,
                         :operations)
-      # A call of an operation of a task's component, and its arguments as plain data.
-      Operation = Struct.new(:name, :arguments)
+      # A call of an operation of a task's component, and its arguments as
+      # plain data; +argument_names+ are those of the operation's declaration
+      # (empty when the spec does not declare it).
+      Operation = Struct.new(:name, :arguments, :argument_names)
       # A port of a task; dynamic ports are created at configure time.
       Port = Struct.new(:name, :direction, :type, :dynamic)
       # One end of a connection.
@@ -25,9 +27,10 @@ module Syskit
       # A device of the network: its driver task, its bus and what it
       # declared (attributes such as can_id, period, burst). A slave device
       # is named +master.slave+, its +master+ is the master's name (nil for
-      # the others) and its task is the master's.
+      # the others) and its task is the master's. +com_bus+: the device is a
+      # communication bus (other devices may be attached through it).
       Device = Struct.new(:name, :model, :task, :bus, :bus_to_client, :client_to_bus, :attributes,
-                          :period, :burst, :sample_size, :declared_at, :master)
+                          :period, :burst, :sample_size, :declared_at, :master, :com_bus)
       # A CAN bus of the plan and the frames declared on its wire (by every
       # device of the robot attached to it or to a CAN bus attached to it),
       # in priority order; +bitrate+ and +utilization+ (a Rational) are nil
@@ -111,7 +114,11 @@ module Syskit
         calls = task.operation_calls
         return NO_OPERATIONS if calls.empty?
 
-        calls.map { |c| Operation.new(c.name, freeze_plain(c.arguments.map { |a| plain_argument(a) })).freeze }.freeze
+        declared = task.model.spec&.all_operations || {}
+        calls.map do |c|
+          names = declared[c.name]&.arguments&.map { |(name, _)| name.to_s }.freeze || NO_OPERATIONS
+          Operation.new(c.name, freeze_plain(c.arguments.map { |a| plain_argument(a) }), names).freeze
+        end.freeze
       end
 
       # An operation's argument as plain data (typed values through their type).
@@ -163,7 +170,8 @@ module Syskit
           attributes.empty? ? NO_ATTRIBUTES : plain_attributes(attributes),   # attributes
           device.period, device.burst, device.sample_size,                    # period, burst, sample_size
           declared_at(device.declared_at, paths),                             # declared_at
-          device.master_device&.name                                          # master
+          device.master_device&.name,                                         # master
+          device.com_bus?                                                     # com_bus
         ).freeze
       end
 
@@ -296,7 +304,8 @@ module Syskit
           'name' => device.name, 'model' => device.model, 'task' => device.task, 'bus' => device.bus,
           'bus_to_client' => device.bus_to_client, 'client_to_bus' => device.client_to_bus,
           'attributes' => device.attributes, 'period' => device.period, 'burst' => device.burst,
-          'sample_size' => device.sample_size, 'declared_at' => device.declared_at, 'master' => device.master
+          'sample_size' => device.sample_size, 'declared_at' => device.declared_at, 'master' => device.master,
+          'com_bus' => device.com_bus
         }
       end
 

@@ -4,49 +4,183 @@ require 'syskit/render/output'
 
 module Syskit
   module Render
-    # The plan as a Graphviz graph: a box per task, grouped by deployment,
-    # an edge per connection labelled with its ports and policy. Written as
-    # Text is, a chunk at a time (see Output).
+    # The plan as a Graphviz graph, drawn as Syskit draws dataflow: each
+    # task a record with its input ports on the left and its output ports on
+    # the right, each connection an edge between two ports labelled with its
+    # policy. A bus is a box holding its driver (drawn in blue, in bold) and
+    # the drivers of the devices attached through it, a bus attached through
+    # it being a box inside. Tasks that share a deployment (one process) are
+    # in a dashed box when they are in the same bus box, and say their
+    # deployment otherwise. The title is the profile and the robot.
+    #
+    # Written as Text is, a chunk at a time (see Output).
     module Dot
       extend Output
+
+      BUS_DRIVER = 'style="filled,bold", fillcolor="#cfe0f5", color="#2f5d95"'
+      DEVICE_DRIVER = 'style=filled, fillcolor="#ffffff"'
+      BUS_BOX = 'style="rounded,filled"; fillcolor="#f2f6fc"; color="#7a9cc6"'
+      DEPLOYMENT_BOX = 'style="dashed,rounded"; color="#888888"'
+
+      # Where each task is drawn: the bus boxes (nested as the buses are)
+      # and the tasks at each level, computed once from the plan.
+      class Layout
+        Box = Struct.new(:bus, :tasks, :boxes)
+
+        attr_reader :top, :bus_tasks, :shared_deployments
+
+        def initialize(plan)
+          devices = plan.devices.group_by(&:task)
+          buses = plan.devices.select(&:com_bus).to_h { |d| [d.name, d] }
+          @bus_tasks = {}
+          @boxes = {}
+          @top = Box.new(nil, [], [])
+          buses.each_value { |bus| box_of(bus.name, buses) }
+          plan.tasks.each { |task| place(task, devices[task.name] || [], buses) }
+          @shared_deployments = shared(plan.tasks)
+        end
+
+        # The box a bus's driver and the devices through the bus are in.
+        def box_of(bus_name, buses)
+          @boxes[bus_name] ||= begin
+            box = Box.new(bus_name, [], [])
+            parent = buses[bus_name]&.bus
+            (parent && buses[parent] ? box_of(parent, buses) : @top).boxes << box
+            box
+          end
+        end
+
+        private
+
+        # A bus's driver goes in the bus's box, a device's driver in the
+        # box of the bus the device is attached through.
+        def place(task, devices, buses)
+          bus = devices.find(&:com_bus)
+          @bus_tasks[task.name] = true if bus
+          through = bus&.name || devices.map(&:bus).find { |b| b && buses[b] }
+          (through ? box_of(through, buses) : @top).tasks << task
+        end
+
+        # Deployments of several tasks, those in one box being drawn as a
+        # box of their own.
+        def shared(tasks)
+          tasks.group_by(&:deployment).select { |_, ts| ts.size > 1 }.to_h { |name, ts| [name, ts] }
+        end
+      end
+
+      # Writes the graph of one plan.
+      class Writer
+        def initialize(plan, io)
+          @plan = plan
+          @io = io
+          @out = Dot.quote(plan.profile.to_s, +'digraph ') << " {\n"
+          @layout = Layout.new(plan)
+          @ports = {} # task name => port name => record field
+        end
+
+        def write
+          @out << '  label=' << Dot.quote("#{@plan.profile} on robot '#{@plan.robot}'", +'')
+          @out << ";\n  labelloc=t;\n  fontname=\"Helvetica\";\n  fontsize=16;\n  rankdir=LR;\n"
+          @out << "  node [shape=record, fontname=\"Helvetica\", fontsize=10];\n"
+          @out << "  edge [fontname=\"Helvetica\", fontsize=9, color=\"#555555\"];\n"
+          box(@layout.top, '  ')
+          @plan.connections.each { |c| Output.flush(edge(c), @io) }
+          @io.write(@out << "}\n")
+          @io
+        end
+
+        private
+
+        # The tasks of +box+ (grouped by shared deployment), then its buses'
+        # boxes, each in a cluster subgraph.
+        def box(box, indent)
+          box.tasks.group_by(&:deployment).each { |deployment, tasks| deployment(deployment, tasks, indent) }
+          box.boxes.each do |inner|
+            cluster("cluster_bus_#{inner.bus}", "bus #{inner.bus}", BUS_BOX, indent)
+            box(inner, "#{indent}  ")
+            @out << indent << "}\n"
+          end
+        end
+
+        # Tasks of one deployment in a box: in a box of their own when there
+        # are several, else each saying its deployment when the deployment
+        # has tasks elsewhere.
+        def deployment(name, tasks, indent)
+          return tasks.each { |t| node(t, shared_note(name), indent) } if tasks.size == 1
+
+          cluster("cluster_deployment_#{name}", "deployment #{name}", DEPLOYMENT_BOX, indent)
+          tasks.each { |task| node(task, nil, "#{indent}  ") }
+          @out << indent << "}\n"
+        end
+
+        def shared_note(deployment)
+          "deployment #{deployment}" if @layout.shared_deployments.key?(deployment)
+        end
+
+        def cluster(id, label, style, indent)
+          Dot.quote(id, @out << indent << 'subgraph ') << " {\n"
+          Dot.quote(label, @out << indent << '  label=') << '; ' << style << ";\n"
+        end
+
+        # A task as a record: {inputs | name, model | outputs}. Its ports'
+        # record fields are kept for the edges.
+        def node(task, note, indent)
+          inputs, outputs = task.ports.partition { |p| p.direction == 'input' }
+          fields = @ports[task.name] = {}
+          Dot.quote(task.name, @out << indent) << ' [label="{'
+          port_fields(inputs, 'i', fields) << '|' unless inputs.empty?
+          Dot.record(task.model, Dot.record(task.name, @out) << NEWLINE)
+          Dot.record(note, @out << NEWLINE) if note
+          unless outputs.empty?
+            @out << '|'
+            port_fields(outputs, 'o', fields)
+          end
+          Output.flush(style(task) << "];\n", @io)
+        end
+
+        # A bus driver is drawn apart from device drivers.
+        def style(task)
+          @out << '}", ' << (@layout.bus_tasks[task.name] ? BUS_DRIVER : DEVICE_DRIVER)
+        end
+
+        # {<i0> name|<i1> other}
+        def port_fields(list, prefix, fields)
+          @out << '{'
+          list.each_with_index do |port, i|
+            field = "#{prefix}#{i}"
+            fields[port.name] = field
+            Dot.record(port.name, @out << (i.zero? ? '' : '|') << '<' << field << '> ')
+          end
+          @out << '}'
+        end
+
+        # From the output port's field to the input port's, labelled with the policy.
+        def edge(connection)
+          endpoint(connection.from, @out << '  ') << ' -> '
+          endpoint(connection.to, @out) << ' [label="'
+          Output.policy(connection.policy, @out) << "\"];\n"
+        end
+
+        def endpoint(endpoint, out)
+          Dot.quote(endpoint.task, out)
+          field = @ports.dig(endpoint.task, endpoint.port)
+          field ? out << ':' << field : out
+        end
+      end
 
       module_function
 
       # Writes the graph to +io+; returns +io+.
       def write(plan, io)
-        out = quote(plan.profile.to_s, +'digraph ') << " {\n"
-        out << "  rankdir=LR;\n  node [shape=box, fontname=\"Helvetica\"];\n"
-        out << "  edge [fontname=\"Helvetica\", fontsize=10];\n"
-        plan.tasks.group_by(&:deployment).sort_by(&:first).each_with_index do |(deployment, tasks), i|
-          Output.flush(cluster(deployment, tasks, i, out), io)
-        end
-        plan.connections.each { |c| Output.flush(edge(c, out), io) }
-        io.write(out << "}\n")
-        io
-      end
-
-      # Graphviz draws the tasks of one deployment (one process) together.
-      def cluster(deployment, tasks, index, out)
-        out << '  subgraph cluster_' << index.to_s << " {\n    label=\"deployment "
-        escape(deployment, out) << "\";\n"
-        tasks.each do |t|
-          quote(t.name, out << '    ') << ' [label="'
-          escape(t.model, escape(t.name, out) << NEWLINE) << "\"];\n"
-        end
-        out << "  }\n"
-      end
-
-      # The label: from port -> to port, then the policy.
-      def edge(connection, out)
-        quote(connection.from.task, out << '  ') << ' -> '
-        quote(connection.to.task, out) << ' [label="'
-        escape(connection.from.port, out) << ' -> '
-        escape(connection.to.port, out) << NEWLINE
-        Output.policy(connection.policy, out) << "\"];\n"
+        Writer.new(plan, io).write
       end
 
       SPECIAL = /[\\"\n]/
       ESCAPES = { '\\' => '\\\\', '"' => '\\"', "\n" => '\\n' }.freeze
+      # Characters with a meaning in record labels, and Graphviz's own.
+      RECORD_SPECIAL = /[\\"\n{}|<> ]/
+      RECORD_ESCAPES = ESCAPES.merge('{' => '\\{', '}' => '\\}', '|' => '\\|', '<' => '\\<', '>' => '\\>',
+                                     ' ' => '\\ ').freeze
       # A line break inside a label.
       NEWLINE = '\\n'
 
@@ -58,6 +192,12 @@ module Syskit
       # +text+ with Graphviz's escapes, appended to +out+.
       def escape(text, out)
         out << (text.match?(SPECIAL) ? text.gsub(SPECIAL, ESCAPES) : text)
+      end
+
+      # +text+ as a field of a record label, appended to +out+.
+      def record(text, out)
+        text = text.to_s
+        out << (text.match?(RECORD_SPECIAL) ? text.gsub(RECORD_SPECIAL, RECORD_ESCAPES) : text)
       end
     end
   end

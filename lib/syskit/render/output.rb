@@ -30,6 +30,23 @@ module Syskit
         policy['type'] == 'buffer' ? out << ' ' << policy['size'].to_s : out
       end
 
+      # Names of values that are CAN identifiers or masks (can_id, filterMask,
+      # id, masks, filters...): written in hex, as people write them.
+      ID_NAME = /(?:\A|_)(?:id|mask|filter)s?\z|(?<=[a-z0-9])(?:Id|Mask|Filter)s?\z/
+
+      # Property names repeat across a plan's tasks: each is matched once.
+      ID_NAMES = Hash.new { |cache, name| cache[name] = ID_NAME.match?(name.to_s) }
+      private_constant :ID_NAMES
+
+      def self.id_name?(name)
+        ID_NAMES[name]
+      end
+
+      # 0x1F21100: an id or mask as the robot's declarations write it.
+      def self.hex(value)
+        value.negative? ? value.to_s : "0x#{value.to_s(16).upcase}"
+      end
+
       # The plan as a String.
       def render(plan)
         io = StringIO.new(+'')

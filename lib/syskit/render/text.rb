@@ -38,23 +38,90 @@ module Syskit
         connections_text(plan.connections, out, io)
         out << "\nOrder\n"
         order_text(plan.order, out, io)
-        io.write(buses_text(plan.buses, out))
+        io.write(buses_text(plan, out, io))
         io
       end
 
-      # The CAN buses: bitrate and utilisation, then one line per declared
-      # frame, in priority order.
-      def buses_text(buses, out)
-        return out if buses.empty?
+      # Each bus, with its driver, then the devices attached through it
+      # (a bus attached through it followed by its own devices, indented),
+      # then for a CAN bus its bitrate, utilisation and declared frames.
+      def buses_text(plan, out, io)
+        buses = plan.devices.select(&:com_bus)
+        return out if buses.empty? && plan.buses.empty?
 
+        attached = plan.devices.group_by(&:bus)
+        names = buses.map(&:name)
         out << "\nBuses (#{buses.size})\n"
-        buses.each do |bus|
-          out << '  ' << bus.name << '  ' << bus_load(bus) << "\n"
-          out << "    no frames declared\n" if bus.frames.empty?
-          id_width = bus.frames.map { |f| f.extended ? 8 : 3 }.max
-          device_width = bus.frames.map { |f| f.device.size }.max
-          bus.frames.each { |f| frame_text(f, id_width, device_width, out) }
+        buses.reject { |b| names.include?(b.bus) }.each do |bus|
+          Output.flush(bus_text(plan, bus, attached, out), io)
         end
+        out
+      end
+
+      # A bus that is attached through no other: its header, load, devices
+      # (a bus among them followed by its own) and frames.
+      def bus_text(plan, bus, attached, out)
+        bus_header(bus, plan.find_task(bus.task), out)
+        can = plan.find_bus(bus.name)
+        out << '    ' << bus_load(can) << "\n" if can
+        attached_text(attached_tree(bus.name, attached, 0), out)
+        can ? frames_text(can, out) : out
+      end
+
+      # "  can0  CommonModels::Devices::Bus::CAN, driven by can0 (canbus::Task)"
+      def bus_header(bus, task, out)
+        out << '  ' << bus.name << '  ' << bus.model
+        out << ', driven by ' << task.name << ' (' << task.model << ')' if task
+        out << "\n"
+      end
+
+      # [device, depth] pairs: the devices through +bus+, each bus among them
+      # followed by its own.
+      def attached_tree(bus, attached, depth)
+        (attached[bus] || []).flat_map do |device|
+          [[device, depth], *(device.com_bus ? attached_tree(device.name, attached, depth + 1) : [])]
+        end
+      end
+
+      # One line per attached device: name, model and CAN filter, in columns.
+      def attached_text(tree, out)
+        return out << "    no device attached\n" if tree.empty?
+
+        out << "    devices\n"
+        widths = [tree.map { |d, depth| (depth * 2) + d.name.size }.max, tree.map { |d, _| d.model.size }.max]
+        tree.each { |device, depth| attached_line(device, depth, widths, out) }
+        out
+      end
+
+      def attached_line(device, depth, (name_width, model_width), out)
+        pad(depth * 2, out << '      ')
+        pad(name_width - (depth * 2) - device.name.size, out << device.name) << '  '
+        return out << device.model << "\n" if device.attributes.empty?
+
+        pad(model_width - device.model.size, out << device.model)
+        attributes_text(device.attributes, out) << "\n"
+      end
+
+      # "  id 0x1234 mask 0xFFFF", other attributes as name: value.
+      def attributes_text(attributes, out)
+        attributes.each do |name, value|
+          if name == 'can_id' && value.is_a?(Array) && value.size == 2
+            out << '  id ' << Output.hex(value[0]) << ' mask ' << Output.hex(value[1])
+          else
+            plain(value, out << '  ' << name << ': ', ids: Output.id_name?(name))
+          end
+        end
+        out
+      end
+
+      # One line per frame declared on the CAN bus, in priority order.
+      def frames_text(bus, out)
+        return out << "    no frames declared\n" if bus.frames.empty?
+
+        out << "    frames\n"
+        id_width = bus.frames.map { |f| f.extended ? 8 : 3 }.max
+        device_width = bus.frames.map { |f| f.device.size }.max
+        bus.frames.each { |f| frame_text(f, id_width, device_width, out) }
         out
       end
 
@@ -68,7 +135,7 @@ module Syskit
       # "    080  sync  0 bytes, period 10 ms, deadline 2 ms, jitter 0.1 ms"
       def frame_text(frame, id_width, device_width, out)
         id = format(frame.extended ? '%08X' : '%03X', frame.id)
-        pad(id_width - id.size, out << '    ' << id) << '  '
+        pad(id_width - id.size, out << '      ' << id) << '  '
         pad(device_width - frame.device.size, out << frame.device) << '  ' << frame.bytes.to_s
         out << (frame.bytes == 1 ? ' byte' : ' bytes')
         frame_times(frame).each { |what, value| out << ', ' << what << ' ' << CAN::Timing::Format.ms(value) }
@@ -95,7 +162,7 @@ module Syskit
       end
 
       def details_text(task, out)
-        details(PROPERTIES, task.properties, out) { |(name, value)| plain(value, out << name << ': ') }
+        details(PROPERTIES, task.properties, out) { |(name, value)| property_text(name, value, out) }
         details(PORTS, task.ports, out) { |port| port_text(port, out) }
         details(OPERATIONS, task.operations, out) { |op| operation_text(op, out) }
         out
@@ -106,11 +173,46 @@ module Syskit
         port.dynamic ? out << ' (dynamic)' : out
       end
 
-      # +watch("gps", 16, 255)+: the call as it was written.
+      # +watch("gps", 0x10, 0xFF)+: the call as it was written, ids in hex.
       def operation_text(operation, out)
         out << operation.name << '('
-        operation.arguments.each_with_index { |arg, i| plain(arg, i.zero? ? out : out << ', ') }
+        names = operation.argument_names || []
+        operation.arguments.each_with_index do |arg, i|
+          plain(arg, i.zero? ? out : out << ', ', ids: Output.id_name?(names[i]))
+        end
         out << ')'
+      end
+
+      # Lines are kept under this width where a value allows it.
+      WRAP = 100
+
+      # name: value, the value compact; a list or hash too long for one
+      # line gets one line per element.
+      def property_text(name, value, out)
+        start = out.bytesize
+        ids = Output.id_name?(name)
+        plain(value, out << name << ': ', ids: ids)
+        # Properties start at the details' column.
+        return out if DETAIL_WIDTH + out.bytesize - start <= WRAP || !(value.is_a?(Array) || value.is_a?(Hash)) ||
+                      value.size < 2
+
+        wrapped(value, out.replace(out.byteslice(0, start)) << name << ': ', ids)
+      end
+
+      # [ then one element per line, indented under the name, then ].
+      def wrapped(value, out, ids)
+        open, close = value.is_a?(Hash) ? ['{', '}'] : ['[', ']']
+        out << open
+        value.each_with_index do |element, i|
+          out << (i.zero? ? '' : ',') << "\n" << CONTINUED << '  '
+          if value.is_a?(Hash)
+            key, v = element
+            plain(v, out << key.to_s.inspect << ':', ids: ids || Output.id_name?(key))
+          else
+            plain(element, out, ids: ids)
+          end
+        end
+        out << "\n" << CONTINUED << close
       end
 
       # One line per entry, the title on the first.
@@ -129,21 +231,32 @@ module Syskit
       end
 
       # Plain data written as compact JSON, without loading the json library
-      # (whose Kernel#j would then be callable from user files).
-      def plain(value, out)
+      # (whose Kernel#j would then be callable from user files); integers in
+      # hex where +ids+ says they are CAN ids or masks (the values of an id
+      # property, or of an id field of a hash).
+      def plain(value, out, ids: false)
         case value
-        when Hash
-          out << '{'
-          value.each_with_index { |(k, v), i| plain(v, (i.zero? ? out : out << ',') << k.to_s.inspect << ':') }
-          out << '}'
-        when Array
-          out << '['
-          value.each_with_index { |v, i| plain(v, i.zero? ? out : out << ',') }
-          out << ']'
+        when Hash then plain_hash(value, out, ids)
+        when Array then plain_array(value, out, ids)
         when String then out << value.inspect
         when nil then out << 'null'
+        when Integer then out << (ids ? Output.hex(value) : value.to_s)
         else out << value.to_s
         end
+      end
+
+      def plain_hash(hash, out, ids)
+        out << '{'
+        hash.each_with_index do |(k, v), i|
+          plain(v, (i.zero? ? out : out << ',') << k.to_s.inspect << ':', ids: ids || Output.id_name?(k))
+        end
+        out << '}'
+      end
+
+      def plain_array(array, out, ids)
+        out << '['
+        array.each_with_index { |v, i| plain(v, i.zero? ? out : out << ',', ids: ids) }
+        out << ']'
       end
 
       # Columns: from, to, type (padded to their widest entry), then policy.

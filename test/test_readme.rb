@@ -19,8 +19,8 @@ module Syskit
     # The tour's snippets headed by a file of the example app are excerpts
     # of that file: each line, in order (comments after code aside).
     def test_the_tour_snippets_are_excerpts_of_the_example_app
-      snippets = README.scan(/^```(?:ruby|yaml)\n# (\S+\.(?:rb|yml))\n(.*?)^```/m)
-      assert_operator snippets.size, :>=, 5
+      snippets = README.scan(/^```(?:ruby|yaml)\n# (\S+\.(?:rb|yml))(?: \([^)\n]*\))?\n(.*?)^```/m)
+      assert_operator snippets.size, :>=, 8
       snippets.each do |path, body|
         file = File.join(EXAMPLE, path)
         assert File.file?(file), "README's snippet of #{path}: the example app has no such file"

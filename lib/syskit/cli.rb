@@ -10,6 +10,7 @@ require 'syskit/render/svg'
 require 'syskit/cli/support'
 require 'syskit/cli/command_line'
 require 'syskit/cli/style'
+require 'syskit/cli/help'
 require 'syskit/test/runner'
 
 module Syskit
@@ -21,6 +22,8 @@ module Syskit
     def self.exit_on_failure?
       true
     end
+
+    extend Help
 
     # Usage lines say syskit, however the command was started.
     def self.basename
@@ -44,7 +47,6 @@ module Syskit
     def self.help(shell, subcommand = false) # rubocop:disable Style/OptionalBooleanParameter -- Thor's signature
       list = printable_commands(true, subcommand)
       Thor::Util.thor_classes_in(self).each { |klass| list += klass.printable_commands(false) }
-      list.reject! { |usage, _| usage.start_with?("#{basename} tree") } # Thor's own, not syskit's
       shell.say 'Commands:'
       shell.print_table(list.sort_by(&:first), indent: 2, truncate: true)
       shell.say
@@ -73,8 +75,12 @@ module Syskit
       e.g. gps_dev) on a robot and prints the plan: tasks, deployments,
       configuration, ports, connections and the configure/start order.
 
-      Without --app, the app containing the current directory, else the
-      bundled example app. Without PROFILE, the app's first profile.
+      PROFILE is the profile's name or its end (Live::Base), or the path form
+      of gen profile (live/base). Without PROFILE, the app's first profile.
+      Without --app, the app containing the current directory, else (in a
+      checkout of syskit) the example app.
+
+      --format svg draws the dot graph with graphviz (which must be installed).
 
       Example: syskit plan Live::Base temperature_sensor_dev --format json
     TEXT

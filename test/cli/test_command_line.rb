@@ -28,6 +28,11 @@ module Syskit
       out, = run_cli('help')
       refute_match(/syskit tree|skip-trace|no-trace/, out)
       assert_match(/^Every command takes --help \(-h\), and --trace/, out)
+      [%w[gen --help], %w[bus --help], %w[gen app --help], %w[check --help]].each do |args|
+        out, = run_cli(*args)
+        refute_match(/ tree|--skip-|--no-/, out, "syskit #{args.join(' ')}")
+      end
+      assert_match(/^  \[--dry-run\] +# list the files/, run_cli('gen', '--help').first)
     end
 
     def test_unknown_options_are_refused_as_options

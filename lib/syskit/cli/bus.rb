@@ -7,6 +7,7 @@ module Syskit
     # from a candump log or live from a SocketCAN interface; `syskit bus
     # timing`: the worst-case timing of the traffic a profile declares.
     class Bus < Thor
+      extend Help
       include Support
 
       def self.exit_on_failure?

@@ -15,6 +15,7 @@ module Syskit
     # conventions, each model with its test. Nothing is ever overwritten
     # without --force, and a refused command writes nothing.
     class Gen < Thor
+      extend Help
       include Support
 
       EXAMPLES = <<~TEXT

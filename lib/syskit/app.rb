@@ -24,12 +24,17 @@ module Syskit
 
     attr_reader :root, :name, :acronyms, :types, :orogen, :profiles, :problems, :bundles
 
-    # Whether +dir+ is an app: it has a models/ directory, a
-    # config/syskit.yml, or is a Rock bundle (config/app.yml).
+    # Whether +dir+ is an app (see ROOT_DIRS and ROOT_FILES).
     def self.root?(dir)
-      File.directory?(File.join(dir, 'models')) || File.file?(File.join(dir, CONFIG_FILE)) ||
-        File.file?(File.join(dir, 'config', 'app.yml'))
+      ROOT_DIRS.any? { |d| File.directory?(File.join(dir, d)) } ||
+        ROOT_FILES.any? { |f| File.file?(File.join(dir, f)) }
     end
+
+    # What makes a directory an app: this gem's layout, and what Rock
+    # bundles have (older ones only config/bundle.yml or config/init.rb
+    # beside their configuration files).
+    ROOT_DIRS = %w[models config/robots config/orogen].freeze
+    ROOT_FILES = [CONFIG_FILE, 'config/app.yml', 'config/bundle.yml', 'config/init.rb'].freeze
 
     # +dir+ given as an app (--app): its root, or an error saying what it
     # is instead (nothing, a file, a directory inside an app).
@@ -47,7 +52,8 @@ module Syskit
                               hint: inside ? "give --app #{inside}" : APP_HINT)
     end
 
-    APP_HINT = 'an app has a models/ directory or a config/syskit.yml; create one with: syskit gen app NAME'
+    APP_HINT = 'an app has a models/ directory or a config/syskit.yml (a Rock bundle a config/app.yml, ' \
+               'config/robots/ or config/orogen/); create one with: syskit gen app NAME'
 
     # The app containing +dir+: the closest parent that is one (see root?).
     def self.find_root(dir = Dir.pwd)

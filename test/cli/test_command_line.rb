@@ -49,6 +49,14 @@ module Syskit
       refute_match(/unknown option/, err)
     end
 
+    def test_a_rock_bundle_of_configuration_files_only_is_an_app
+      root = write_app({ 'config/bundle.yml' => "name: rosa\n",
+                         'config/orogen/canbus::Task.yml' => "--- name:default\ndeviceType: SOCKET\n" }, name: 'rosa')
+      FileUtils.rm_rf(File.join(root, 'models')) # write_app makes one
+      out, err, status = run_cli('check', '--app', root)
+      assert_equal [0, "Rosa: 0 error(s), 0 warning(s)\n"], [status, out], err
+    end
+
     def test_an_app_path_that_is_not_an_app
       { '/nonexistent/app' => /there is no such directory/, File.join(EXAMPLE, 'Rakefile') => /it is a file/,
         File.join(EXAMPLE, 'models') => /it is inside the app at #{EXAMPLE}/ }.each do |path, why|

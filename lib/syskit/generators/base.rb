@@ -23,19 +23,14 @@ module Syskit
       def self.find_app(app_dir, pwd: Dir.pwd)
         root = app_dir ? File.expand_path(app_dir, pwd) : Syskit::App.find_root(pwd)
         where = app_dir ? "'#{app_dir}'" : pwd
-        return root if root && root != GEM_ROOT && app?(root)
+        return root if root && root != GEM_ROOT && Syskit::App.root?(root)
 
         in_gem = root == GEM_ROOT || "#{File.expand_path(app_dir || pwd)}/".start_with?("#{GEM_ROOT}/")
         what = in_gem ? 'is in the syskit gem itself, not' : 'is not'
         raise GeneratorError.new(
-          "#{where} #{what} in a Syskit app (an app has a models/ directory or a config/syskit.yml)",
+          "#{where} #{what} in a Syskit app (#{Syskit::App::APP_HINT.split(';').first})",
           hint: 'run the command inside an app, pass --app DIR, or create an app with: syskit gen app NAME'
         )
-      end
-
-      # Whether +root+ looks like an app, as App.find_root decides.
-      def self.app?(root)
-        File.directory?(File.join(root, 'models')) || File.file?(File.join(root, Syskit::App::CONFIG_FILE))
       end
 
       # +force+ overwrites existing files, +dry_run+ writes nothing.

@@ -98,6 +98,14 @@ module Syskit
       assert_reported error, /syntax error/, at: 'models/devices/bad.rb:4', hint: /fix the Ruby syntax/, root: root
     end
 
+    # A location of a whole file (no line, or line 0 when Ruby gives none)
+    # is the file's path alone, never path:0.
+    def test_a_location_without_a_line_is_the_path
+      assert_equal 'models/x.rb', Location.new('/app/models/x.rb', 0).to_s('/app')
+      assert_equal 'models/x.rb', Location.new('/app/models/x.rb', nil).to_s('/app')
+      assert_equal 'models/x.rb:3', Location.new('/app/models/x.rb', 3).to_s('/app')
+    end
+
     def test_an_exception_raised_by_a_model_file
       root = my_app(nil, 'models/devices/bad.rb' => "module MyApp\n  raise ArgumentError, 'no way'\nend\n")
       assert_reported load_problem(root), /ArgumentError: no way/, at: 'models/devices/bad.rb:2', root: root

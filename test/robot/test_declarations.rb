@@ -186,6 +186,23 @@ module Syskit
       assert_equal [1, 1], device.can_id
     end
 
+    # Syskit's forms on the bus object itself.
+    def test_through_and_device_on_a_bus_object
+      root = my_app(<<~RUBY)
+        can0 = com_bus(CommonModels::Devices::Bus::CAN, as: 'can0')
+        can0.through do
+          device(Devices::TemperatureSensor, as: 'a').can_id(1)
+        end
+        can0.device(Devices::TemperatureSensor, as: 'b', client_to_bus: false).can_id(2)
+      RUBY
+      load_app(root)
+      a = MyApp::Profiles::Base.a_dev.device
+      b = MyApp::Profiles::Base.b_dev.device
+      assert_equal [%w[can0 can0], [true, false]], [[a.bus.name, b.bus.name], [a.client_to_bus?, b.client_to_bus?]]
+      assert_equal 'models/profiles/base.rb:13', b.declared_at.to_s(root)
+      assert_equal %w[a b], a.bus.each_attached_device.map(&:name)
+    end
+
     def test_chainable_settings_are_recorded
       root = my_app(<<~RUBY)
         device(Devices::IMU, as: 'imu').period(0.01).burst(3).sample_size(64).doc('the IMU')

@@ -321,6 +321,18 @@ module Syskit
         @attached_devices << device
       end
 
+      # Syskit's forms on the bus object: +can0.through do device(...) end+,
+      # as +through 'can0' do ... end+ in the robot block.
+      def through(&)
+        DSL.new(robot).through(self, &)
+      end
+
+      # +can0.device(Model, as: 'name', client_to_bus: false)+: a device
+      # declared attached to this bus.
+      def device(model, **options)
+        DSL.new(robot).device_on(self, model, **options)
+      end
+
       def to_s
         "bus '#{name}'"
       end

@@ -41,6 +41,16 @@ module Syskit
         @bus = previous
       end
 
+      # A device declared attached to +bus+ (a ComBus): what
+      # +bus.device(...)+ declares.
+      def device_on(bus, model, **options)
+        previous = @bus
+        @bus = bus
+        device(model, **options)
+      ensure
+        @bus = previous
+      end
+
       def explain_missing(name)
         ["unknown statement '#{name}' in a robot block#{Naming.did_you_mean(name, %w[device com_bus through])}",
          'robot blocks declare device, com_bus and through'].tap do |m|

@@ -80,6 +80,24 @@ module Syskit
         assert_equal [50, 10, 10], [report.traffic.frames, report.traffic.fd, report.traffic.rtr]
       end
 
+      # As replay does: the frames the plan declares on the bus against
+      # those read.
+      def test_compares_the_traffic_read_with_the_declared_frames
+        writer, reader = pair(:SEQPACKET)
+        (frames * 3).each { |f| writer.write(FrameStructs.encode(f)) }
+        writer.close
+        app = load_app(EXAMPLE)
+        plan = Network::Generator.plan_profile(app, AwesomeRobot::Profiles::Live::Base.syskit_profile).plan
+        report = Monitor.new(Dispatcher.from_plan(plan, 'can0'), reader, out: StringIO.new, live: false,
+                                                                          declared_bus: plan.find_bus('can0')).run
+        seen = report.declared.rows.to_h { |row| [row.frame.id, row.frames] }
+        assert_equal 3, seen.fetch(0x1234)
+        assert_equal 3, seen.fetch(0x80)
+        assert_equal 0, seen.fetch(0x301)
+        assert_includes report.declared.undeclared.map(&:key), 0x305
+        assert_match(/declared/i, ReportText.render(report))
+      end
+
       def test_refreshes_the_table_while_frames_come
         writer, reader = pair(:SEQPACKET)
         out = StringIO.new

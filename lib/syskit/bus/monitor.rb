@@ -19,9 +19,13 @@ module Syskit
 
       # +io+: where frames come from (a raw CAN socket from SocketCAN.open,
       # or any IO FrameReader can read); +live+: draw the table at each
-      # refresh on +out+ (clearing the screen when +out+ is a terminal).
-      def initialize(dispatcher, io, source: {}, out: $stdout, interval: 1.0, live: true, reader: nil)
+      # refresh on +out+ (clearing the screen when +out+ is a terminal);
+      # +declared_bus+: the plan's entry of the bus, whose declared frames
+      # the report compares with what is read, as replay does.
+      def initialize(dispatcher, io, source: {}, out: $stdout, interval: 1.0, live: true, reader: nil, # rubocop:disable Metrics/ParameterLists
+                     declared_bus: nil)
         @dispatcher = dispatcher
+        @declared_bus = declared_bus
         @reader = reader || FrameReader.new(io)
         @io = io
         @source = source
@@ -52,7 +56,7 @@ module Syskit
 
       # The report of what has been read so far.
       def report
-        Report.new(@dispatcher, @traffic, source: @source)
+        Report.new(@dispatcher, @traffic, source: @source, declared_bus: @declared_bus)
       end
 
       private

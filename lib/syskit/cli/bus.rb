@@ -71,12 +71,13 @@ module Syskit
                              desc: 'json prints the final report only'
       def monitor(profile_name)
         load_monitor
-        with_plan(profile_name) do |dispatcher, source|
+        with_plan(profile_name) do |dispatcher, source, declared_bus|
           io = ::Syskit::Bus::SocketCAN.open(options[:interface])
           begin
             source = source.merge('interface' => options[:interface])
             monitor = ::Syskit::Bus::Monitor.new(dispatcher, io, source: source, interval: options[:interval],
-                                                                 live: options[:format] == 'text')
+                                                                 live: options[:format] == 'text',
+                                                                 declared_bus: declared_bus)
             print_report(monitor.run(duration: options[:duration]))
           ensure
             io.close

@@ -38,8 +38,8 @@ module Syskit
       def dispatcher
         @dispatcher ||= begin
           app = load_app(EXAMPLE)
-          plan = Network::Generator.plan_profile(app, AwesomeRobot::Profiles::Live::Base.syskit_profile).plan
-          Dispatcher.from_plan(plan, 'can0')
+          @plan = Network::Generator.plan_profile(app, AwesomeRobot::Profiles::Live::Base.syskit_profile).plan
+          Dispatcher.from_plan(@plan, 'can0')
         end
       end
 
@@ -86,14 +86,10 @@ module Syskit
         writer, reader = pair(:SEQPACKET)
         (frames * 3).each { |f| writer.write(FrameStructs.encode(f)) }
         writer.close
-        app = load_app(EXAMPLE)
-        plan = Network::Generator.plan_profile(app, AwesomeRobot::Profiles::Live::Base.syskit_profile).plan
-        report = Monitor.new(Dispatcher.from_plan(plan, 'can0'), reader, out: StringIO.new, live: false,
-                                                                          declared_bus: plan.find_bus('can0')).run
+        report = Monitor.new(dispatcher, reader, out: StringIO.new, live: false,
+                                                 declared_bus: @plan.find_bus('can0')).run
         seen = report.declared.rows.to_h { |row| [row.frame.id, row.frames] }
-        assert_equal 3, seen.fetch(0x1234)
-        assert_equal 3, seen.fetch(0x80)
-        assert_equal 0, seen.fetch(0x301)
+        assert_equal [3, 3, 0], seen.values_at(0x1234, 0x80, 0x301)
         assert_includes report.declared.undeclared.map(&:key), 0x305
         assert_match(/declared/i, ReportText.render(report))
       end

@@ -22,7 +22,7 @@ module Syskit
       # refresh on +out+ (clearing the screen when +out+ is a terminal);
       # +declared_bus+: the plan's entry of the bus, whose declared frames
       # the report compares with what is read, as replay does.
-      def initialize(dispatcher, io, source: {}, out: $stdout, interval: 1.0, live: true, reader: nil, # rubocop:disable Metrics/ParameterLists
+      def initialize(dispatcher, io, source: {}, out: $stdout, interval: 1.0, live: true, reader: nil,
                      declared_bus: nil)
         @dispatcher = dispatcher
         @declared_bus = declared_bus

@@ -64,7 +64,7 @@ module Syskit
         # Deployments of several tasks, those in one box being drawn as a
         # box of their own.
         def shared(tasks)
-          tasks.group_by(&:deployment).select { |_, ts| ts.size > 1 }.to_h { |name, ts| [name, ts] }
+          tasks.group_by(&:deployment).select { |_, ts| ts.size > 1 }
         end
       end
 

@@ -49,22 +49,22 @@ module Syskit
         buses = plan.devices.select(&:com_bus)
         return out if buses.empty? && plan.buses.empty?
 
-        attached = plan.devices.group_by(&:bus)
-        names = buses.map(&:name)
+        # Looked up per bus: indexed once (a 10,000-device plan has 300 buses).
+        lookup = { attached: plan.devices.group_by(&:bus), tasks: plan.tasks.to_h { |t| [t.name, t] },
+                   cans: plan.buses.to_h { |b| [b.name, b] } }
+        names = buses.to_h { |b| [b.name, true] }
         out << "\nBuses (#{buses.size})\n"
-        buses.reject { |b| names.include?(b.bus) }.each do |bus|
-          Output.flush(bus_text(plan, bus, attached, out), io)
-        end
+        buses.reject { |b| names[b.bus] }.each { |bus| Output.flush(bus_text(bus, lookup, out), io) }
         out
       end
 
       # A bus that is attached through no other: its header, load, devices
       # (a bus among them followed by its own) and frames.
-      def bus_text(plan, bus, attached, out)
-        bus_header(bus, plan.find_task(bus.task), out)
-        can = plan.find_bus(bus.name)
+      def bus_text(bus, lookup, out)
+        bus_header(bus, lookup[:tasks][bus.task], out)
+        can = lookup[:cans][bus.name]
         out << '    ' << bus_load(can) << "\n" if can
-        attached_text(attached_tree(bus.name, attached, 0), out)
+        attached_text(attached_tree(bus.name, lookup[:attached], 0), out)
         can ? frames_text(can, out) : out
       end
 
@@ -196,24 +196,15 @@ module Syskit
         return out if DETAIL_WIDTH + out.bytesize - start <= WRAP || !(value.is_a?(Array) || value.is_a?(Hash)) ||
                       value.size < 2
 
-        wrapped(value, out.replace(out.byteslice(0, start)) << name << ': ', ids)
+        out.replace(out.byteslice(0, start)) << name << ': '
+        value.is_a?(Hash) ? plain_hash(value, out, ids, WRAPPED) : plain_array(value, out, ids, WRAPPED)
       end
 
-      # [ then one element per line, indented under the name, then ].
-      def wrapped(value, out, ids)
-        open, close = value.is_a?(Hash) ? ['{', '}'] : ['[', ']']
-        out << open
-        value.each_with_index do |element, i|
-          out << (i.zero? ? '' : ',') << "\n" << CONTINUED << '  '
-          if value.is_a?(Hash)
-            key, v = element
-            plain(v, out << key.to_s.inspect << ':', ids: ids || Output.id_name?(key))
-          else
-            plain(element, out, ids: ids)
-          end
-        end
-        out << "\n" << CONTINUED << close
-      end
+      # How a list or hash is laid out: what follows its opening, separates
+      # its elements and precedes its closing. Wrapped: one element per
+      # line, indented under the property's name.
+      COMPACT = ['', ',', ''].freeze
+      WRAPPED = ["\n#{CONTINUED}  ", ",\n#{CONTINUED}  ", "\n#{CONTINUED}"].freeze
 
       # One line per entry, the title on the first.
       def details(title, entries, out)
@@ -245,18 +236,20 @@ module Syskit
         end
       end
 
-      def plain_hash(hash, out, ids)
-        out << '{'
+      def plain_hash(hash, out, ids, layout = COMPACT)
+        first, between, last = layout
+        out << '{' << first
         hash.each_with_index do |(k, v), i|
-          plain(v, (i.zero? ? out : out << ',') << k.to_s.inspect << ':', ids: ids || Output.id_name?(k))
+          plain(v, (i.zero? ? out : out << between) << k.to_s.inspect << ':', ids: ids || Output.id_name?(k))
         end
-        out << '}'
+        out << last << '}'
       end
 
-      def plain_array(array, out, ids)
-        out << '['
-        array.each_with_index { |v, i| plain(v, i.zero? ? out : out << ',', ids: ids) }
-        out << ']'
+      def plain_array(array, out, ids, layout = COMPACT)
+        first, between, last = layout
+        out << '[' << first
+        array.each_with_index { |v, i| plain(v, i.zero? ? out : out << between, ids: ids) }
+        out << last << ']'
       end
 
       # Columns: from, to, type (padded to their widest entry), then policy.

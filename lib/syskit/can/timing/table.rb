@@ -39,7 +39,7 @@ module Syskit
 
         # The verdict under the table.
         def summary(result)
-          frames = "#{result.frames.size} #{result.frames.size == 1 ? 'frame' : 'frames'}"
+          frames = Naming.count(result.frames.size, 'frame')
           misses = result.misses.size
           verdict = if misses.zero? then "every frame meets its deadline (#{frames})"
                     else "#{misses} of #{frames} can miss #{misses == 1 ? 'its' : 'their'} deadline"

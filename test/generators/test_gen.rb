@@ -227,6 +227,20 @@ module Syskit
       assert_match BACKTRACE, err
     end
 
+    def test_orogenconf_names_a_task_model_of_a_known_library
+      app, = new_app
+      before = files_of(app)
+      assert_equal "'canbus' is not the name of a task model\n  hint: give the library and the task, as in the name " \
+                   "of the configuration file: syskit gen orogenconf gps_ublox::Task\n",
+                   refused('orogenconf', 'canbus', chdir: app)
+      assert_equal "task library 'canbus' has no task 'canbus::Tsk' (did you mean 'canbus::Task'?)\n  " \
+                   "hint: its tasks are canbus::InterfaceTask, canbus::Task\n",
+                   refused('orogenconf', 'canbus::Tsk', chdir: app)
+      assert_match(/\Ano task library 'canbs' \(did you mean 'canbus'\?\)\n  hint: there is no canbs.orogen/,
+                   refused('orogenconf', 'canbs::Task', chdir: app))
+      assert_equal before, files_of(app)
+    end
+
     def test_errors_of_a_task_library_point_at_its_file
       app, = new_app
       File.write(File.join(app, 'models', 'orogen', 'broken.orogen'), "name 'broken'\ntask_contxt 'Task' do\nend\n")

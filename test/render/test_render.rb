@@ -132,6 +132,15 @@ module Syskit
       assert_equal svg, out
     end
 
+    def test_svg_when_dot_fails_says_so
+      plan = Network::Plan.new(profile: 'P', robot: 'r', tasks: [], devices: [], connections: [], order: [])
+      error = assert_raises(Syskit::Error) { Render::Svg.write(plan, StringIO.new, dot: 'false') }
+      assert_equal "graphviz's dot could not draw the plan (exit status 1)", error.message
+      assert_match(/--format dot/, error.hint)
+      error = assert_raises(Syskit::Error) { Render::Svg.write(plan, StringIO.new, dot: 'ls') }
+      assert_match(/\Agraphviz's dot could not draw the plan \(exit status 2\): ls: /, error.message)
+    end
+
     def test_svg_without_graphviz_says_what_to_install
       error = assert_raises(Syskit::Error) do
         ENV.stub(:fetch, ->(key, *default) { key == 'PATH' ? '/nonexistent' : ENV.to_h.fetch(key, *default) }) do

@@ -15,7 +15,12 @@ module Syskit
       # Writes the SVG of +plan+ to +io+; returns +io+.
       def write(plan, io, dot: dot_command)
         svg, err, status = Open3.capture3(dot, '-Tsvg', stdin_data: Dot.render(plan), binmode: true)
-        raise Error, "graphviz's dot could not draw the plan: #{err.lines.first.to_s.strip}" unless status.success?
+        unless status.success?
+          said = err.lines.first.to_s.strip
+          raise Error.new("graphviz's dot could not draw the plan (exit status #{status.exitstatus})" \
+                          "#{": #{said}" unless said.empty?}",
+                          hint: 'write the graph with --format dot and run dot -Tsvg on it to see what graphviz says')
+        end
 
         io.write(svg)
         io

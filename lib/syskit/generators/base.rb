@@ -58,6 +58,19 @@ module Syskit
 
       private
 
+      # Yields task library +name+ (loaded) and the path of its .orogen file,
+      # in the app loaded as syskit check would (extension files of the
+      # libraries it uses may need the app's device models); the app's own
+      # problems are left to syskit check, only this library's matter here.
+      def with_library(name)
+        app = Syskit::App.new(root)
+        app.load
+        path = app.orogen.spec_path(name) || raise(app.orogen.unknown_library(name, nil, error_class: GeneratorError))
+        yield app.orogen.library(name) || app.orogen.load_library(name, Location.new(path, 1)), path
+      ensure
+        app&.unload
+      end
+
       def check_app_name
         return if app_name.split('::').all? { |c| Naming.constant_name?(c) }
 

@@ -36,14 +36,7 @@ module Syskit
       private
 
       def task_model
-        app = Syskit::App.new(root)
-        app.load
-        library = task_name.split('::').first
-        app.orogen.spec_path(library) || raise(app.orogen.unknown_library(library, nil, error_class: GeneratorError))
-        loaded = app.orogen.library(library) || app.orogen.load_library(library, nil)
-        loaded.tasks[task_name] || raise(unknown_task(loaded))
-      ensure
-        app&.unload
+        with_library(task_name.split('::').first) { |loaded, _| loaded.tasks[task_name] || raise(unknown_task(loaded)) }
       end
 
       def unknown_task(library)

@@ -43,17 +43,7 @@ module Syskit
 
       # Where the .orogen file is, for the file's header, and its tasks.
       def read_library
-        app = Syskit::App.new(root)
-        # Extension files of the libraries this one uses may need the app's
-        # device models: load the app as syskit check would, but leave its
-        # problems to syskit check, only this library's matter here.
-        app.load
-        path = app.orogen.spec_path(library) ||
-               raise(app.orogen.unknown_library(library, nil, error_class: GeneratorError))
-        loaded = app.orogen.library(library) || app.orogen.load_library(library, Location.new(path, 1))
-        [spec_description(path), task_infos(loaded, path)]
-      ensure
-        app&.unload
+        with_library(library) { |loaded, path| [spec_description(path), task_infos(loaded, path)] }
       end
 
       # The path of the .orogen file inside the app, no machine-specific

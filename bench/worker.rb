@@ -15,7 +15,7 @@ module Syskit
     # moment of a shared machine falls on every size alike rather than on
     # the one that happened to run then.
     class Worker
-      PHASES = %w[drivers buses deploy order configure connect plan].freeze
+      PHASES = %w[instantiate merge buses deploy order configure connect plan].freeze
       RENDERERS = { 'json' => Render::JSON, 'text' => Render::Text, 'dot' => Render::Dot }.freeze
 
       # Forks the worker; it loads +app_dir+ right away.

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/compat/ignored'
+require 'syskit/compat/delayed_argument'
 require 'syskit/compat/roby'
 require 'syskit/compat/core_extensions'
 require 'syskit/compat/task_statements'
@@ -14,7 +15,7 @@ module Syskit
   # - recorded (affects the plan): Robot.requires blocks, Syskit.conf's
   #   deployment statements, Roby.app.auto_load_all_task_libraries;
   # - accepted, with one located "not modelled by this gem" warning each:
-  #   compositions, ruby task contexts, Roby tasks, action interfaces and
+  #   ruby task contexts, Roby tasks, action interfaces and
   #   command libraries (the classes below), runtime-only task statements
   #   (TaskStatements::RUNTIME_STATEMENTS), profile statements about compositions
   #   (Profile::NOT_MODELLED), Roby.app's runtime settings;
@@ -160,7 +161,6 @@ module Syskit
     end
     Syskit.extend(Logging)
 
-    not_modelled_class(Syskit, :Composition, 'composition')
     # Syskit's network generation engine and its logging support, which
     # bundles hook into at runtime.
     Syskit.const_set(:NetworkGeneration, Module.new)
@@ -185,3 +185,4 @@ module Syskit
 end
 
 Syskit::TaskContext.extend(Syskit::Compat::TaskStatements)
+Syskit::Composition.extend(Syskit::Compat::TaskStatements)

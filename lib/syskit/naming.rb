@@ -50,6 +50,15 @@ module Syskit
     end
 
     # " (did you mean 'x'?)" or an empty string.
+    # How DSL files name a model: +OroGen.lib.Task+ for a task context of
+    # a task library, the constant name otherwise.
+    def dsl_reference(model)
+      name = model.name.to_s
+      return name unless model.is_a?(Class) && model < Syskit::TaskContext && name.include?('::')
+
+      "OroGen.#{name.gsub('::', '.')}"
+    end
+
     def did_you_mean(name, candidates)
       found = suggest(name, candidates)
       found.empty? ? '' : " (did you mean #{found.map { |s| "'#{s}'" }.join(' or ')}?)"

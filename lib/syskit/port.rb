@@ -55,6 +55,49 @@ module Syskit
     end
   end
 
+  # A port of a task in a generated network (+task.out_port+): it tells
+  # what it is connected to.
+  class BoundPort
+    attr_reader :task, :port
+
+    def initialize(task, port)
+      @task = task
+      @port = port
+    end
+
+    def name
+      port.name
+    end
+
+    def type
+      port.type
+    end
+
+    def direction
+      port.direction
+    end
+
+    # Whether a connection of the network links this port and +other+ (a
+    # bound port), in either direction.
+    def connected_to?(other)
+      task.connections.any? do |c|
+        (c.from_task.equal?(task) && c.from_port.name == name && c.to_task.equal?(other.task) &&
+          c.to_port.name == other.name) ||
+          (c.to_task.equal?(task) && c.to_port.name == name && c.from_task.equal?(other.task) &&
+            c.from_port.name == other.name)
+      end
+    end
+
+    def ==(other)
+      other.is_a?(BoundPort) && other.task.equal?(task) && other.name == name
+    end
+
+    def to_s
+      "#{task}.#{name}_port"
+    end
+    alias inspect to_s
+  end
+
   # A pattern of ports a task can create at configure time
   # (+dynamic_output_port(/\w+/, '/canbus/Message')+).
   class DynamicPort

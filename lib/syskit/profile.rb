@@ -1,15 +1,20 @@
 # frozen_string_literal: true
 
+require 'syskit/profile_definitions'
+
 module Syskit
-  # A profile: a module with a robot definition. Each device declared in its
-  # robot block gives the profile an action, +Base.gps_dev+, that stands for
-  # the device's driver in plans and tests.
+  # A profile: a module with a robot definition and definitions. Each
+  # device declared in its robot block gives the profile an action,
+  # +Base.gps_dev+, that stands for the device's driver in plans and tests;
+  # each definition one too, +Base.arm_control_def+.
   #
   # Both forms of the seed define one:
   #
   #   profile 'Base' do robot do ... end end
   #   module Base; robot do ... end; end
   class Profile
+    include Definitions
+
     attr_reader :namespace, :robot, :declared_at
 
     # The profile of +mod+, making it one if it is not yet.
@@ -53,30 +58,47 @@ module Syskit
     end
 
     # Action names (+gps_dev+, ...), in declaration order, each device's
-    # slaves after it (+stereo.left_dev+).
+    # slaves after it (+stereo.left_dev+), then the definitions (+x_def+).
     def action_names
-      robot.devices.flat_map do |device|
+      devices = robot.devices.flat_map do |device|
         ["#{device.name}_dev", *device.each_slave.map { |slave| "#{slave.full_name}_dev" }]
       end
+      devices + definitions.keys.map { |name| "#{name}_def" }
     end
 
-    # The requirement of action +name+ ('gps_dev', or the device name 'gps'),
-    # the same object every time. The action of a device named 'gps_dev' is
-    # 'gps_dev_dev'.
+    # The requirements of action +name+ ('gps_dev', or the device name
+    # 'gps'; 'arm_control_def' or 'arm_control'), the same object every
+    # time. The action of a device named 'gps_dev' is 'gps_dev_dev'.
     def find_action(name)
       name = name.to_s
+      return find_definition(name) if name.end_with?('_def') && has_definition?(name)
+
       device = (robot.find_device(name.delete_suffix('_dev')) if name.end_with?('_dev')) || robot.find_device(name)
-      requirement_for(device) if device
+      return requirement_for(device) if device
+
+      find_definition(name)
     end
 
-    # The requirements of every device, for plans of the whole profile.
+    # The requirements of every device and definition, for plans of the
+    # whole profile.
     def all_requirements
+      device_requirements + definition_requirements
+    end
+
+    def device_requirements
       robot.devices.map { |d| requirement_for(d) }
     end
 
+    def definition_requirements
+      definitions.each_value.map(&:requirements)
+    end
+
+    # The action of +device+ (see InstanceRequirements): left unfrozen, so
+    # that its slaves' actions can be added to it (+stereo_dev.left_dev+).
     def requirement_for(device)
       (@requirements ||= {}.compare_by_identity)[device] ||= begin
-        requirement = Network::Requirement.new(device, self)
+        requirement = InstanceRequirements.new(device: device, profile: self, name: "#{device.full_name}_dev",
+                                               declared_at: device.declared_at, open: true)
         device.each_slave { |slave| define_slave_action(requirement, slave) }
         requirement
       end
@@ -94,15 +116,19 @@ module Syskit
       requirement.define_singleton_method("#{slave.name}_dev") { profile.requirement_for(slave) }
     end
 
-    # Profile statements about compositions, simulation and the
-    # transformer: accepted, with a "not modelled" warning each (see
-    # Compat). The value says which action name a statement defines, when
-    # it defines one, so that later statements can refer to it.
+    # Profile statements about simulation and the transformer: accepted,
+    # with a "not modelled" warning each (see Compat). The value says which
+    # action name a statement defines, when it defines one, so that later
+    # statements can refer to it.
     NOT_MODELLED = {
-      define: ->(name, *) { "#{name}_def" }, tag: ->(name, *) { "#{name}_tag" },
       use_gazebo_model: ->(url, *, as: nil, **) { "#{as || url.to_s.sub(%r{\Amodel://}, '').split('/').first}_dev" },
-      use: nil, use_profile: nil, use_sdf_world: nil, use_sdf_model: nil, transformer: nil
+      use_sdf_world: nil, use_sdf_model: nil, transformer: nil
     }.freeze
+
+    # The comment block above +location+ (documentation of a statement).
+    def self.doc_above(location)
+      (@doc_comments ||= Robot::DocComment.new).above(location)
+    end
 
     # Methods of profile modules.
     module ModuleMethods
@@ -122,6 +148,27 @@ module Syskit
         syskit_profile.robot_block(&)
       end
 
+      # Defines +name_def+: what the robot can run (see Definitions#define).
+      # The comment block above the statement documents it.
+      def define(name, requirements)
+        location = Location.of_caller
+        syskit_profile.define(name, requirements, location: location, doc: Profile.doc_above(location))
+      end
+
+      def tag(name, *models)
+        syskit_profile.tag(name, models, location: Location.of_caller)
+      end
+
+      def use(*mappings)
+        syskit_profile.use(mappings, location: Location.of_caller)
+        self
+      end
+
+      def use_profile(profile, tags = {})
+        syskit_profile.use_profile(profile, tags, location: Location.of_caller)
+        self
+      end
+
       def syskit_profile
         @syskit_profile
       end
@@ -133,7 +180,7 @@ module Syskit
       private :syskit_device_action
 
       def explain_missing(name)
-        actions = syskit_profile.action_names
+        actions = syskit_profile.action_names + syskit_profile.tags.keys.map { |t| "#{t}_tag" }
         ["#{self} has no action '#{name}'#{Naming.did_you_mean(name, actions)}",
          actions.empty? ? 'declare devices in its robot block' : "its actions are #{actions.join(', ')}"]
       end

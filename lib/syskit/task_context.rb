@@ -10,19 +10,30 @@ module Syskit
   # The generator creates one per driver and bus, sets the +<name>_dev+
   # arguments, applies configuration sections, then calls {#configure}, which
   # users override in extension files (calling +super+ first).
-  class TaskContext
+  class TaskContext < Component
     extend Models::TaskModel
 
     # Most tasks never create a port: they share this until they do.
     NO_PORTS = {}.freeze
     NO_CALLS = [].freeze
-    private_constant :NO_PORTS, :NO_CALLS
+    NO_CONNECTIONS = [].freeze
+    private_constant :NO_PORTS, :NO_CALLS, :NO_CONNECTIONS
 
     attr_reader :arguments, :properties, :deployed_task
     attr_accessor :conf
-    # The requirement (a profile's device action) the generator made this
-    # task for.
+    # The requirements (a device action, a composition's child) the
+    # generator made this task for.
     attr_accessor :requirement
+    # Where the task stands in the network when it is a composition's
+    # child (+arm_control.position2twist+), and where the requirements it
+    # was made for are declared (the definition).
+    attr_accessor :plan_path, :root_location
+
+    # The name the task goes by before it is deployed: its device's, or
+    # its place in a composition (+arm_control_position2twist+).
+    def plan_name
+      requirement&.device&.name || plan_path&.tr('.', '_') || Naming.underscore(model.name.to_s.split('::').last)
+    end
 
     def initialize(arguments = {})
       @arguments = arguments
@@ -30,6 +41,7 @@ module Syskit
       @created_ports = NO_PORTS
       @children = []
       @child_tasks = []
+      @connections = NO_CONNECTIONS
       @conf = Robot::Device::DEFAULT_CONF
     end
 
@@ -129,6 +141,21 @@ module Syskit
 
     def find_port(name)
       created_ports[name.to_s] || model.find_port(name)
+    end
+
+    # The port +name+ of this task (+task.out_port+), which knows what it
+    # is connected to in the network; nil when there is no such port.
+    def find_bound_port(name)
+      port = find_port(name)
+      BoundPort.new(self, port) if port
+    end
+
+    # The connections of the network that start or end at this task.
+    attr_reader :connections
+
+    def add_connection(connection)
+      @connections = [] if @connections.frozen?
+      @connections << connection
     end
 
     # Creates a port the task model declares a dynamic pattern for.

@@ -136,8 +136,8 @@ module Syskit
       calls = 0
       result = Network::Generator.plan_profile(app, MyApp::Profiles::Base.syskit_profile,
                                                before_step: -> { calls += 1 })
-      assert_equal %w[drivers buses deploy order configure connect plan], result.timings.keys
-      assert_equal 7, calls
+      assert_equal %w[instantiate merge buses deploy order configure connect plan], result.timings.keys
+      assert_equal 8, calls
     end
 
     # The action of a device named 'a_dev' is 'a_dev_dev'; its name works too.

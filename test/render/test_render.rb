@@ -16,7 +16,7 @@ module Syskit
 
     def test_json_has_the_keys_of_the_spec
       doc = JSON.parse(Render::JSON.render(example_plan))
-      assert_equal %w[profile robot tasks devices connections order buses], doc.keys
+      assert_equal %w[profile robot tasks devices connections order buses compositions], doc.keys
       assert_equal 'AwesomeRobot::Profiles::Live::Base', doc['profile']
       assert_equal 'default', doc['robot']
       can0 = doc['tasks'].find { |t| t['name'] == 'can0' }

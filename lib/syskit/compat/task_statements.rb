@@ -7,13 +7,21 @@ module Syskit
     # accepted in task model bodies, with a "not modelled" warning each.
     module TaskStatements
       RUNTIME_STATEMENTS = %i[transformer poll on script event terminates forward signal
-                              stream_aligner on_exception from].freeze
+                              stream_aligner on_exception].freeze
 
       RUNTIME_STATEMENTS.each do |statement|
         define_method(statement) do |*_args, **_options, &_block|
           Syskit.app&.not_modelled("#{statement} in #{name}", Location.of_caller)
           Compat::Ignored.instance
         end
+      end
+
+      # Roby's delayed arguments (see DelayedArgument): a composition's
+      # +from(:parent_task)+ is modelled, the others (the planning task,
+      # the state) are runtime.
+      def from(object)
+        Syskit.app&.not_modelled("from in #{name}", Location.of_caller) unless object == :parent_task
+        DelayedArgument.new(object)
       end
     end
   end

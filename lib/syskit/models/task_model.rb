@@ -1,10 +1,7 @@
 # frozen_string_literal: true
 
-require 'syskit/models/bound_service'
-require 'syskit/models/port_mapper'
-require 'syskit/models/task_arguments'
+require 'syskit/models/component_model'
 require 'syskit/models/driver_services'
-require 'syskit/models/task_requirements'
 require 'syskit/models/dynamic_services'
 
 module Syskit
@@ -15,25 +12,11 @@ module Syskit
     # plain +class_eval+: +driver_for+, +provides+ and +stub+ are class
     # methods, +def configure+ defines the method the generator runs.
     module TaskModel
+      include ComponentModel
       include DynamicServices
-      include TaskArguments
       include DriverServices
-      include TaskRequirementStatements
 
       attr_reader :spec
-
-      class << self
-        # Bumped whenever a task model gains a service or a stub: the cached
-        # views below (which merge a model's declarations with its parents')
-        # are then computed again.
-        def declarations_version
-          @declarations_version ||= 0
-        end
-
-        def declarations_changed
-          @declarations_version = declarations_version + 1
-        end
-      end
 
       # A new task model for +spec+, subclassing this one.
       def new_model(spec)
@@ -102,30 +85,6 @@ module Syskit
         spec ? spec.all_properties : {}
       end
 
-      # Services by name, inherited ones included.
-      def services
-        cached(:services) do
-          inherited = superclass.respond_to?(:services) ? superclass.services : {}
-          inherited.merge(@services || {}).freeze
-        end
-      end
-
-      # Services whose model is or provides +service_model+, in declaration order.
-      def services_fulfilling(service_model)
-        cached(:fulfilling, service_model) { services.values.select { |srv| srv.fullfills?(service_model) }.freeze }
-      end
-
-      # The service of full name +name+ ('gps', or 'stereo.left' for a slave).
-      def find_service(name)
-        services[name.to_s]
-      end
-      alias find_data_service find_service
-
-      # Enumerates the services, inherited ones included, in declaration order.
-      def each_data_service(&)
-        services.each_value(&)
-      end
-
       # Declares that this task drives devices of +model+; the device is given
       # to the task as its +<as>_dev+ argument. Ports of the device model are
       # bound by name and type, or by +'device_port' => 'task_port'+ mappings
@@ -145,32 +104,12 @@ module Syskit
         add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
       end
 
-      # Declares that this task provides the data service +model+ under the
-      # name +as+, with optional +'service_port' => 'task_port'+ mappings;
-      # +slave_of: 'name'+ makes it a slave of the service +name+ (its full
-      # name is then +name.as+).
-      def provides(model, mappings = {}, as: nil, slave_of: nil, **more)
-        location = Location.of_caller
-        return (@task_services ||= []) << model if model.is_a?(Compat::TaskService) && as.nil?
-
-        unless model.is_a?(DataServiceModel)
-          raise DeclarationError.new("provides expects a data service model, got #{model.inspect}",
-                                     location: location)
-        end
-        unless as
-          raise DeclarationError.new("provides #{model} needs a service name",
-                                     location: location, hint: "write provides #{model}, as: 'name'")
-        end
-
-        add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
-      end
-
       # Stands for what the real component does at configure time, when
       # the network is generated without it (e.g. creating per-device ports
       # from the property the configure method just set).
       def stub(&block)
         (@stub_blocks ||= []) << block
-        TaskModel.declarations_changed
+        ComponentModel.declarations_changed
         block
       end
 
@@ -201,44 +140,28 @@ module Syskit
       # The class of the task's component (+orocos_task+, and what +stub+
       # blocks are evaluated on).
       def component_class
-        @component_class ||= Component.for(self)
+        @component_class ||= OrocosTask.for(self)
       end
 
       private
 
-      # A view computed once per +key+ (and +subkey+), until declarations change.
-      def cached(key, subkey = nil)
-        version = TaskModel.declarations_version
-        if @cache_version != version
-          @cache = {}
-          @cache_version = version
-        end
-        table = subkey.nil? ? @cache : (@cache[key] ||= {}.compare_by_identity)
-        slot = subkey.nil? ? key : subkey
-        table.fetch(slot) { table[slot] = yield }
-      end
-
       def setup_model(spec)
         @spec = spec
+        define_port_readers(spec)
         @services = {}
         @stub_blocks = []
       end
 
-      def add_service(name, model, mappings, location, slave_of: nil)
-        name = name.to_s
-        check_service_options(name, mappings, location)
-        master = master_service(slave_of, location) if slave_of
-        full_name = master ? "#{master.full_name}.#{name}" : name
-        existing = find_service(full_name)
-        if existing
-          raise DeclarationError.new("#{self.name} already has a #{existing} declared at #{existing.declared_at}",
-                                     location: location, hint: "give this one another name with as: 'other_name'")
+      # +out_port+ on the tasks, for each static port of the spec.
+      def define_port_readers(spec)
+        spec.all_ports.each_key do |name|
+          reader = "#{name}_port"
+          define_method(reader) { find_bound_port(name) } unless method_defined?(reader)
         end
+      end
 
-        port_mappings = PortMapper.new(self, model, mappings, location).map
-        srv = BoundService.new(self, name, model, port_mappings, location, master: master)
-        (@services ||= {})[full_name] = srv
-        TaskModel.declarations_changed
+      def add_service(...)
+        srv = super
         define_device_reader(srv) if srv.driven_device_model
         srv
       end
@@ -252,34 +175,6 @@ module Syskit
         else
           define_method(argument) { find_device_attached_to(srv) }
         end
-      end
-
-      def master_service(slave_of, location)
-        name = slave_of.respond_to?(:full_name) ? slave_of.full_name : slave_of.to_s
-        found = find_service(name)
-        return found if found
-
-        known = services.keys.sort
-        hint = known.empty? ? "declare the master first: driver_for Model, as: 'name'" : "services: #{known.join(', ')}"
-        raise DeclarationError.new(
-          "slave_of: '#{name}' names no service of #{self.name}#{Naming.did_you_mean(name, known)}",
-          location: location, hint: hint
-        )
-      end
-
-      def check_service_options(name, mappings, location)
-        unless name.match?(/\A[a-z_]\w*\z/)
-          raise DeclarationError.new("'#{name}' is not a valid service name",
-                                     location: location, hint: "use a lower-case name, e.g. as: 'gps'")
-        end
-        options = mappings.keys.grep(Symbol)
-        return if options.empty?
-
-        raise DeclarationError.new(
-          "unknown option #{options.map { |o| "#{o}:" }.join(', ')}",
-          location: location,
-          hint: "the only option is as: 'name'; port mappings are written 'service_port' => 'task_port'"
-        )
       end
     end
   end

@@ -30,6 +30,8 @@ module Syskit
         until queue.empty?
           task = queue.shift
           device = @context.device_of(task)
+          next unless device
+
           bus_tasks << task if device.com_bus?
           next unless device.attached?
 
@@ -57,7 +59,7 @@ module Syskit
         existing = @context.task_for(bus)
         return existing if existing
 
-        task = @drivers.instantiate(Requirement.new(bus, @context.profile))
+        task = @drivers.instantiate(InstanceRequirements.new(device: bus, profile: @context.profile))
         queue << task
         task
       end

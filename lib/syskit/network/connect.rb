@@ -3,11 +3,14 @@
 module Syskit
   module Network
     # Step 6: connects each attached device's driver and its bus driver
-    # (bus '<device>' -> device, device -> bus input) with their policies,
-    # and refuses several writers on an input that does not multiplex.
+    # (bus '<device>' -> device, device -> bus input) and the children of
+    # each composition, with their policies, and refuses several writers
+    # on an input that does not multiplex.
     class Connect
-      # A connection between two ports.
-      Connection = Struct.new(:from_task, :from_port, :to_task, :to_port, :policy, :device)
+      # A connection between two ports; +device+: the attached device of a
+      # bus link (nil for a composition's connection), +location+: where
+      # the connection is declared.
+      Connection = Struct.new(:from_task, :from_port, :to_task, :to_port, :policy, :device, :location)
 
       def initialize(context)
         @context = context
@@ -26,6 +29,8 @@ module Syskit
         rescue Syskit::Error => e
           @context.error(e)
         end
+        seen = {}
+        @context.compositions.each { |composition| connect_children(composition, seen) }
         check_multiplexing
       end
 
@@ -40,7 +45,52 @@ module Syskit
         end
 
         policy = Policy.for(to, to_task, device, into_bus: into_bus)
-        @context.connections << Connection.new(from_task, from, to_task, to, policy, device)
+        add(Connection.new(from_task, from, to_task, to, policy, device, device.declared_at))
+      end
+
+      def add(connection)
+        @context.connections << connection
+        connection.from_task.add_connection(connection)
+        connection.to_task.add_connection(connection)
+      end
+
+      # The connections a composition declares between its children, from
+      # the port that has the data to the port that takes it (through the
+      # exports of children that are compositions). Children left out
+      # (optional ones nothing was selected for) have no connections. A
+      # connection two compositions declare between the same (merged)
+      # tasks is made once.
+      def connect_children(composition, seen)
+        composition.model.connections.each do |declared|
+          from = composition.resolve_child_port(declared.from)
+          to = composition.resolve_child_port(declared.to)
+          next unless from && to
+
+          key = [from, to].flatten.map(&:object_id)
+          next if seen[key]
+
+          seen[key] = true
+          add(composition_connection(from, to, declared))
+        rescue Syskit::Error => e
+          @context.error(e)
+        end
+      end
+
+      def composition_connection(from, to, declared)
+        from_port = port_of(*from, :output, declared)
+        to_port = port_of(*to, :input, declared)
+        policy = declared.policy.empty? ? Policy.for_port(to_port) : Policy.declared(declared.policy, to_port)
+        Connection.new(from[0], from_port, to[0], to_port, policy, nil, declared.location)
+      end
+
+      def port_of(task, name, direction, declared)
+        port = task.find_port(name)
+        return port if port&.direction == direction
+
+        raise NetworkError.new("#{task} has no #{direction} port '#{name}' for the connection declared here",
+                               location: declared.location,
+                               hint: 'the component selected for the child does not have the port the ' \
+                                     'connection names: select one that provides it')
       end
 
       def port(task, name, direction, device)
@@ -74,11 +124,11 @@ module Syskit
       # +into+: the connections that write to one input port.
       def multiplexing_error(into)
         sink = into.first
-        sources = into.map { |c| "#{c.from_task.name}.#{c.from_port.name} (#{c.device})" }
+        sources = into.map { |c| "#{c.from_task.name}.#{c.from_port.name} (#{c.device || c.location})" }
         NetworkError.new(
           "#{sink.to_task}'s input port '#{sink.to_port.name}' does not multiplex but " \
           "#{into.size} outputs write to it: #{sources.join(', ')}",
-          location: into.last.device.declared_at,
+          location: into.last.location,
           hint: 'mark it .multiplexes in the .orogen file if the component accepts several writers, ' \
                 'or give each device its own input port (dynamic_input_port)'
         )

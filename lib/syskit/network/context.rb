@@ -12,7 +12,7 @@ module Syskit
       ExpectedPort = Struct.new(:name, :direction, :type, :device)
 
       attr_reader :app, :profile, :robot_config, :requirements, :tasks, :bus_links,
-                  :expected_ports, :connections, :errors
+                  :expected_ports, :connections, :errors, :roots, :compositions
       attr_accessor :order, :stub_deployments
 
       def initialize(app:, requirements:, profile: nil, robot_config: nil, stub_deployments: false)
@@ -22,6 +22,8 @@ module Syskit
         @requirements = requirements
         @stub_deployments = stub_deployments
         @tasks = []
+        @roots = []
+        @compositions = []
         @task_by_device = {}.compare_by_identity
         @bus_links = []
         @expected_ports = Hash.new { |h, k| h[k] = [] }.compare_by_identity
@@ -35,9 +37,10 @@ module Syskit
         @tasks_by_name ||= @tasks.sort_by(&:name)
       end
 
+      # Adds a task made for +requirement+ (for +device+, when it drives one).
       def add_task(task, device, requirement)
         @tasks << task
-        @task_by_device[device] = task
+        @task_by_device[device] = task if device
         task.requirement = requirement
         task
       end
@@ -51,7 +54,8 @@ module Syskit
         task.requirement
       end
 
-      # The device a task was created for.
+      # The device a task was created for (nil for a task of a composition
+      # that drives no device).
       def device_of(task)
         task.requirement.device
       end

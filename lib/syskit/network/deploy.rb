@@ -1,11 +1,15 @@
 # frozen_string_literal: true
 
+require 'syskit/network/deploy_errors'
+
 module Syskit
   module Network
     # Step 3: binds every task to a deployed task of the robot configuration.
     # Among several candidates, the device's prefer_deployed_tasks chooses.
     # A device's deployed_as gives its driver a deployment of its own.
     class Deploy
+      include DeployErrors
+
       def initialize(context)
         @context = context
         # What stands for a deployed_as name when telling deployed tasks
@@ -19,7 +23,7 @@ module Syskit
         stub = @context.stub_deployments
         @context.tasks.each do |task|
           requirement = task.requirement
-          declared = declared(task, requirement.device.declared_deployment) unless stub
+          declared = declared(task, requirement.declared_deployment) unless stub
           deployed = declared || (stub ? stub_deployment(task) : choose(task, requirement))
           next unless deployed
 
@@ -51,7 +55,7 @@ module Syskit
       end
 
       def stub_deployment(task)
-        name = @context.device_of(task).name
+        name = task.plan_name
         Orogen::DeploymentSpec.new("stub_#{name}").add_task(name, task.model)
       end
 
@@ -84,70 +88,6 @@ module Syskit
           hint.is_a?(Regexp) ? index.list.select { |c| hint.match?(c.name) } : [index.by_name[hint]].compact
         end
         found.size > 1 ? found.uniq.sort_by(&:name) : found
-      end
-
-      def device_location(requirement)
-        requirement.device.declared_at
-      end
-
-      def none(task, requirement)
-        device = requirement.device
-        alternatives = library_deployments(task).map { |d| " or Syskit.conf.use_deployment '#{d}'" }.join
-        DeploymentError.new(
-          "no deployed task can run #{task.model.name}, the driver of #{device}, on #{@context.robot_config}",
-          location: device_location(requirement),
-          hint: "add to config/robots/#{@context.robot_config.name}.rb: " \
-                "Syskit.conf.use_deployment OroGen.#{task.model.name.gsub('::', '.')} => '#{device.name}'" \
-                "#{alternatives}"
-        )
-      end
-
-      # The deployments that oroGen libraries declare for +task+'s model.
-      def library_deployments(task)
-        @context.app.orogen.each_task_model.select { |m| m <= task.model }.flat_map do |m|
-          m.spec.library.deployments.values.select { |d| d.tasks.any? { |t| t.model <= task.model } }.map(&:name)
-        end
-      end
-
-      def no_preferred(task, requirement, candidates)
-        hints = requirement.deployment_hints.map(&:inspect).join(', ')
-        DeploymentError.new(
-          "no deployed task that can run the driver of #{requirement.device} (#{task.model.name}) " \
-          "matches prefer_deployed_tasks(#{hints}): #{Naming.enumerate(candidates)}",
-          location: requirement.device.deployment_hints_location || device_location(requirement),
-          hint: 'change the pattern, or deploy a task whose name matches it'
-        )
-      end
-
-      def several(task, requirement, candidates, index)
-        name = requirement.device.name
-        # A lookup: this error may be made for each of thousands of devices.
-        found = index.by_name[name]
-        named = found && (candidates.equal?(index.list) || candidates.include?(found))
-        example = named ? "'#{name}'" : "/#{candidates.first.name}/"
-        DeploymentError.new(
-          "several deployed tasks can run the driver of #{requirement.device} (#{task.model.name}): " \
-          "#{Naming.enumerate(candidates)}",
-          location: device_location(requirement),
-          hint: "choose one with .prefer_deployed_tasks(#{example}) on the device declaration"
-        )
-      end
-
-      def shared(deployed, first_task, second_task)
-        first = @context.device_of(first_task)
-        second = @context.device_of(second_task)
-        declared = second.declared_deployment
-        hint = if declared
-                 "give each device a deployed task of its own, e.g. deployed_as('#{second.name}')"
-               else
-                 'deploy one task per device (usually named after the device) and tell them apart ' \
-                   "with .prefer_deployed_tasks(/#{second.name}/)"
-               end
-        DeploymentError.new(
-          "#{first} and #{second} both need the deployed task #{deployed} " \
-          "(#{first} is declared at #{first.declared_at})",
-          location: declared&.location || second.declared_at, hint: hint
-        )
       end
     end
   end

@@ -2,23 +2,24 @@
 
 module Syskit
   module Network
-    # Step 1: one driver task per requested device, its +<name>_dev+
-    # arguments set to the device.
+    # The driver tasks of devices: one per device, its +<name>_dev+
+    # arguments set to the device (see Instantiate, which asks for them).
     class Drivers
       def initialize(context)
         @context = context
         @index = nil
       end
 
-      def run
-        @context.requirements.each do |requirement|
-          next @context.error(not_a_device(requirement)) unless requirement.is_a?(Requirement)
-          next if @context.task_for(requirement.device)
+      # The driver task of +requirement+'s device (a slave device's is its
+      # master's), made now. +expected_model+: the task model the device's
+      # driver must be (a composition child naming the driver).
+      def instantiate_device(requirement, expected_model: nil)
+        device = requirement.device
+        return instantiate_slave(requirement) if device.master_device
 
-          requirement.device.master_device ? instantiate_slave(requirement) : instantiate(requirement)
-        rescue Syskit::Error => e
-          @context.error(e)
-        end
+        task = instantiate(requirement)
+        check_expected(task, device, expected_model, requirement) if expected_model
+        task
       end
 
       # Creates the driver task of +requirement+'s device.
@@ -46,8 +47,21 @@ module Syskit
       # Context#task_for), made here when the master is not in the network
       # yet, with the slave requirement's conf and hints.
       def instantiate_slave(requirement)
-        instantiate(Requirement.new(requirement.device.master_device, requirement.profile,
-                                    conf: requirement.conf, deployment_hints: requirement.deployment_hints))
+        master = requirement.device.master_device
+        @context.task_for(master) ||
+          instantiate(InstanceRequirements.new(device: master, profile: requirement.profile,
+                                               conf: requirement.conf, deployment_hints: requirement.deployment_hints,
+                                               declared_at: requirement.declared_at))
+      end
+
+      def check_expected(task, device, model, requirement)
+        return if task.model <= model
+
+        raise NetworkError.new(
+          "#{device} is driven by #{task.model.name}, but it is selected where a #{model.name} is required",
+          location: requirement.declared_at || device.declared_at,
+          hint: "select a device driven by #{model.name}, or declare the device with using: #{model.name}"
+        )
       end
 
       private
@@ -69,15 +83,6 @@ module Syskit
             task.create_port(port.direction, port.name, port.type, location: slave.declared_at)
           end
         end
-      end
-
-      def not_a_device(requirement)
-        what = requirement.respond_to?(:name) ? requirement.name : requirement.inspect
-        NetworkError.new(
-          "#{what} is not a device: a driver task without a device is refused",
-          location: Location.of_caller,
-          hint: "pass a profile's device action (Base.gps_dev) or a stub device (syskit_stub_device(Model))"
-        )
       end
     end
   end

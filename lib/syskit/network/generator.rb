@@ -1,6 +1,10 @@
 # frozen_string_literal: true
 
-require 'syskit/network/requirement'
+require 'syskit/network/stub_models'
+require 'syskit/network/selection'
+require 'syskit/network/instantiation_errors'
+require 'syskit/network/instantiate'
+require 'syskit/network/merge'
 require 'syskit/network/context'
 require 'syskit/network/drivers'
 require 'syskit/network/buses'
@@ -13,11 +17,11 @@ require 'syskit/network/plan'
 
 module Syskit
   module Network
-    # Turns requirements (a profile's device actions) into a network of
-    # configured tasks and its Plan. Each step is a class of its own, run in
+    # Turns requirements (a profile's device actions and definitions) into a
+    # network of configured tasks and its Plan. Each step is a class of its own, run in
     # this order; a step's errors are all reported together.
     class Generator
-      STEPS = [Drivers, Buses, Deploy, Order, Configure, Connect].freeze
+      STEPS = [Instantiate, Merge, Buses, Deploy, Order, Configure, Connect].freeze
 
       # What generation gives: the plan, the configured tasks, and how long
       # each step took (seconds, by step name).
@@ -50,9 +54,13 @@ module Syskit
                         location: profile.declared_at, hint: "its actions are #{actions.join(', ')}")
       end
 
-      def initialize(app, requirements, profile: nil, robot_config: nil, stub_deployments: false)
+      # +stub_deployments+ (tests): each task gets a deployment of its own;
+      # +stub_abstract+ (tests): abstract children are filled with stubs.
+      def initialize(app, requirements, profile: nil, robot_config: nil, stub_deployments: false,
+                     stub_abstract: false)
         @context = Context.new(app: app, requirements: requirements, profile: profile,
                                robot_config: robot_config, stub_deployments: stub_deployments)
+        @stub_abstract = stub_abstract
       end
 
       # Runs the steps (all of them, or up to and including +through+) and
@@ -63,7 +71,7 @@ module Syskit
         timings = {}
         STEPS[0..STEPS.index(through)].each do |step|
           before_step&.call
-          timings[Naming.underscore(step.name.split('::').last)] = measure { step.new(@context).run }
+          timings[Naming.underscore(step.name.split('::').last)] = measure { step_for(step).run }
           @context.raise_errors
         end
         return Result.new(nil, @context, timings) unless through == STEPS.last
@@ -75,6 +83,10 @@ module Syskit
       end
 
       private
+
+      def step_for(step)
+        step == Instantiate ? step.new(@context, stub_abstract: @stub_abstract) : step.new(@context)
+      end
 
       def measure
         start = Process.clock_gettime(Process::CLOCK_MONOTONIC)

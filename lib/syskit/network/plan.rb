@@ -38,6 +38,13 @@ module Syskit
       Bus = Struct.new(:name, :bitrate, :utilization, :frames)
       # A frame declared on a bus; times are Rational seconds.
       Frame = Struct.new(:id, :extended, :bytes, :period, :deadline, :jitter, :device, :declared_at)
+      # A composition of the plan, named after where it stands (a
+      # definition, +definition.child+ for a composition child): its model,
+      # the action it was made for (+Base.x_def+, nil for a child), its
+      # arguments and sections, its children (role => task or composition
+      # name), its exports (port => Endpoint of the task that has it) and
+      # its parent composition's name (nil for a root).
+      Composition = Struct.new(:name, :model, :action, :arguments, :conf, :children, :exports, :parent)
 
       # Entries are built by position, the fast way; tests and tools name
       # the fields they need (the others are nil):
@@ -52,9 +59,9 @@ module Syskit
           new(*members.map { |m| fields[m] })
         end
       end
-      [Task, Port, Device].each { |entry| entry.extend(ByField) }
+      [Task, Port, Device, Composition].each { |entry| entry.extend(ByField) }
 
-      attr_reader :profile, :robot, :tasks, :devices, :connections, :order, :buses
+      attr_reader :profile, :robot, :tasks, :devices, :connections, :order, :buses, :compositions
 
       NO_ATTRIBUTES = {}.freeze
       NO_DEPENDENCIES = [].freeze
@@ -71,8 +78,25 @@ module Syskit
           devices: device_entries(context, paths),
           connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
           order: context.order.map { |s| Step.new(s.step, s.task.name).freeze },
-          buses: bus_entries(context, paths)
+          buses: bus_entries(context, paths),
+          compositions: context.compositions.map { |c| composition_entry(c) }.sort_by!(&:name)
         )
+      end
+
+      def self.composition_entry(composition)
+        requirement = composition.requirement
+        exports = composition.model.exports.keys.sort.each_with_object({}) do |name, all|
+          task, port = composition.resolve_export(name)
+          all[name] = Endpoint.new(task.name, port).freeze if task
+        end
+        Composition.new(
+          composition.name, composition.model.short_name,
+          (requirement.to_s if requirement.name && !composition.parent),
+          freeze_plain(composition.arguments.sort.to_h { |k, v| [k.to_s, plain_argument(v)] }),
+          composition.conf,
+          composition.children_by_role.transform_values(&:name).freeze,
+          exports.freeze, composition.parent&.name
+        ).freeze
       end
 
       # The CAN buses of the plan that have a wire of their own (not
@@ -80,7 +104,7 @@ module Syskit
       def self.bus_entries(context, paths)
         context.tasks_by_name.filter_map do |task|
           bus = context.device_of(task)
-          next unless bus.com_bus? && Robot::CanTraffic.can_bus?(bus) && bus.carrier.equal?(bus)
+          next unless bus&.com_bus? && Robot::CanTraffic.can_bus?(bus) && bus.carrier.equal?(bus)
 
           frames = bus.frames_on_wire.sort_by.with_index { |f, i| [f.arbitration_key, f.device.to_s, i] }
           utilization = bus.bitrate && CAN::Timing.utilization(bus.bitrate, frames)
@@ -126,7 +150,8 @@ module Syskit
         case value
         when Types::StructValue then value.class.type.to_plain(value)
         when Array then value.map { |v| plain_argument(v) }
-        when Symbol then value.to_s
+        when Hash then value.to_h { |k, v| [k.to_s, plain_argument(v)] }
+        when Symbol, Robot::Device, Module then value.to_s
         else value
         end
       end
@@ -144,6 +169,8 @@ module Syskit
         entries = []
         context.tasks.each do |task|
           device = context.device_of(task)
+          next unless device
+
           entries << device_entry(device, task, paths)
           device.each_slave { |slave| entries << device_entry(slave, task, paths) }
         end
@@ -219,7 +246,7 @@ module Syskit
         "#{conn.from.task}\0#{conn.from.port}\0#{conn.to.task}\0#{conn.to.port}"
       end
 
-      def initialize(profile:, robot:, tasks:, devices:, connections:, order:, buses: [])
+      def initialize(profile:, robot:, tasks:, devices:, connections:, order:, buses: [], compositions: [])
         @profile = profile.freeze
         @robot = robot.freeze
         @tasks = tasks.freeze
@@ -227,7 +254,12 @@ module Syskit
         @connections = connections.freeze
         @order = order.freeze
         @buses = buses.freeze
+        @compositions = compositions.freeze
         freeze
+      end
+
+      def find_composition(name)
+        compositions.find { |c| c.name == name }
       end
 
       # The bus entry named +name+ (nil when the plan has none).
@@ -260,7 +292,7 @@ module Syskit
 
       # The parts of the plan that are lists of entries, in document order
       # (after 'profile' and 'robot').
-      LISTS = %w[tasks devices connections order buses].freeze
+      LISTS = %w[tasks devices connections order buses compositions].freeze
 
       # The plan as plain data, the JSON document's content.
       def to_h
@@ -281,7 +313,7 @@ module Syskit
 
       # The method making the plain data of an entry, by list (but tasks).
       ENTRY_HASHES = { 'devices' => :device_hash, 'connections' => :connection_hash, 'order' => :step_hash,
-                       'buses' => :bus_hash }.freeze
+                       'buses' => :bus_hash, 'compositions' => :composition_hash }.freeze
 
       private
 
@@ -322,6 +354,15 @@ module Syskit
               'period' => f.period.to_f, 'deadline' => f.deadline.to_f, 'jitter' => f.jitter.to_f,
               'declared_at' => f.declared_at }
           end
+        }
+      end
+
+      def composition_hash(composition)
+        {
+          'name' => composition.name, 'model' => composition.model, 'action' => composition.action,
+          'arguments' => composition.arguments, 'conf' => composition.conf, 'children' => composition.children,
+          'exports' => composition.exports.transform_values { |e| { 'task' => e.task, 'port' => e.port } },
+          'parent' => composition.parent
         }
       end
 

@@ -40,6 +40,23 @@ module Syskit
         buffer(size)
       end
 
+      # The policy of a composition's connection into +sink_port+ that
+      # declares none: buffered when the port needs it, else data.
+      def for_port(sink_port)
+        return DATA unless sink_port.reliable? || sink_port.buffer_size
+
+        buffer([DEFAULT_BUFFER_SIZE, sink_port.buffer_size || 0].max)
+      end
+
+      # A declared policy (+connect_to port, type: :buffer, size: 10+), at
+      # least what the sink port needs.
+      def declared(policy, sink_port)
+        return policy unless policy['type'] == 'buffer' && sink_port.buffer_size
+        return policy if (policy['size'] || 0) >= sink_port.buffer_size
+
+        policy.merge('size' => sink_port.buffer_size).freeze
+      end
+
       # Policies are values: one frozen hash per size.
       def buffer(size)
         (@buffers ||= {})[size] ||= { 'type' => 'buffer', 'size' => size }.freeze

@@ -2,6 +2,7 @@
 
 require 'syskit/render/output'
 require 'syskit/can/timing/format'
+require 'syskit/render/text_compositions'
 
 module Syskit
   module Render
@@ -32,6 +33,7 @@ module Syskit
       # Writes the plan to +io+; returns +io+.
       def write(plan, io)
         out = "Plan of #{plan.profile} on robot '#{plan.robot}'\n"
+        Compositions.write(plan, out, io)
         out << "\nTasks (#{plan.tasks.size})\n"
         plan.tasks.each { |task| Output.flush(task_text(task, out), io) }
         out << "\nConnections (#{plan.connections.size})\n"

@@ -11,11 +11,21 @@ module Syskit
       def initialize(profile)
         @profile = profile
         @devices = {}
+        @used = []
         @declaring = false
       end
 
+      # The devices of this robot: those of the robots it uses (see
+      # #use_robot), then its own, in declaration order.
       def devices
-        @devices.values
+        return @devices.values if @used.empty?
+
+        (@used.flat_map(&:devices) + @devices.values).uniq
+      end
+
+      # Makes the devices of +robot+ (a used profile's) devices of this one.
+      def use_robot(robot)
+        @used << robot unless robot.equal?(self) || @used.include?(robot)
       end
 
       # Evaluates a robot block's declarations (see Device#read_attribute).
@@ -35,22 +45,31 @@ module Syskit
       # The device +name+; +master.slave+ names a slave device.
       def find_device(name)
         name = name.to_s
-        found = @devices[name]
+        found = @devices[name] || used_device(name)
         return found if found || !name.include?('.')
 
         master, slave = name.split('.', 2)
-        @devices[master]&.find_slave(slave)
+        find_device(master)&.find_slave(slave)
+      end
+
+      # The device +name+ of a used robot.
+      def used_device(name)
+        @used.each do |robot|
+          found = robot.find_device(name)
+          return found if found
+        end
+        nil
       end
 
       # Enumerates the slave devices of every device, master by master.
       def each_slave_device(&block)
         return enum_for(__method__) unless block
 
-        @devices.each_value { |device| device.each_slave(&block) }
+        devices.each { |device| device.each_slave(&block) }
       end
 
       def device_names
-        @devices.keys
+        devices.map(&:name)
       end
 
       # Declares a device (+klass+ Device) or a bus (ComBus); +bus+ is the

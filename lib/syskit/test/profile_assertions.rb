@@ -15,11 +15,11 @@ module Syskit
     # generator's messages (file:line, hint), as `syskit plan` prints them.
     module ProfileAssertions
       def is_self_contained(*actions)
-        syskit_check_each(actions, Network::Drivers)
+        syskit_check_each(actions, Network::Instantiate)
       end
 
       def is_self_contained_together(*actions)
-        syskit_check_together(actions, Network::Drivers)
+        syskit_check_together(actions, Network::Instantiate)
       end
 
       def can_instanciate(*actions)
@@ -61,7 +61,7 @@ module Syskit
         return profile.all_requirements if actions.empty?
 
         actions.map do |action|
-          next action if action.is_a?(Network::Requirement)
+          next action if action.is_a?(InstanceRequirements)
 
           profile.find_action(action) || flunk(Network::Generator.unknown_action(profile, action).report(Test.app.root))
         end
@@ -72,7 +72,7 @@ module Syskit
       end
 
       def syskit_check_together(actions, through)
-        requirements = actions.all?(Network::Requirement) && !actions.empty? ? actions : syskit_requirements(actions)
+        requirements = actions.all?(InstanceRequirements) && !actions.empty? ? actions : syskit_requirements(actions)
         app = Test.app
         Network::Generator.new(app, requirements, profile: syskit_profile,
                                                   robot_config: app.robot_config(Test.robot)).generate(through: through)

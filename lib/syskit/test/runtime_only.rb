@@ -12,7 +12,7 @@ module Syskit
       # Test methods of Syskit's harness that need a running system.
       METHODS = %i[
         syskit_deploy syskit_deploy_and_configure syskit_configure syskit_start syskit_configure_and_start
-        syskit_deploy_configure_and_start syskit_stub_and_deploy syskit_stub_deploy_configure_and_start
+        syskit_deploy_configure_and_start syskit_stub_deploy_configure_and_start
         syskit_start_execution_agents syskit_write syskit_create_reader syskit_create_writer syskit_stop
         syskit_stub_deployment expect_execution execute execute_one_cycle plan assert_event_emission
         assert_has_one_new_sample assert_has_no_new_sample assert_event_command_failed assert_times_out
@@ -23,18 +23,17 @@ module Syskit
         define_method(name) { |*_args, **_options, &_block| skip("#{name} #{REASON}") }
       end
 
-      # Test helpers of Syskit about models this gem does not model
-      # (compositions, made-up types): the test is skipped, saying so.
-      NOT_MODELLED_HELPERS = %i[stub_type clear_newly_defined_models syskit_stub_requirements
-                                syskit_stub_network syskit_generate_network].freeze
-      NOT_MODELLED = 'is about what this gem does not model (compositions, Roby): skipped'
+      # Test helpers of Syskit about what this gem does not model (Roby's
+      # plans): the test is skipped, saying so.
+      NOT_MODELLED_HELPERS = %i[syskit_stub_requirements syskit_generate_network].freeze
+      NOT_MODELLED = 'is about what this gem does not model (Roby): skipped'
 
       NOT_MODELLED_HELPERS.each do |name|
         define_method(name) { |*_args, **_options, &_block| skip("#{name} #{NOT_MODELLED}") }
       end
 
-      # The tests of a composition, a Roby task or an action interface are
-      # skipped: these are not modelled.
+      # The tests of a Roby task or an action interface are skipped: these
+      # are not modelled.
       # Nested describe blocks count: their classes are subclasses of the
       # outer ones.
       def before_setup

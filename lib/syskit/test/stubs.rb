@@ -53,17 +53,41 @@ module Syskit
       # deployments, configures it in order, and returns the device's task.
       # The task is also available as +task+ afterwards.
       #
-      # Given a task model instead, its devices are stubbed first (see
-      # TaskAssertions#is_configurable).
+      # Given a task model (or its requirements), its devices are stubbed
+      # first (see TaskAssertions#is_configurable); given a composition (or
+      # its requirements), the composition task, as syskit_stub_and_deploy.
       def syskit_stub_deploy_and_configure(device)
-        device = Models::TaskRequirements.new(device) if device.is_a?(Class) && device < TaskContext
-        return syskit_stub_requirements_and_configure(device) if device.is_a?(Models::TaskRequirements)
+        device = device.to_instance_requirements if device.is_a?(Class) && device < Component
+        if device.is_a?(InstanceRequirements) && !device.device
+          return syskit_stub_requirements_and_configure(device) unless device.composition?
 
-        # Anything else than a device is refused by the generator, with the reason.
-        requirement = device.is_a?(Robot::Device) ? Network::Requirement.new(device) : device
-        result = Network::Generator.new(Test.app, [requirement], stub_deployments: true).generate
-        @syskit_stub_result = result
+          return syskit_stub_and_deploy(device)
+        end
+
+        requirement = device.is_a?(Robot::Device) ? InstanceRequirements.from(device) : device
+        result = syskit_stub_generate([requirement])
         @task = result.task_for(requirement.device)
+      end
+
+      # Generates the network of +model+ (a composition or task model, or
+      # requirements such as +Cmp.use(...)+) as Syskit's tests do: what is
+      # still abstract is stubbed (a task providing the services, a device
+      # and its driver), every task stub-deployed and configured. Returns
+      # the root task (the composition), also available as +task+.
+      def syskit_stub_and_deploy(model = syskit_described_model, &block)
+        models = model.is_a?(Array) ? model : [model]
+        requirements = models.map { |m| m.respond_to?(:to_instance_requirements) ? m.to_instance_requirements : m }
+        result = syskit_stub_generate(requirements, &block)
+        roots = result.context.roots
+        @task = model.is_a?(Array) ? roots : roots.first
+      end
+      alias syskit_stub_network syskit_stub_and_deploy
+
+      # Generates +requirements+ with stub deployments and stubbed
+      # abstract children.
+      def syskit_stub_generate(requirements)
+        result = Network::Generator.new(Test.app, requirements, stub_deployments: true, stub_abstract: true).generate
+        @syskit_stub_result = result
       end
 
       # The task returned by the last syskit_stub_deploy_and_configure.
@@ -75,6 +99,14 @@ module Syskit
       end
 
       private
+
+      # The described model (+describe Compositions::X do+).
+      def syskit_described_model
+        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
+        return desc if desc.is_a?(Class) && desc < Component
+
+        flunk "syskit_stub_and_deploy needs a model, or `describe Model do ... end`, not #{desc.inspect}"
+      end
 
       def syskit_stub_robot
         @syskit_stub_robot ||= Robot::Definition.new(nil)
@@ -117,63 +149,6 @@ module Syskit
       end
     end
 
-    # Models made up for stubs: device models and driver task models.
-    module StubModels
-      module_function
-
-      def device_model(base)
-        model = base.class.new(name: "stub #{base.name || 'device'}")
-        model.provides(base)
-        model
-      end
-
-      # A driver for +model+, with the ports of the model.
-      def device_driver(model)
-        ports = model.ports.values.map { |p| Syskit::Port.new(p.name, p.direction, p.type) }
-        task_model("stub_driver_for_#{model_slug(model)}", ports: ports) do |task|
-          task.driver_for(model, as: 'dev')
-        end
-      end
-
-      # A demultiplexing bus driver: per-device dynamic ports for both directions.
-      def bus_driver(bus_model)
-        type = bus_model.message_type
-        task_model("stub_bus_driver_for_#{model_slug(bus_model)}", dynamic: bus_ports(type)) do |task|
-          task.driver_for(bus_model, as: 'bus')
-        end
-      end
-
-      # A driver for +model+ with the client ports of +bus_model+. When
-      # +model+ is a bus itself, the driver also serves the devices attached
-      # to it, through per-device ports of its own message type.
-      def client_driver(model, bus_model, bus_to_client:, client_to_bus:)
-        type = bus_model.message_type
-        ports = []
-        ports << Syskit::Port.new('from_bus', :input, type) if bus_to_client
-        ports << Syskit::Port.new('to_bus', :output, type) if client_to_bus
-        dynamic = model.is_a?(Models::ComBusModel) ? bus_ports(model.message_type) : []
-        task_model("stub_driver_for_#{model_slug(model)}", ports: ports, dynamic: dynamic) do |task|
-          task.driver_for(model, as: model.is_a?(Models::ComBusModel) ? 'bus' : 'dev')
-        end
-      end
-
-      def bus_ports(type)
-        [Syskit::DynamicPort.new(/^\w+$/, :output, type), Syskit::DynamicPort.new(/^w\w+$/, :input, type)]
-      end
-
-      def task_model(name, ports: [], dynamic: [])
-        spec = Orogen::TaskSpec.new("stubs::#{name}", nil)
-        ports.each { |p| spec.ports[p.name] = p }
-        spec.dynamic_ports.concat(dynamic)
-        spec.finalize
-        model = TaskContext.new_model(spec)
-        yield(model)
-        model
-      end
-
-      def model_slug(model)
-        Naming.underscore(model.name.to_s.split('::').last.to_s.gsub(/\W/, '_'))
-      end
-    end
+    StubModels = Network::StubModels
   end
 end

@@ -54,21 +54,22 @@ module Syskit
       # A task model, or its requirements (+with_conf+, +with_arguments+):
       # its devices stubbed, deployed and configured.
       def syskit_stub_requirements_and_configure(requirements)
-        devices = syskit_stub_driven_devices(requirements.model)
+        devices = syskit_stub_driven_devices(requirements.component_model)
         return syskit_configure_alone(requirements) if devices.empty?
 
         devices.map do |dev|
-          requirement = Network::Requirement.new(dev, conf: requirements.conf, arguments: requirements.arguments)
+          requirement = InstanceRequirements.new(device: dev, conf: requirements.conf_given? ? requirements.conf : nil,
+                                                 arguments: requirements.arguments)
           syskit_stub_deploy_and_configure(requirement)
         end.first
       end
 
       # Configures a task of +requirements+' model made for no device.
       def syskit_configure_alone(requirements)
-        model = requirements.model
+        model = requirements.component_model
         context = Network::Context.new(app: Test.app, requirements: [], stub_deployments: true)
         task = model.new(requirements.arguments.dup)
-        task.conf = requirements.conf if requirements.conf
+        task.conf = requirements.conf
         deployment = Orogen::DeploymentSpec.new("stub_#{model.name.tr(':', '_')}")
         task.deployed_task = deployment.add_task("stub_#{model.name.split('::').last.downcase}", model)
         Network::Configure.new(context).configure(task)

@@ -24,7 +24,7 @@ module Syskit
   # operation a stub block defined runs that definition, in call order
   # (see Network::Configure). An operation therefore returns nil in
   # +configure+.
-  class Component
+  class OrocosTask
     # One call of an operation: its name and arguments.
     OperationCall = Struct.new(:name, :arguments)
     NO_CALLS = [].freeze

@@ -1,0 +1,17 @@
+# frozen_string_literal: true
+
+require 'syskit/models/component_model'
+
+module Syskit
+  # The root of the components of a network, as in Syskit: task contexts
+  # and compositions are Components. Models (the subclasses) are extended
+  # with Models::ComponentModel.
+  class AbstractComponent
+    extend Models::ComponentModel
+  end
+
+  # What task contexts and compositions are (Syskit::Component): the
+  # class test files and custom models name.
+  class Component < AbstractComponent
+  end
+end

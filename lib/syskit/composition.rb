@@ -1,0 +1,139 @@
+# frozen_string_literal: true
+
+require 'syskit/models/composition_model'
+
+module Syskit
+  # A composition: components put together for one purpose, their ports
+  # connected (Syskit::Composition). Models are subclasses:
+  #
+  #   class ArmControl < Syskit::Composition
+  #     add OroGen.arm.Controller, as: 'controller'
+  #     add Devices::Arm, as: 'arm'
+  #     controller_child.command_port.connect_to arm_child.command_port
+  #   end
+  #
+  # In a network, a composition is not deployed: it groups its children
+  # (tasks or other compositions, +controller_child+), whose connections
+  # the generator makes. It is named after where it stands in the plan
+  # (+arm_control+, +arm_control.controller+ for a composition child).
+  class Composition < Component
+    extend Models::CompositionModel
+
+    attr_reader :arguments
+    attr_accessor :conf, :name, :requirement, :parent
+
+    def initialize(arguments = {})
+      super()
+      @arguments = arguments
+      @children = {}
+      @child_selections = {}
+      @conf = InstanceRequirements::DEFAULT_CONF
+    end
+
+    # The requirements selected for each child, by role (what the child
+    # task was made from).
+    attr_reader :child_selections
+    alias child_selection child_selections
+
+    def model
+      self.class
+    end
+
+    # The child task of role +role+ (a task or a composition).
+    def child_task(role)
+      @children.fetch(role.to_s) do
+        raise ArgumentError, "#{self} has no child '#{role}' (its children: #{@children.keys.sort.join(', ')})"
+      end
+    end
+    alias find_child child_task
+
+    def add_child(role, task)
+      @children[role] = task
+    end
+
+    # The children as [task, { role: name }] pairs, in the model's order.
+    def each_child(&block)
+      return enum_for(__method__) unless block
+
+      @children.each { |role, task| yield task, { role: role } }
+    end
+
+    # Children by role.
+    def children_by_role
+      @children
+    end
+
+    def children
+      @children.values
+    end
+
+    def has_role?(role) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+      @children.key?(role.to_s)
+    end
+
+    def each_role(&)
+      @children.each_key(&)
+    end
+
+    # The port +name+ of the composition: the port of the child it is
+    # exported from, down to the task that has it.
+    def find_port(name)
+      resolved = resolve_export(name.to_s)
+      resolved && resolved[0].find_bound_port(resolved[1])
+    end
+    alias find_bound_port find_port
+
+    # The task and port name the exported port +name+ is in the network.
+    def resolve_export(name)
+      export = model.exports[name]
+      export && resolve_child_port(export.port)
+    end
+
+    # The task and port name that +port+ (a port of one of the model's
+    # children) is in the network: the child task's port it maps to,
+    # followed through the exports of a child composition. Nil when the
+    # child was left out.
+    def resolve_child_port(port)
+      task = @children[port.child_name]
+      return unless task
+
+      name = Composition.port_name_in(@child_selections[port.child_name], task.model, port.owner, port.owner_port)
+      return unless name
+
+      task.is_a?(Composition) ? task.resolve_export(name) : [task, name]
+    end
+
+    # The name of the port of +model+ (the component selected with
+    # +selection+) that the port +port_name+ of +owner+ (a model the child
+    # requires) is: through the selected service when there is one.
+    def self.port_name_in(selection, model, owner, port_name)
+      service = selection&.service || device_service(selection, model)
+      if service && owner.is_a?(Models::DataServiceModel) && service.fullfills?(owner)
+        return service.task_port_for(owner, port_name)&.name
+      end
+
+      Models.mapped_port_name(model, owner, port_name)
+    end
+
+    # The service through which a device's driver drives it.
+    def self.device_service(selection, model)
+      device = selection&.device
+      return unless device
+      return device.service if device.master_device
+
+      model.driver_services_for(device.model).first
+    end
+
+    def ports
+      model.ports
+    end
+
+    def to_s
+      "#{model.short_name}#{" '#{name}'" if name}"
+    end
+
+    def inspect
+      "#<#{self}>"
+    end
+  end
+end

@@ -1,0 +1,286 @@
+# frozen_string_literal: true
+
+module Syskit
+  # What a network must contain, as Syskit's InstanceRequirements: a model
+  # (a task or composition model, or services to be provided by a component
+  # chosen later), or a device of the robot (its driver), with what is
+  # asked of it:
+  #
+  #   Compositions::ArmControl.use('arm' => Base.arm_dev).with_arguments(speed: 0.1)
+  #   OroGen.gps.Task.with_conf('default', 'rtk').prefer_deployed_tasks(/gps/)
+  #   Base.gps_dev                       # a device's driver
+  #
+  # A frozen value: every statement returns a changed copy. A profile's
+  # definitions and device actions are requirements with a +name+.
+  class InstanceRequirements
+    NO_ARGUMENTS = {}.freeze
+    NO_HINTS = [].freeze
+    DEFAULT_CONF = ['default'].freeze
+    FIELDS = %i[models device service profile name arguments conf deployment_hints deployment
+                selections specialization_hints declared_at].freeze
+
+    attr_reader :device, :service, :profile, :name, :arguments, :deployment, :selections,
+                :specialization_hints, :declared_at
+
+    # Whether +value+ can stand for a component in a network (what +use+
+    # and +add+ accept).
+    def self.selectable?(value)
+      value.is_a?(InstanceRequirements) || value.is_a?(Models::DataServiceModel) ||
+        value.is_a?(Robot::Device) || value.is_a?(Models::BoundService) ||
+        value.is_a?(Models::CompositionChild) || value.is_a?(Profile::Tag) ||
+        (value.is_a?(Class) && value < AbstractComponent) ||
+        (value.is_a?(Array) && !value.empty? && value.all? { |v| selectable?(v) })
+    end
+
+    # The requirements +value+ stands for (see .selectable?).
+    def self.from(value, location: nil)
+      case value
+      when InstanceRequirements then value
+      when Profile::Tag then value.requirements
+      when Robot::Device then new(device: value, declared_at: value.declared_at)
+      when Models::BoundService then new([value.task_model], service: value, declared_at: location)
+      when Models::CompositionChild then value.requirements
+      when Array then new(value.map { |v| from(v, location: location).models }.flatten.uniq, declared_at: location)
+      else new([value], declared_at: location)
+      end
+    end
+
+    # The models +value+ (a selection) fullfills: what a default selection
+    # is registered under.
+    def self.fullfilled_models_of(value)
+      from(value).fullfilled_models
+    end
+
+    def initialize(models = nil, device: nil, service: nil, profile: nil, name: nil, arguments: NO_ARGUMENTS,
+                   conf: nil, deployment_hints: nil, deployment: nil, selections: DependencyInjection::EMPTY,
+                   specialization_hints: NO_HINTS, declared_at: nil, open: false)
+      @models = models&.freeze
+      @device = device
+      @service = service
+      @profile = profile
+      @name = name
+      @arguments = arguments.frozen? ? arguments : arguments.dup.freeze
+      @conf = conf&.freeze
+      @deployment_hints = deployment_hints&.freeze
+      @deployment = deployment
+      @selections = selections
+      @specialization_hints = specialization_hints
+      @declared_at = declared_at
+      freeze unless open
+    end
+
+    # The required models: a component model and/or data service models;
+    # a device's model for a device.
+    def models
+      @models || [device.model]
+    end
+
+    # The task or composition model among the models (nil when only
+    # services are required: the requirements are then abstract).
+    def component_model
+      models.find { |m| m.is_a?(Class) }
+    end
+
+    def composition?
+      component_model.is_a?(Class) && component_model <= Composition
+    end
+
+    # Whether something must still be chosen to fill these requirements.
+    def abstract?
+      return false if device
+
+      model = component_model
+      model.nil? || model.abstract?
+    end
+
+    # Configuration sections; a device's own, or ['default'].
+    def conf
+      @conf || device&.conf || DEFAULT_CONF
+    end
+
+    # Whether sections were chosen on these requirements (not inherited).
+    def conf_given?
+      !@conf.nil?
+    end
+
+    def deployment_hints
+      @deployment_hints || device&.deployment_hints || NO_HINTS
+    end
+
+    # Where the deployment hints were given, for errors about them.
+    def deployment_hints_location
+      (@deployment_hints ? declared_at : device&.deployment_hints_location) || declared_at
+    end
+
+    # The deployment given with deployed_as (a device's own when it has one).
+    def declared_deployment
+      deployment || device&.declared_deployment
+    end
+
+    # Each required model, then what they provide.
+    def fullfilled_models
+      list = []
+      models.each { |m| m.each_fullfilled_model { |f| list << f unless list.include?(f) } }
+      if device&.driver_resolved?
+        device.driver_model.each_fullfilled_model { |f| list << f unless list.include?(f) }
+      end
+      list
+    end
+
+    def each_fullfilled_model(&)
+      fullfilled_models.each(&)
+    end
+
+    def each_required_model(&)
+      models.each(&)
+    end
+
+    # Whether these requirements fullfill +model+ (or each of a list).
+    def fullfills?(model)
+      return model.all? { |m| fullfills?(m) } if model.is_a?(Array)
+
+      fullfilled_models.include?(model)
+    end
+    alias fulfills? fullfills?
+
+    # Configuration sections, replacing ['default'] as in Syskit.
+    def with_conf(*names)
+      names = names.flatten.map(&:to_s)
+      if names.empty?
+        raise DeclarationError.new('with_conf needs at least one section name',
+                                   location: Location.of_caller, hint: "write with_conf('default', 'forward')")
+      end
+
+      copy(conf: names)
+    end
+
+    # Task arguments (see ComponentModel#argument).
+    def with_arguments(**arguments)
+      copy(arguments: self.arguments.merge(arguments).freeze)
+    end
+
+    # Deployed tasks to prefer (names or regexps).
+    def prefer_deployed_tasks(*hints)
+      hints = hints.flatten
+      bad = hints.find { |h| !h.is_a?(String) && !h.is_a?(Regexp) }
+      if bad
+        raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{bad.inspect}",
+                                   location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
+      end
+
+      copy(deployment_hints: deployment_hints + hints, declared_at: Location.of_caller)
+    end
+
+    # A deployment of its own (see Robot::MasterDevice#deployed_as).
+    def deployed_as(name, on: nil) # rubocop:disable Lint/UnusedMethodArgument -- Syskit's signature
+      declare_deployment(name, false, Location.of_caller)
+    end
+
+    def deployed_as_unmanaged(name, on: nil) # rubocop:disable Lint/UnusedMethodArgument -- Syskit's signature
+      declare_deployment(name, true, Location.of_caller)
+    end
+
+    # Dependency injection (see DependencyInjection).
+    def use(*mappings)
+      location = Location.of_caller
+      copy(selections: selections.add(mappings, location), declared_at: declared_at || location)
+    end
+
+    # Which specializations to prefer when several apply.
+    def prefer_specializations(hints)
+      copy(specialization_hints: specialization_hints + [hints])
+    end
+
+    # A copy named +name+ in +profile+ (a definition).
+    def named(name, profile, location)
+      copy(name: name, profile: profile, declared_at: location)
+    end
+
+    # The composition model these requirements select once injection and
+    # specializations apply (Syskit's +narrow_model+).
+    def narrow_model
+      return component_model unless composition?
+
+      context = profile ? profile.dependency_injection_context : DependencyInjection::Context::EMPTY
+      component_model.narrow(context.push(selections), hints: specialization_hints)
+    end
+
+    def to_instance_requirements
+      self
+    end
+
+    # The child +name+ of the composition model (as +Cmp.use(...).x_child+).
+    def find_child(name)
+      component_model.respond_to?(:find_child) ? component_model.find_child(name) : nil
+    end
+
+    def to_s
+      base =
+        if name then profile ? "#{profile.name}.#{name}" : name
+        elsif device then "#{device.name}_dev"
+        elsif service then "#{service.task_model.name}.#{service.name}_srv"
+        else models.map { |m| m.respond_to?(:short_name) ? m.short_name : m.to_s }.join(',')
+        end
+      return base if name || device
+
+      parts = [base]
+      parts << selections.to_s unless selections.empty?
+      parts << "with_conf(#{conf.map(&:inspect).join(', ')})" if @conf
+      parts << "with_arguments(#{arguments.map { |k, v| "#{k}: #{v.inspect}" }.join(', ')})" unless arguments.empty?
+      parts.join('.')
+    end
+    alias inspect to_s
+    alias short_name to_s
+
+    # Merges +other+ (a selection for a child) over these requirements (the
+    # child's own): the selection's models, device and service, its
+    # arguments and sections when it gives some, both injections.
+    def merge_selection(other)
+      InstanceRequirements.new(
+        other.instance_variable_get(:@models), device: other.device, service: other.service,
+                                               profile: other.profile, name: other.name,
+                                               arguments: other.arguments.empty? ? arguments : other.arguments,
+                                               conf: other.conf_given? ? other.conf : @conf,
+                                               deployment_hints: other.raw_hints || @deployment_hints,
+                                               deployment: other.deployment || deployment,
+                                               selections: merged_selections(other),
+                                               specialization_hints: specialization_hints + other.specialization_hints,
+                                               declared_at: other.declared_at || declared_at
+      )
+    end
+
+    protected
+
+    def raw_hints
+      @deployment_hints
+    end
+
+    private
+
+    def merged_selections(other)
+      return selections if other.selections.empty?
+      return other.selections if selections.empty?
+
+      DependencyInjection.new(selections.explicit.merge(other.selections.explicit),
+                              selections.defaults + other.selections.defaults, other.selections.declared_at)
+    end
+
+    def declare_deployment(name, unmanaged, location)
+      unless name.respond_to?(:to_str) && name.to_str.match?(/\A[\w.-]+\z/)
+        raise DeclarationError.new("invalid deployed task name #{name.inspect} for #{self}",
+                                   location: location, hint: "write deployed_as('name_of_the_task')")
+      end
+
+      copy(deployment: Robot::MasterDevice::DeclaredDeployment.new(name.to_str, unmanaged, location))
+    end
+
+    def copy(**changes)
+      values = FIELDS.to_h { |f| [f, instance_variable_get(:"@#{f}")] }
+      values[:selections] ||= DependencyInjection::EMPTY
+      values[:arguments] ||= NO_ARGUMENTS
+      values[:specialization_hints] ||= NO_HINTS
+      models = values.delete(:models)
+      InstanceRequirements.new(models, **values, **changes)
+    end
+  end
+end

@@ -1,0 +1,163 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Models
+    # A port of a composition child (+arm_child.joints_cmd_port+): what
+    # +connect_to+ and +export+ take. It knows the model that declares it
+    # (the child's task model, or one of its service models) and its name
+    # there, so that it maps onto whatever component fills the child.
+    class ChildPort
+      attr_reader :child, :name, :direction, :type, :owner, :owner_port
+
+      # Connection policy keys Syskit accepts (Orocos's), and the kinds of
+      # connections.
+      POLICY_KEYS = %i[type size init pull lock lock_policy transport data_size name_id].freeze
+      POLICY_TYPES = %i[data buffer circular_buffer].freeze
+
+      def initialize(child, name, direction, type, owner, owner_port)
+        @child = child
+        @name = name
+        @direction = direction
+        @type = type
+        @owner = owner
+        @owner_port = owner_port
+      end
+
+      def input?
+        direction == :input
+      end
+
+      def output?
+        direction == :output
+      end
+
+      def child_name
+        child.child_name
+      end
+
+      # The composition model the port's child belongs to.
+      def composition_model
+        child.composition_model
+      end
+
+      # Syskit's +port.component_model+: the child.
+      def component_model
+        child
+      end
+
+      def to_component_port
+        self
+      end
+
+      # Connects this output port to the input port +other+ (or to the only
+      # input port of +other+'s type when +other+ is a child), with an
+      # optional policy: +connect_to other, type: :buffer, size: 10+.
+      def connect_to(other, policy = {})
+        location = Location.of_caller
+        return ChildPort.autoconnect([self], other, policy, location) if other.is_a?(CompositionChild)
+
+        composition_model.add_connection(self, other, ChildPort.policy(policy, location), location)
+        self
+      end
+
+      # Whether this port and +other+ are connected in the composition.
+      def connected_to?(other)
+        composition_model.connected?(self, other)
+      end
+
+      # The same port seen from the most specific model the child requires
+      # (a port of a service is the port its provider maps it to): two
+      # child ports are the same port when their keys are equal.
+      def key
+        @key ||= begin
+          model = child.models.find { |m| !m.equal?(owner) && m.fullfills?(owner) }
+          name = model ? Models.mapped_port_name(model, owner, owner_port) : owner_port
+          [child_name, name || owner_port]
+        end
+      end
+
+      def same_port?(other)
+        other.respond_to?(:key) && key == other.key
+      end
+
+      def ==(other)
+        other.is_a?(ChildPort) && same_port?(other)
+      end
+      alias eql? ==
+
+      def hash
+        key.hash
+      end
+
+      def to_s
+        "#{child}.#{name}_port"
+      end
+      alias inspect to_s
+
+      # Policies as plain data ('type' => 'buffer', 'size' => 10), checked.
+      def self.policy(options, location)
+        options = options.transform_keys(&:to_sym)
+        unknown = options.keys - POLICY_KEYS
+        unless unknown.empty?
+          raise DeclarationError.new("unknown connection policy option #{unknown.map { |k| "#{k}:" }.join(', ')}",
+                                     location: location,
+                                     hint: "policies are written type: :buffer, size: 10 (or type: :data)")
+        end
+        type = options[:type]
+        if type && !POLICY_TYPES.include?(type.to_sym)
+          raise DeclarationError.new("unknown connection type #{type.inspect}",
+                                     location: location, hint: "use one of #{POLICY_TYPES.map(&:inspect).join(', ')}")
+        end
+
+        options.to_h { |k, v| [k.to_s, v.is_a?(Symbol) ? v.to_s : v] }.freeze
+      end
+
+      # Connects each of +outputs+ to the input port of +other+ (a child, or
+      # an input port) of the same type; a type with several candidates on
+      # the other side is an error naming them.
+      def self.autoconnect(outputs, other, policy, location)
+        inputs = other.is_a?(ChildPort) ? [other] : other.each_input_port.to_a
+        made = 0
+        outputs.each do |out|
+          candidates = inputs.select { |i| i.type == out.type }
+          next if candidates.empty?
+          if candidates.size > 1
+            candidates = candidates.select { |i| i.name == out.name }
+            raise ambiguous_autoconnect(out, other, inputs, location) unless candidates.size == 1
+          end
+
+          out.composition_model.add_connection(out, candidates.first, policy(policy, location), location)
+          made += 1
+        end
+        return unless made.zero?
+
+        raise DeclarationError.new(
+          "#{outputs.first&.child || 'the child'} has no output port of the type of an input of #{other}",
+          location: location, hint: 'connect ports explicitly: a_child.x_port.connect_to b_child.y_port'
+        )
+      end
+
+      def self.ambiguous_autoconnect(out, other, inputs, location)
+        names = inputs.select { |i| i.type == out.type }.map(&:name).sort
+        DeclarationError.new(
+          "#{out} could connect to several inputs of #{other}: #{names.join(', ')}",
+          location: location, hint: "connect it explicitly: #{out}.connect_to(#{other}.#{names.first}_port)"
+        )
+      end
+    end
+
+    # The name of the port of +model+ that +owner+'s port +port_name+ is
+    # (through a service +model+ provides, or the same name for a
+    # submodel); nil when +model+ does not fullfill +owner+.
+    def self.mapped_port_name(model, owner, port_name)
+      return port_name if model.equal?(owner) || (model.is_a?(Class) && owner.is_a?(Class) && model <= owner)
+
+      if model.is_a?(DataServiceModel)
+        return model.fullfills?(owner) ? model.port_mappings_for(owner)[port_name] : nil
+      end
+
+      srv = model.services_fulfilling(owner).first if model.respond_to?(:services_fulfilling)
+      srv&.task_port_for(owner, port_name)&.name
+    end
+  end
+end

@@ -1,0 +1,187 @@
+# frozen_string_literal: true
+
+require 'syskit/models/bound_service'
+require 'syskit/models/port_mapper'
+require 'syskit/models/task_arguments'
+require 'syskit/models/task_requirements'
+
+module Syskit
+  module Models
+    # What task models and composition models have in common, as Syskit's
+    # Component: the data services they provide (+provides Srv, as: 'name'+,
+    # each then reachable as +name_srv+), their arguments, the requirement
+    # statements (+with_conf+, +use+...), and what they fullfill.
+    module ComponentModel
+      include TaskArguments
+      include TaskRequirementStatements
+
+      class << self
+        # Bumped whenever a component model gains a service or a stub: the
+        # cached views below (which merge a model's declarations with its
+        # parents') are then computed again.
+        def declarations_version
+          @declarations_version ||= 0
+        end
+
+        def declarations_changed
+          @declarations_version = declarations_version + 1
+        end
+      end
+
+      # Documentation of the model (the comment above its declaration).
+      attr_writer :doc
+
+      def doc(text = nil)
+        return @doc if text.nil?
+
+        @doc = text.to_s
+      end
+
+      # Services by name, inherited ones included.
+      def services
+        cached(:services) do
+          inherited = superclass.respond_to?(:services) ? superclass.services : {}
+          inherited.merge(@services || {}).freeze
+        end
+      end
+
+      # Services whose model is or provides +service_model+, in declaration order.
+      def services_fulfilling(service_model)
+        cached(:fulfilling, service_model) { services.values.select { |srv| srv.fullfills?(service_model) }.freeze }
+      end
+
+      # The service of full name +name+ ('gps', or 'stereo.left' for a slave).
+      def find_service(name)
+        services[name.to_s]
+      end
+      alias find_data_service find_service
+
+      # Enumerates the services, inherited ones included, in declaration order.
+      def each_data_service(&)
+        services.each_value(&)
+      end
+
+      # Declares that this component provides the data service +model+ under
+      # the name +as+, with optional +'service_port' => 'component_port'+
+      # mappings; +slave_of: 'name'+ makes it a slave of the service +name+
+      # (its full name is then +name.as+).
+      def provides(model, mappings = {}, as: nil, slave_of: nil, **more)
+        location = Location.of_caller
+        return (@task_services ||= []) << model if model.is_a?(Compat::TaskService) && as.nil?
+
+        unless model.is_a?(DataServiceModel)
+          raise DeclarationError.new("provides expects a data service model, got #{model.inspect}",
+                                     location: location)
+        end
+        unless as
+          raise DeclarationError.new("provides #{model} needs a service name",
+                                     location: location, hint: "write provides #{model}, as: 'name'")
+        end
+
+        add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
+      end
+
+      # Whether this model is +model+ (or a submodel of it) or provides it;
+      # given a list, whether it fullfills each of them.
+      def fullfills?(model)
+        return model.all? { |m| fullfills?(m) } if model.is_a?(Array)
+        return self <= model if model.is_a?(Class)
+
+        model.is_a?(DataServiceModel) && !services_fulfilling(model).empty?
+      end
+      alias fulfills? fullfills?
+
+      # Syskit's +provides?(Srv)+: whether a service of the model fullfills +Srv+.
+      def provides?(service_model)
+        !services_fulfilling(service_model).empty?
+      end
+
+      # The model, its parent models up to Syskit::AbstractComponent, and
+      # every service model it provides (with what they provide).
+      def fullfilled_models
+        cached(:fullfilled_models) do
+          chain = ancestors.take_while { |m| m != Syskit::AbstractComponent }.grep(Class)
+          chain << Syskit::AbstractComponent
+          services.each_value { |srv| srv.model.each_fullfilled_model { |m| chain << m unless chain.include?(m) } }
+          chain.freeze
+        end
+      end
+
+      def each_fullfilled_model(&block)
+        return enum_for(__method__) unless block
+
+        fullfilled_models.each(&block)
+      end
+
+      private
+
+      # A view computed once per +key+ (and +subkey+), until declarations change.
+      def cached(key, subkey = nil)
+        version = ComponentModel.declarations_version
+        if @cache_version != version
+          @cache = {}
+          @cache_version = version
+        end
+        table = subkey.nil? ? @cache : (@cache[key] ||= {}.compare_by_identity)
+        slot = subkey.nil? ? key : subkey
+        table.fetch(slot) { table[slot] = yield }
+      end
+
+      def add_service(name, model, mappings, location, slave_of: nil)
+        name = name.to_s
+        check_service_options(name, mappings, location)
+        master = master_service(slave_of, location) if slave_of
+        full_name = master ? "#{master.full_name}.#{name}" : name
+        existing = find_service(full_name)
+        if existing
+          raise DeclarationError.new("#{self.name} already has a #{existing} declared at #{existing.declared_at}",
+                                     location: location, hint: "give this one another name with as: 'other_name'")
+        end
+
+        port_mappings = PortMapper.new(self, model, mappings, location).map
+        srv = BoundService.new(self, name, model, port_mappings, location, master: master)
+        (@services ||= {})[full_name] = srv
+        ComponentModel.declarations_changed
+        define_service_reader(srv)
+        srv
+      end
+
+      # +name_srv+ on the model, for a master service: Syskit's way of
+      # selecting one service of a component (+use('pose' => Task.gps_srv)+).
+      def define_service_reader(srv)
+        return unless srv.master?
+
+        reader = "#{srv.name}_srv"
+        define_singleton_method(reader) { srv } unless singleton_class.method_defined?(reader, false)
+      end
+
+      def master_service(slave_of, location)
+        name = slave_of.respond_to?(:full_name) ? slave_of.full_name : slave_of.to_s
+        found = find_service(name)
+        return found if found
+
+        known = services.keys.sort
+        hint = known.empty? ? "declare the master first: driver_for Model, as: 'name'" : "services: #{known.join(', ')}"
+        raise DeclarationError.new(
+          "slave_of: '#{name}' names no service of #{self.name}#{Naming.did_you_mean(name, known)}",
+          location: location, hint: hint
+        )
+      end
+
+      def check_service_options(name, mappings, location)
+        unless name.match?(/\A[a-z_]\w*\z/)
+          raise DeclarationError.new("'#{name}' is not a valid service name",
+                                     location: location, hint: "use a lower-case name, e.g. as: 'gps'")
+        end
+        options = mappings.keys.grep(Symbol)
+        return if options.empty?
+
+        raise DeclarationError.new(
+          "unknown option #{options.map { |o| "#{o}:" }.join(', ')}",
+          location: location,
+          hint: "the only option is as: 'name'; port mappings are written 'service_port' => 'task_port'"
+        )
+      end
+    end
+  end
+end

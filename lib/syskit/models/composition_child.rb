@@ -1,0 +1,192 @@
+# frozen_string_literal: true
+
+require 'syskit/models/child_port'
+
+module Syskit
+  module Models
+    # A child of a composition model (Syskit's CompositionChild), what
+    # +add(Model, as: 'name')+ returns and +name_child+ gives back: its
+    # role, what it requires (an InstanceRequirements), and its ports
+    # (+pose_child.pose_samples_port+), which connect to other children's.
+    #
+    # The statements that refine requirements change the child in place and
+    # return it, as in Syskit: +add(Srv, as: 'x').with_arguments(speed: 2)+.
+    class CompositionChild
+      attr_reader :composition_model, :child_name, :requirements, :declared_at
+
+      def initialize(composition_model, child_name, requirements, location, optional: false)
+        @composition_model = composition_model
+        @child_name = child_name
+        @declared_at = location
+        @optional = optional
+        self.requirements = requirements
+      end
+
+      # The same child, as seen from the submodel +model+ of its composition.
+      def promote(model)
+        CompositionChild.new(model, child_name, requirements, declared_at, optional: optional?)
+      end
+
+      # Replaces what the child requires, and the +x_port+ readers with it.
+      def requirements=(requirements)
+        @requirements = requirements
+        @ports = nil
+        define_port_readers
+      end
+
+      def models
+        requirements.models
+      end
+
+      # The child's model: its component model, else its one service model,
+      # else the list of its service models.
+      def model
+        requirements.component_model || (models.size == 1 ? models.first : models)
+      end
+
+      def fullfills?(model)
+        requirements.fullfills?(model)
+      end
+      alias fulfills? fullfills?
+
+      def each_fullfilled_model(&)
+        requirements.each_fullfilled_model(&)
+      end
+
+      def each_required_model(&)
+        models.each(&)
+      end
+
+      def arguments
+        requirements.arguments
+      end
+
+      def optional?
+        @optional
+      end
+
+      # Marks the child optional: left out of the network when nothing
+      # selects a component for it.
+      def optional
+        @optional = true
+        self
+      end
+
+      # As InstanceRequirements#with_arguments and the others, in place.
+      %i[with_arguments with_conf prefer_deployed_tasks deployed_as deployed_as_unmanaged use
+         prefer_specializations].each do |statement|
+        define_method(statement) do |*args, **options|
+          self.requirements = requirements.public_send(statement, *args, **options)
+          self
+        end
+      end
+
+      # The ports of the child, by name: those of its component model (its
+      # exported ports for a composition), or of its service models.
+      def ports
+        @ports ||= begin
+          found = {}
+          models.each do |model|
+            model.ports.each_value do |port|
+              found[port.name] ||= ChildPort.new(self, port.name, port.direction, port.type, model, port.name)
+            end
+            break if model.is_a?(Class)
+          end
+          found.freeze
+        end
+      end
+
+      def find_port(name)
+        ports[name.to_s]
+      end
+
+      def find_output_port(name)
+        port = find_port(name)
+        port if port&.output?
+      end
+
+      def find_input_port(name)
+        port = find_port(name)
+        port if port&.input?
+      end
+
+      def each_output_port(&)
+        ports.each_value.select(&:output?).each(&)
+      end
+
+      def each_input_port(&)
+        ports.each_value.select(&:input?).each(&)
+      end
+
+      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        !find_port(name).nil?
+      end
+
+      # The child seen through +service_model+, one of the models it
+      # fullfills: its ports are the service's (+out_child.as(Srv).out_port+).
+      def as(service_model)
+        ServiceView.new(self, service_model)
+      end
+
+      # The child seen through the service +name+ of its component model
+      # (+cmp_child.test_srv.test_port+).
+      def find_data_service(name)
+        srv = requirements.component_model&.find_service(name)
+        ServiceView.new(self, srv.model) if srv
+      end
+
+      # Connects the child's output ports to the input ports of +other+ (a
+      # child or a child's port) that have their type, as Syskit's
+      # +connect_to+ between components.
+      def connect_to(other, policy = {})
+        ChildPort.autoconnect(each_output_port.to_a, other, policy, Location.of_caller)
+        self
+      end
+
+      def to_s
+        "#{composition_model.short_name}.#{child_name}_child"
+      end
+      alias inspect to_s
+      alias short_name to_s
+
+      private
+
+      # +x_port+ for each port and +x_srv+ for each service of the
+      # component model, as singleton methods (no method_missing).
+      def define_port_readers
+        ports.each_key do |name|
+          reader = "#{name}_port"
+          define_singleton_method(reader) { ports.fetch(name) } unless respond_to?(reader)
+        end
+        requirements.component_model&.each_data_service do |srv|
+          reader = "#{srv.name}_srv"
+          next if !srv.master? || respond_to?(reader)
+
+          define_singleton_method(reader) { find_data_service(srv.name) }
+        end
+      end
+
+      # A child seen through one of its service models.
+      class ServiceView
+        attr_reader :child, :service_model
+
+        def initialize(child, service_model)
+          @child = child
+          @service_model = service_model
+          service_model.ports.each_key do |name|
+            define_singleton_method("#{name}_port") { find_port(name) }
+          end
+        end
+
+        def find_port(name)
+          port = service_model.find_port(name)
+          ChildPort.new(child, port.name, port.direction, port.type, service_model, port.name) if port
+        end
+
+        def to_s
+          "#{child}.as(#{service_model})"
+        end
+      end
+    end
+  end
+end

@@ -1,0 +1,284 @@
+# frozen_string_literal: true
+
+require 'syskit/models/composition_child'
+require 'syskit/models/composition_ports'
+require 'syskit/models/composition_specializations'
+
+module Syskit
+  module Models
+    # The class-level side of compositions (+class ArmControl <
+    # Syskit::Composition+): children by role, exported ports, connections
+    # between children, provided services, arguments, named
+    # configurations and specializations, as Syskit's Models::Composition.
+    #
+    #   class ArmControl < Syskit::Composition
+    #     argument :speed, default: 0.5
+    #     add Services::JointsController, as: 'controller'
+    #     add Devices::Arm, as: 'arm'
+    #     controller_child.command_out_port.connect_to arm_child.joints_cmd_port
+    #     export controller_child.setpoint_port
+    #   end
+    #
+    # Each child is reachable as +name_child+, on the model (the
+    # CompositionChild) and on its instances (the child's task).
+    module CompositionModel
+      include ComponentModel
+      include CompositionPorts
+      include CompositionSpecializations
+
+      # Options of +add+ that only matter to Roby's runtime (what the
+      # child's events mean to the composition): accepted, not modelled.
+      RUNTIME_OPTIONS = %i[success failure remove_when_done consider_in_pending roles].freeze
+
+      # Where the model was declared.
+      attr_reader :declared_at
+
+      def inherited(submodel)
+        super
+        submodel.instance_variable_set(:@declared_at, Location.of_caller)
+        submodel.send(:inherit_specializations, self)
+      end
+
+      # A composition model made in Ruby (+Syskit::Composition.new_submodel
+      # { add ... }+), named +name+ when given.
+      def new_submodel(name: nil, &block)
+        model = Class.new(self)
+        model.instance_variable_set(:@declared_at, Location.of_caller)
+        model.instance_variable_set(:@given_name, name) if name
+        model.class_eval(&block) if block
+        model
+      end
+
+      def name
+        super || @given_name
+      end
+
+      def to_s
+        name || "anonymous composition (#{declared_at})"
+      end
+
+      def inspect
+        to_s
+      end
+
+      def short_name
+        to_s
+      end
+
+      # Marks the model abstract: it stands for its submodels (and its
+      # specializations), and cannot be put in a network as it is.
+      def abstract
+        @abstract = true
+      end
+
+      def abstract?
+        @abstract == true
+      end
+
+      # Adds the child +as+ requiring +models+ (a task, composition, service
+      # or device model, a list of them, or requirements such as
+      # +Model.with_arguments(...)+). Adding again a child of a parent
+      # model overloads it (see #overload).
+      def add(models, as: nil, **options)
+        location = Location.of_caller
+        name = Arguments.name(as, statement: 'add', what: 'a child name (as:)', pattern: Arguments::METHOD_NAME,
+                                  example: "add #{models.inspect}, as: 'name'")
+        runtime = options.keys & RUNTIME_OPTIONS
+        unknown = options.keys - RUNTIME_OPTIONS
+        unless unknown.empty?
+          raise DeclarationError.new("unknown option #{unknown.map { |o| "#{o}:" }.join(', ')} for add",
+                                     location: location, hint: "add takes the child's model and as: 'name'")
+        end
+        Syskit.app&.not_modelled("add's #{runtime.join(', ')} option", location) unless runtime.empty?
+
+        add_child(name, requirements_of(models, location), location)
+      end
+
+      # Adds a child and marks it as the composition's main task (its end
+      # is the composition's, at runtime).
+      def add_main(models, **options)
+        if own_main_child
+          raise DeclarationError.new("#{self} already has a main child (#{own_main_child.child_name})",
+                                     location: Location.of_caller, hint: 'use add for the other children')
+        end
+
+        @main_child = add(models, **options)
+      end
+      alias add_main_task add_main
+
+      # The main child (see #add_main), inherited ones included.
+      def main_task
+        own_main_child || (superclass.main_task if superclass.respond_to?(:main_task))
+      end
+
+      # Adds a child that stays out of the network when nothing is selected
+      # for it.
+      def add_optional(models, **options)
+        add(models, **options).optional
+      end
+
+      # Refines an existing child (of this model or a parent model): the
+      # child then requires +model+ too, which must be compatible with what
+      # it required (a submodel, or a service next to the others).
+      def overload(child, model, **options)
+        name = child.respond_to?(:child_name) ? child.child_name : child.to_s
+        unless find_child(name)
+          raise DeclarationError.new(
+            "#{name} is not a child of #{self}#{Naming.did_you_mean(name, child_names)}",
+            location: Location.of_caller, hint: "children are #{child_names.join(', ')}; use add to add one"
+          )
+        end
+
+        add(model, as: name, **options)
+      end
+
+      # Children by name, inherited ones included.
+      def children
+        own = @children || {}
+        return own unless superclass.respond_to?(:children)
+
+        superclass.children.each_with_object({}) do |(name, child), all|
+          all[name] = own[name] || promoted_child(name, child)
+        end.merge(own)
+      end
+
+      def each_child(&block)
+        return enum_for(__method__) unless block
+
+        children.each(&block)
+      end
+
+      def child_names
+        children.keys
+      end
+      alias children_names child_names
+
+      # The child named +name+ (nil when there is none).
+      def find_child(name)
+        name = name.to_s
+        (@children && @children[name]) ||
+          (promoted_child(name, superclass.find_child(name)) if superclass.respond_to?(:find_child))
+      end
+
+      # Named configurations: +conf 'slow', controller_child => ['default', 'slow']+
+      # gives the children these sections when the composition is used
+      # with_conf('slow').
+      def conf(name, mappings = {})
+        location = Location.of_caller
+        sections = mappings.to_h do |child, confs|
+          child_name = child.respond_to?(:child_name) ? child.child_name : child.to_s
+          unless find_child(child_name)
+            raise DeclarationError.new("conf '#{name}' names #{child_name}, which is not a child of #{self}",
+                                       location: location, hint: "children are #{child_names.join(', ')}")
+          end
+
+          [child_name, Array(confs).map(&:to_s).freeze]
+        end
+        (@configurations ||= {})[name.to_s] = sections.freeze
+      end
+
+      # Named configurations (see #conf), inherited ones included.
+      def configurations
+        inherited = superclass.respond_to?(:configurations) ? superclass.configurations : {}
+        inherited.merge(@configurations || {})
+      end
+
+      # Requirements of this model (see InstanceRequirements).
+      def to_instance_requirements
+        InstanceRequirements.new([self], declared_at: Location.of_caller)
+      end
+
+      # +Cmp.use(...)+: the composition with dependency injection.
+      def use(*mappings)
+        location = Location.of_caller
+        InstanceRequirements.new([self], declared_at: location).use(*mappings)
+      end
+
+      # Which specializations to prefer when several apply.
+      def prefer_specializations(hints)
+        InstanceRequirements.new([self], declared_at: Location.of_caller).prefer_specializations(hints)
+      end
+
+      # Whether the instances can be put in a network: compositions always
+      # can (their children are checked when they are instantiated).
+      def component_model?
+        true
+      end
+
+      private
+
+      def own_main_child
+        @main_child
+      end
+
+      def requirements_of(models, location)
+        unless InstanceRequirements.selectable?(models)
+          raise DeclarationError.new(
+            "add expects a task, composition, service or device model, got #{Arguments.shown(models)}",
+            location: location, hint: "write add OroGen.library.Task, as: 'name' (or a data service model)"
+          )
+        end
+
+        InstanceRequirements.from(models, location: location)
+      end
+
+      def add_child(name, requirements, location)
+        existing = find_child(name)
+        requirements = overloaded(existing, requirements, location) if existing
+        child = CompositionChild.new(self, name, requirements, location, optional: existing&.optional? || false)
+        (@children ||= {})[name] = child
+        define_child_readers(name)
+        child
+      end
+
+      # The requirements of +existing+ refined by +requirements+.
+      def overloaded(existing, requirements, location)
+        models = Models.merge_models(existing.models, requirements.models, location, existing)
+        merged = existing.requirements.merge_selection(requirements)
+        InstanceRequirements.new(models, arguments: existing.arguments.merge(requirements.arguments),
+                                         conf: requirements.conf_given? ? requirements.conf : nil,
+                                         deployment_hints: merged.deployment_hints, deployment: merged.deployment,
+                                         selections: merged.selections, declared_at: location)
+      end
+
+      # +name_child+ on the model and on its instances.
+      def define_child_readers(name)
+        reader = "#{name}_child"
+        define_singleton_method(reader) { find_child(name) } unless singleton_class.method_defined?(reader)
+        define_method(reader) { child_task(name) } unless method_defined?(reader)
+      end
+
+      # A parent's child seen from this model (kept, so that it is the same
+      # object each time).
+      def promoted_child(name, child)
+        return unless child
+
+        (@promoted ||= {})[name] ||= child.promote(self)
+      end
+    end
+
+    # +existing+ models refined with +added+: a model that fullfills one of
+    # the existing ones replaces it; an unrelated service is added; two
+    # unrelated component models are an error.
+    def self.merge_models(existing, added, location, child)
+      result = existing.dup
+      added.each do |model|
+        next if result.any? { |m| m.fullfills?(model) }
+
+        replaced = result.index { |m| model.fullfills?(m) }
+        if replaced
+          result[replaced] = model
+          result.reject!.with_index { |m, i| i != replaced && model.fullfills?(m) }
+        elsif model.is_a?(Class) && (other = result.find { |m| m.is_a?(Class) })
+          raise DeclarationError.new(
+            "#{child} cannot be both a #{other} and a #{model}",
+            location: location, hint: "overload it with a submodel of #{other}, or with a data service"
+          )
+        else
+          result << model
+        end
+      end
+      result.uniq
+    end
+  end
+end

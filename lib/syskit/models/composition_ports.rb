@@ -1,0 +1,177 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Models
+    # The dataflow of composition models: the ports a composition exports
+    # (its own ports are its children's, +export controller_child.cmd_port,
+    # as: 'cmd'+) and the connections between its children. Part of
+    # CompositionModel.
+    module CompositionPorts
+      # A port of a child that the composition exports under +name+.
+      Export = Struct.new(:name, :port, :location)
+      # A connection between two children's ports, with its policy.
+      Connection = Struct.new(:from, :to, :policy, :location)
+
+      # Exports +port+ (a port of a child) as a port of the composition,
+      # under its own name or +as+.
+      def export(port, as: nil)
+        location = Location.of_caller
+        unless port.is_a?(ChildPort) && child_port?(port)
+          raise DeclarationError.new("export expects a port of a child of #{self}, got #{Arguments.shown(port)}",
+                                     location: location,
+                                     hint: 'write export child_name_child.port_name_port (as: \'new_name\')')
+        end
+
+        name = (as || port.name).to_s
+        existing = exports[name]
+        if existing
+          return find_port(name) if existing.port.same_port?(port)
+
+          raise DeclarationError.new(
+            "#{self} already exports #{existing.port} as '#{name}' (#{existing.location})",
+            location: location, hint: "export #{port} under another name with as: 'other_name'"
+          )
+        end
+
+        (@exports ||= {})[name] = Export.new(name, port, location)
+        ComponentModel.declarations_changed
+        define_port_reader(name)
+        find_port(name)
+      end
+
+      # Exported ports by name, inherited ones included.
+      def exports
+        inherited = superclass.respond_to?(:exports) ? superclass.exports : {}
+        inherited.merge(@exports || {})
+      end
+
+      def exported_inputs
+        exports.select { |_, e| e.port.input? }.transform_values(&:port)
+      end
+
+      def exported_outputs
+        exports.select { |_, e| e.port.output? }.transform_values(&:port)
+      end
+
+      def each_exported_input(&)
+        exported_inputs.each(&)
+      end
+
+      def each_exported_output(&)
+        exported_outputs.each(&)
+      end
+
+      def find_exported_input(name)
+        exported_inputs[name.to_s]
+      end
+
+      def find_exported_output(name)
+        exported_outputs[name.to_s]
+      end
+
+      def exported_port?(port)
+        exports.each_value.any? { |e| e.port.same_port?(port) }
+      end
+
+      # The composition's ports (its exports), as ports of a component.
+      def ports
+        cached(:ports) do
+          exports.transform_values { |e| Port.new(e.name, e.port.direction, e.port.type) }.freeze
+        end
+      end
+
+      def find_port(name)
+        ports[name.to_s]
+      end
+
+      def find_output_port(name)
+        port = find_port(name)
+        port if port&.output?
+      end
+
+      def find_input_port(name)
+        port = find_port(name)
+        port if port&.input?
+      end
+
+      def each_output_port(&)
+        ports.each_value.select(&:output?).each(&)
+      end
+
+      def each_input_port(&)
+        ports.each_value.select(&:input?).each(&)
+      end
+
+      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        ports.key?(name.to_s)
+      end
+
+      # Compositions are not oroGen components.
+      def spec; end
+
+      # Whether +port+ is a port of a child of this composition (or of one
+      # of the models it refines).
+      def child_port?(port)
+        port.respond_to?(:composition_model) && self <= port.composition_model
+      end
+
+      # Syskit's +connect(out_port => in_port, ...)+ form.
+      def connect(mappings)
+        policy = mappings.select { |k, _| k.is_a?(Symbol) || k.is_a?(String) }
+        mappings.each do |from, to|
+          next if policy.key?(from)
+
+          from.connect_to(to, policy)
+        end
+      end
+
+      # Records a connection from +from+ to +to+ (ports of children),
+      # checked for directions, types and owners.
+      def add_connection(from, to, policy, location)
+        check_connection(from, to, location)
+        (@connections ||= []) << Connection.new(from, to, policy, location)
+        self
+      end
+
+      # The connections between children, inherited ones included.
+      def connections
+        inherited = superclass.respond_to?(:connections) ? superclass.connections : []
+        inherited + (@connections || [])
+      end
+      alias each_explicit_connection connections
+
+      # Whether two children's ports are connected in this composition.
+      def connected?(port, other)
+        connections.any? do |c|
+          (c.from.same_port?(port) && c.to.same_port?(other)) || (c.from.same_port?(other) && c.to.same_port?(port))
+        end
+      end
+
+      private
+
+      def define_port_reader(name)
+        reader = "#{name}_port"
+        define_singleton_method(reader) { find_port(name) } unless singleton_class.method_defined?(reader)
+      end
+
+      def check_connection(from, to, location)
+        unless to.is_a?(ChildPort)
+          raise DeclarationError.new("connect_to expects a port of another child, got #{Arguments.shown(to)}",
+                                     location: location, hint: 'write a_child.out_port.connect_to b_child.in_port')
+        end
+        unless from.output? && to.input?
+          raise DeclarationError.new("cannot connect #{from} (#{from.direction}) to #{to} (#{to.direction})",
+                                     location: location, hint: 'connect an output port to an input port')
+        end
+        unless child_port?(to)
+          raise DeclarationError.new("#{to} is not a port of a child of #{self}",
+                                     location: location, hint: 'connect ports of the children of one composition')
+        end
+        return if from.type == to.type
+
+        raise DeclarationError.new("cannot connect #{from} (#{from.type}) to #{to} (#{to.type}): types differ",
+                                   location: location, hint: 'connect ports of the same type')
+      end
+    end
+  end
+end

@@ -1,0 +1,259 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Models
+    # Specializations of composition models, as Syskit's:
+    #
+    #   specialize controller_child => Services::OpenLoopController do
+    #     export controller_child.command_in_port
+    #   end
+    #
+    # When the components chosen for the children fullfill what a
+    # specialization names, the composition is instantiated as a submodel
+    # on which the specialization's block ran. Several specializations that
+    # apply together are merged into one submodel, unless a constraint
+    # (+add_specialization_constraint { |a, b| ... }+) says they cannot be
+    # combined; then the choice is ambiguous (an error), unless
+    # +prefer_specializations+ picks one. Part of CompositionModel.
+    module CompositionSpecializations
+      # One +specialize+ statement (or several on the same children): the
+      # children it specializes (name => models) and its blocks.
+      class Specialization
+        attr_reader :root, :specialized_children, :blocks, :location
+
+        def initialize(root, specialized_children, location)
+          @root = root
+          @specialized_children = specialized_children.freeze
+          @blocks = []
+          @location = location
+        end
+
+        # The same specialization on +model+ (a submodel of its root).
+        def promote(model)
+          promoted = Specialization.new(model, specialized_children, location)
+          blocks.each { |b| promoted.blocks << b }
+          promoted
+        end
+
+        # Whether +selection+ (child name => the selected requirements)
+        # fullfills what the specialization names for at least one child,
+        # and contradicts it for none.
+        def weak_match?(selection)
+          matched = false
+          specialized_children.each do |name, models|
+            selected = selection[name]
+            next unless selected
+            return false unless models.all? { |m| selected.fullfills?(m) }
+
+            matched = true
+          end
+          matched
+        end
+
+        # Syskit's lookup for specialization constraint blocks: the models
+        # specialized on +child_name+ that fullfill +model+, or nil.
+        def find_specialization(child_name, model)
+          found = (specialized_children[child_name.to_s] || []).select { |m| m.fullfills?(model) }
+          found unless found.empty?
+        end
+
+        def has_specialization?(child_name, model) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+          !find_specialization(child_name, model).nil?
+        end
+
+        # The specialized model (made from this specialization alone).
+        def composition_model
+          root.specialized_model([self])
+        end
+
+        def to_s
+          "#{root.short_name}/" + specialized_children.map do |name, models|
+            "#{name}.is_a?(#{models.map(&:to_s).join(',')})"
+          end.join(',')
+        end
+        alias inspect to_s
+      end
+
+      # Declares a specialization (see the module's documentation). Children
+      # are given as +name_child+ objects or names; the value is a model or
+      # a list of models. Without mappings, a private submodel is made and
+      # the block evaluated on it.
+      def specialize(mappings = {}, &block)
+        location = Location.of_caller
+        return new_submodel(&block) if mappings.empty?
+
+        children = normalize_specialization(mappings, location)
+        spec = own_specializations.find { |s| s.specialized_children == children }
+        unless spec
+          spec = Specialization.new(self, children, location)
+          own_specializations << spec
+        end
+        spec.blocks << block if block
+        @specialized_models = nil
+        spec
+      end
+
+      # The specializations of this model, its parents' included.
+      def specializations
+        inherited = superclass.respond_to?(:specializations) ? superclass.specializations : []
+        promoted = inherited.map { |spec| (@promoted_specs ||= {}.compare_by_identity)[spec] ||= spec.promote(self) }
+        promoted + own_specializations
+      end
+
+      # Adds a constraint on which specializations may be combined: the
+      # block gets two specializations and says whether they can apply
+      # together. It must give the same answer both ways.
+      def add_specialization_constraint(explicit = nil, &block)
+        (@specialization_constraints ||= []) << (explicit || block)
+      end
+
+      def specialization_constraints
+        inherited = superclass.respond_to?(:specialization_constraints) ? superclass.specialization_constraints : []
+        inherited + (@specialization_constraints || [])
+      end
+
+      # For a specialized model, the specializations applied to make it.
+      def applied_specializations
+        @applied_specializations || []
+      end
+
+      # For a specialized model, the models its children are specialized on.
+      def specialized_children
+        @specialized_children || {}
+      end
+
+      def specialization?
+        !@applied_specializations.nil?
+      end
+      alias is_specialization? specialization?
+
+      # The composition model to instantiate for +selection+ (child name =>
+      # selected requirements): this one, or a specialized submodel.
+      # +hints+: prefer_specializations' mappings.
+      def specialized_model_for(selection, hints: [], location: nil)
+        return self if specialization?
+
+        candidates = specialization_candidates(specializations.select { |s| s.weak_match?(selection) })
+        candidates = prefer(candidates, hints) if candidates.size > 1
+        return self if candidates.empty?
+        raise ambiguous_specialization(candidates, selection, location) if candidates.size > 1
+
+        specialized_model(candidates.first)
+      end
+
+      # The specialized submodel on which +specs+ applied, made once.
+      def specialized_model(specs)
+        key = specs.map(&:object_id).sort
+        (@specialized_models ||= {})[key] ||= build_specialized_model(specs)
+      end
+
+      # The model selected by injection +context+ (a Hash, a
+      # DependencyInjection or a context), as Syskit's +narrow+.
+      def narrow(context = {}, hints: [], specialization_hints: nil)
+        context = Network::Selection.context_from(context)
+        selection = child_names.to_h do |name|
+          [name, Network::Selection.for_child(self, name, context)]
+        end.compact
+        specialized_model_for(selection.compact, hints: specialization_hints || hints)
+      end
+
+      private
+
+      def own_specializations
+        @own_specializations ||= []
+      end
+
+      def normalize_specialization(mappings, location)
+        mappings.to_h do |child, models|
+          name = child.respond_to?(:child_name) ? child.child_name : child.to_s
+          unless find_child(name)
+            raise DeclarationError.new(
+              "specialize names #{name}, which is not a child of #{self}#{Naming.did_you_mean(name, child_names)}",
+              location: location, hint: "write specialize #{child_names.first || 'name'}_child => Model do ... end"
+            )
+          end
+
+          [name, Array(models).freeze]
+        end
+      end
+
+      # Groups of specializations that apply together: one per
+      # specialization, with every later one compatible with the group.
+      def specialization_candidates(matching)
+        return [] if matching.empty?
+
+        groups = matching.map do |spec|
+          matching.each_with_object([spec]) do |other, group|
+            group << other if !group.include?(other) && group.all? { |s| compatible?(s, other) }
+          end.sort_by { |s| matching.index(s) }
+        end
+        groups.uniq.reject { |g| groups.any? { |other| other != g && (g - other).empty? } }
+      end
+
+      def compatible?(one, other)
+        specialization_constraints.all? do |constraint|
+          result = constraint.call(one, other)
+          unless result == constraint.call(other, one)
+            raise DeclarationError.new("the specialization constraint of #{self} is not symmetric " \
+                                       "for #{one} and #{other}", location: declared_at,
+                                                                  hint: 'a constraint must say the same both ways')
+          end
+
+          result
+        end
+      end
+
+      def prefer(candidates, hints)
+        return candidates if hints.empty?
+
+        preferred = candidates.select do |group|
+          hints.any? { |hint| group.any? { |spec| spec.weak_match?(hint_selection(hint)) } }
+        end
+        preferred.empty? ? candidates : preferred
+      end
+
+      # prefer_specializations' mappings as a selection (names => models).
+      def hint_selection(hint)
+        hint.to_h do |child, models|
+          name = child.respond_to?(:child_name) ? child.child_name : child.to_s
+          [name, InstanceRequirements.from(models)]
+        end
+      end
+
+      def ambiguous_specialization(candidates, selection, location)
+        choices = candidates.map { |group| group.map(&:to_s).join(' + ') }
+        selected = selection.map { |name, sel| "#{name} => #{sel}" }.join(', ')
+        NetworkError.new(
+          "several specializations of #{self} apply to #{selected} and cannot be combined: #{choices.join('; ')}",
+          location: location || declared_at,
+          hint: 'choose one with prefer_specializations(child_child => Model) on the requirements'
+        )
+      end
+
+      def build_specialized_model(specs)
+        model = Class.new(self)
+        children = specs.each_with_object({}) do |spec, all|
+          spec.specialized_children.each { |name, models| all[name] = ((all[name] || []) + models).uniq }
+        end
+        model.send(:become_specialization, specs, children, self)
+        children.each { |name, models| model.overload(name, models) }
+        specs.each { |spec| spec.blocks.each { |block| model.class_eval(&block) } }
+        model
+      end
+
+      def become_specialization(specs, children, root)
+        @applied_specializations = specs.freeze
+        @specialized_children = children.freeze
+        @declared_at = root.declared_at
+        @given_name = "#{root.short_name}/" + children.map do |name, models|
+          "#{name}.is_a?(#{models.map(&:to_s).join(',')})"
+        end.join(',')
+      end
+
+      # A submodel starts with no specializations of its own.
+      def inherit_specializations(_parent)
+        @own_specializations = []
+      end
+    end
+  end
+end

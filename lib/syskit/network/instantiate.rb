@@ -1,0 +1,324 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    # Step 1: turns the requirements (device actions, definitions, models)
+    # into tasks. A device gives its driver task (one per device, however
+    # many compositions use it); a task model a task; a composition a
+    # Composition whose children are instantiated in turn, each selected
+    # through dependency injection (see Selection), the composition
+    # specialized on what was selected. Equal tasks made for different
+    # children are merged by the next step (Merge).
+    #
+    # With +stub_abstract+ (tests), what is still abstract is filled with
+    # a stub: a task model providing the services, or a device and its
+    # driver for a device model.
+    class Instantiate
+      # A task's identity for merging: model, arguments, sections,
+      # deployment hints and deployment.
+      def self.merge_key(model, requirements, arguments)
+        [model, arguments, requirements.conf, requirements.deployment_hints, requirements.declared_deployment&.name]
+      end
+
+      def initialize(context, stub_abstract: false)
+        @context = context
+        @drivers = Drivers.new(context)
+        @stub_abstract = stub_abstract
+        @building = []
+        profile = context.profile
+        @base = profile ? profile.dependency_injection_context : DependencyInjection::Context::EMPTY
+      end
+
+      def run
+        @context.requirements.each do |requirement|
+          instantiate_root(requirement)
+        rescue Syskit::Error => e
+          @context.error(e)
+        end
+      end
+
+      private
+
+      def instantiate_root(requirement)
+        requirement = InstanceRequirements.from(requirement) if requirement.is_a?(Robot::Device)
+        unless requirement.is_a?(InstanceRequirements)
+          raise NetworkError.new("#{Arguments.shown(requirement)} is not something a network can contain",
+                                 location: Location.of_caller,
+                                 hint: "pass a profile's action (Base.gps_dev, Base.x_def) or a model")
+        end
+
+        @root = requirement
+        return if @context.roots.any? { |t| t.requirement.equal?(requirement) }
+
+        context = @base.push(requirement.selections)
+        task = instantiate(requirement, context, root_name(requirement), nil)
+        @context.roots << task
+      ensure
+        @root = nil
+      end
+
+      def root_name(requirement)
+        name = requirement.name || requirement.device&.name || Naming.underscore(requirement.to_s.split('::').last)
+        name.delete_suffix('_def').tr('^a-zA-Z0-9_.', '_')
+      end
+
+      # The task for +requirements+ at +path+ in the plan, +parent+ being
+      # the composition it is a child of (nil for a root).
+      def instantiate(requirements, context, path, parent)
+        return device_task(requirements, requirements.device) if requirements.device
+
+        model = requirements.component_model
+        if requirements.abstract?
+          return stub_task(requirements, path, parent) if @stub_abstract && !(model && model <= Composition)
+
+          raise abstract(requirements, path, parent)
+        end
+
+        if model <= Composition
+          instantiate_composition(model, requirements, context, path, parent)
+        else
+          component_task(model, requirements, context, path, parent)
+        end
+      end
+
+      # A task context: the driver of a device when the model drives one
+      # and injection selects it, else a task of its own (merged with an
+      # equal one).
+      def component_task(model, requirements, context, path, parent)
+        device = selected_device(model, context)
+        return device_task(requirements, device, model: model) if device
+
+        unless model.driver_services.empty?
+          return stub_driver(model, requirements) if @stub_abstract
+
+          raise no_device(model, requirements, path, parent)
+        end
+
+        task = model.new(task_arguments(model, requirements, parent))
+        task.conf = requirements.conf
+        task.plan_path = path
+        task.root_location = @root&.declared_at
+        @context.add_task(task, nil, requirements)
+      end
+
+      # The device injection selects for the driver services of +model+.
+      def selected_device(model, context)
+        model.driver_services.each do |srv|
+          value = context.direct_selection_for(srv.driven_device_model)
+          device = InstanceRequirements.from(value).device if value
+          return device if device
+        end
+        nil
+      end
+
+      # The driver task of +device+ (made once), with what +requirements+
+      # asks of it.
+      def device_task(requirements, device, model: nil)
+        existing = @context.task_for(device)
+        if existing
+          check_same_use(existing, requirements, device)
+          return existing
+        end
+
+        requirement = requirements.device ? requirements : InstanceRequirements.from(device).merge_selection(requirements)
+        @drivers.instantiate_device(requirement, expected_model: model)
+      end
+
+      # A device's task serves one set of sections and arguments.
+      def check_same_use(task, requirements, device)
+        conf = requirements.conf
+        return if conf == task.conf && requirements.arguments.all? { |k, v| task.arguments[k] == v }
+
+        first = task.requirement
+        raise NetworkError.new(
+          "#{device} is used with #{describe_use(first)} (#{first.declared_at}) and with " \
+          "#{describe_use(requirements)}, but its driver is one task",
+          location: requirements.declared_at || device.declared_at,
+          hint: 'use the device the same way in both places, or declare two devices'
+        )
+      end
+
+      def describe_use(requirements)
+        parts = ["sections #{requirements.conf.join(', ')}"]
+        parts << "arguments #{requirements.arguments}" unless requirements.arguments.empty?
+        parts.join(' and ')
+      end
+
+      def task_arguments(model, requirements, parent)
+        arguments = {}
+        model.argument_defaults.each { |k, v| arguments[k] = v unless v.nil? }
+        requirements.arguments.each do |key, value|
+          value = resolve_argument(value, parent)
+          arguments[key] = value unless value.equal?(Compat::DelayedArgument::UNSET)
+        end
+        arguments.freeze
+      end
+
+      # A delayed argument (+from(:parent_task).speed+) takes the parent's.
+      def resolve_argument(value, parent)
+        return value unless value.is_a?(Compat::DelayedArgument)
+
+        value.resolve(parent)
+      end
+
+      def instantiate_composition(model, requirements, context, path, parent)
+        selections = select_children(model, context)
+        specialized = specialize(model, selections, requirements)
+        return instantiate_composition(specialized, requirements, context, path, parent) if specialized != model
+        raise abstract(requirements, path, parent, model) if model.abstract?
+
+        composition = model.new(task_arguments(model, requirements, parent))
+        composition.conf = requirements.conf
+        composition.name = path
+        composition.requirement = requirements
+        composition.parent = parent
+        @building.push(composition)
+        instantiate_children(composition, selections, requirements, context, path)
+        @context.compositions << composition
+        composition
+      ensure
+        @building.pop if composition
+      end
+
+      def select_children(model, context)
+        model.child_names.to_h { |name| [name, Selection.select(model.find_child(name), context)] }
+      end
+
+      # Explicit (by name) selections choose first, as in Syskit.
+      def specialize(model, selections, requirements)
+        hints = requirements.specialization_hints
+        explicit = selections.select { |_, r| r.explicit && !r.reference }.transform_values(&:requirements)
+        chosen = model.specialized_model_for(explicit, hints: hints, location: requirements.declared_at)
+        return chosen if chosen != model
+
+        all = selections.reject { |_, r| r.reference }.transform_values(&:requirements)
+        model.specialized_model_for(all, hints: hints, location: requirements.declared_at)
+      end
+
+      # Children referring to a sibling (+use(srv => first_child)+) come
+      # after it.
+      def instantiate_children(composition, selections, requirements, context, path)
+        pending = selections.keys
+        until pending.empty?
+          ready = pending.reject { |name| waits_for_sibling?(composition, selections[name]) }
+          raise sibling_cycle(composition, pending) if ready.empty?
+
+          ready.each do |name|
+            instantiate_child(composition, name, selections[name], requirements, context, path)
+          end
+          pending -= ready
+        end
+      end
+
+      def waits_for_sibling?(composition, selection)
+        references(selection).any? do |ref|
+          owner = @building.reverse.find { |c| c.model <= ref.composition_model }
+          owner.equal?(composition) && !composition.has_role?(ref.child_name)
+        end
+      end
+
+      # Children of compositions a selection refers to.
+      def references(selection)
+        found = [selection.reference].compact
+        selection.requirements.selections.explicit.each_value { |v| found << v if v.is_a?(Models::CompositionChild) }
+        found
+      end
+
+      def instantiate_child(composition, name, selection, requirements, context, path)
+        child = composition.model.find_child(name)
+        return composition.add_child(name, referenced_task(selection.reference)) if selection.reference
+
+        child_requirements = with_composition_conf(composition, name, selection.requirements)
+        return if child.optional? && child_requirements.abstract? && !@stub_abstract
+
+        child_context = child_context(context, selection, requirements, name, child_requirements)
+        task = instantiate(child_requirements, child_context, "#{path}.#{name}", composition)
+        composition.add_child(name, task)
+        composition.child_selections[name] = child_requirements
+      end
+
+      # The context a child's own children are selected in: without what
+      # selected the child, with the enclosing requirements' selections
+      # for its children ('child.grandchild' keys) and its own.
+      def child_context(context, selection, requirements, name, child_requirements)
+        grandchildren = requirements.selections.grandchild_selections(name)
+        context = context.mask(selection.used_keys)
+        context = context.push(DependencyInjection.new(grandchildren, [], requirements.declared_at)) unless
+          grandchildren.empty?
+        context.push(resolve_references(child_requirements.selections))
+      end
+
+      # Selections naming a child of an enclosing composition select its task.
+      def resolve_references(selections)
+        return selections unless selections.explicit.each_value.any?(Models::CompositionChild)
+
+        explicit = selections.explicit.transform_values do |value|
+          value.is_a?(Models::CompositionChild) ? InstanceRequirements.from(referenced_task(value)) : value
+        end
+        DependencyInjection.new(explicit, selections.defaults, selections.declared_at)
+      end
+
+      def referenced_task(child)
+        owner = @building.reverse.find { |c| c.model <= child.composition_model }
+        owner&.child_task(child.child_name) ||
+          raise(NetworkError.new("#{child} is selected, but no enclosing composition has that child",
+                                 location: child.declared_at, hint: 'select a child of an enclosing composition'))
+      end
+
+      # +conf 'name', child => [...]+ of the composition applies to the
+      # children that chose no sections of their own.
+      def with_composition_conf(composition, name, requirements)
+        return requirements if requirements.conf_given?
+
+        sections = composition.conf.filter_map { |c| composition.model.configurations.dig(c, name) }.last
+        sections ? requirements.with_conf(*sections) : requirements
+      end
+
+      def stub_task(requirements, path, parent)
+        model = requirements.models.find { |m| m.is_a?(Models::DeviceModel) }
+        return stub_device_task(model, requirements, path) if model
+
+        stub = Test::StubModels.service_provider(requirements.models)
+        component_task(stub, requirements.merge_selection(InstanceRequirements.new([stub])), @base, path, parent)
+      end
+
+      def stub_device_task(model, requirements, path)
+        robot = (@stub_robot ||= Robot::Definition.new(nil))
+        driver = Test::StubModels.device_driver(model)
+        device = robot.add_device(Robot::Device, model, path.tr('.', '_'), using: driver, options: {},
+                                                                               location: requirements.declared_at)
+        device.driver_model = driver
+        device_task(requirements, device)
+      end
+
+      def stub_driver(model, requirements)
+        srv = model.driver_services.first
+        robot = (@stub_robot ||= Robot::Definition.new(nil))
+        device = robot.add_device(Robot::Device, srv.driven_device_model, "#{srv.name}_stub#{robot.devices.size}",
+                                  using: model, options: {}, location: requirements.declared_at)
+        device.driver_model = model
+        device_task(requirements, device, model: model)
+      end
+
+      def abstract(requirements, path, parent, model = nil)
+        InstantiationErrors.abstract_child(requirements, path, parent, error_location(requirements), model)
+      end
+
+      def no_device(model, requirements, path, parent)
+        InstantiationErrors.no_device(model, path, parent, error_location(requirements))
+      end
+
+      # Errors point at the root requirement's declaration (the definition,
+      # where a +use+ fixes them), else at the child's.
+      def error_location(requirements)
+        @root&.declared_at || requirements.declared_at
+      end
+
+      def sibling_cycle(composition, pending)
+        NetworkError.new("the children #{pending.join(', ')} of #{composition.model} select each other",
+                         location: composition.model.declared_at,
+                         hint: 'a child selected for another must not depend on it')
+      end
+    end
+  end
+end

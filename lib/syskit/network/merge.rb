@@ -1,0 +1,91 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    # Step 2: equal tasks made for different children become one, as
+    # Syskit's merge solver does. Two tasks are equal when they have the
+    # same model, arguments, sections and deployment hints (see
+    # Instantiate.merge_key) and every input port they both have connected
+    # is fed by the same ports (unless it multiplexes): two filters reading
+    # two different sensors stay two tasks, two reading the same sensor
+    # become one. Merging goes on until nothing more merges, since a merge
+    # can make the inputs of the tasks downstream the same.
+    #
+    # Devices' drivers are one task per device from the start.
+    class Merge
+      def initialize(context)
+        @context = context
+      end
+
+      def run
+        candidates = @context.tasks.reject { |t| t.requirement.device }
+        groups = candidates.group_by { |t| Instantiate.merge_key(t.model, t.requirement, t.arguments) }
+                           .values.select { |g| g.size > 1 }
+        return if groups.empty?
+
+        replaced = {}.compare_by_identity
+        loop do
+          inputs = input_sources(replaced)
+          merged = groups.sum { |group| merge_group(group, inputs, replaced) }
+          break if merged.zero?
+
+          groups = groups.map { |g| g.reject { |t| replaced.key?(t) } }.select { |g| g.size > 1 }
+        end
+        apply(replaced) unless replaced.empty?
+      end
+
+      private
+
+      # For each task, its input ports' sources ([task, port] pairs), tasks
+      # already merged standing for the ones they replaced.
+      def input_sources(replaced)
+        sources = Hash.new { |h, task| h[task] = Hash.new { |ports, name| ports[name] = [] } }.compare_by_identity
+        @context.compositions.each do |composition|
+          composition.model.connections.each do |connection|
+            from = composition.resolve_child_port(connection.from)
+            to = composition.resolve_child_port(connection.to)
+            next unless from && to
+
+            source = [final(from[0], replaced).object_id, from[1]]
+            list = sources[final(to[0], replaced)][to[1]]
+            list << source unless list.include?(source)
+          end
+        end
+        sources
+      end
+
+      def final(task, replaced)
+        task = replaced[task] while replaced.key?(task)
+        task
+      end
+
+      # Merges what can be merged in +group+; returns how many tasks went.
+      def merge_group(group, inputs, replaced)
+        kept = []
+        group.each do |task|
+          target = kept.find { |k| same_inputs?(k, task, inputs) }
+          target ? replaced[task] = target : kept << task
+        end
+        group.size - kept.size
+      end
+
+      def same_inputs?(one, other, inputs)
+        mine = inputs.fetch(one, {})
+        theirs = inputs.fetch(other, {})
+        (mine.keys & theirs.keys).all? do |port|
+          mine[port].sort == theirs[port].sort || one.find_port(port)&.multiplexes?
+        end
+      end
+
+      def apply(replaced)
+        @context.tasks.reject! { |t| replaced.key?(t) }
+        @context.compositions.each do |composition|
+          composition.children_by_role.each do |role, task|
+            composition.add_child(role, final(task, replaced)) if replaced.key?(task)
+          end
+        end
+        @context.roots.map! { |t| replaced.key?(t) ? final(t, replaced) : t }
+      end
+    end
+  end
+end

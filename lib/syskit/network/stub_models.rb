@@ -1,0 +1,82 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    # Models made up for stubs (tests' syskit_stub_* helpers, and the
+    # abstract children of networks generated for tests): device models,
+    # driver task models, and task models providing services.
+    module StubModels
+      module_function
+
+      def device_model(base)
+        model = base.class.new(name: "stub #{base.name || 'device'}")
+        model.provides(base)
+        model
+      end
+
+      # A driver for +model+, with the ports of the model.
+      def device_driver(model)
+        ports = model.ports.values.map { |p| Syskit::Port.new(p.name, p.direction, p.type) }
+        task_model("stub_driver_for_#{model_slug(model)}", ports: ports) do |task|
+          task.driver_for(model, as: 'dev')
+        end
+      end
+
+      # A demultiplexing bus driver: per-device dynamic ports for both directions.
+      def bus_driver(bus_model)
+        type = bus_model.message_type
+        task_model("stub_bus_driver_for_#{model_slug(bus_model)}", dynamic: bus_ports(type)) do |task|
+          task.driver_for(bus_model, as: 'bus')
+        end
+      end
+
+      # A driver for +model+ with the client ports of +bus_model+. When
+      # +model+ is a bus itself, the driver also serves the devices attached
+      # to it, through per-device ports of its own message type.
+      def client_driver(model, bus_model, bus_to_client:, client_to_bus:)
+        type = bus_model.message_type
+        ports = []
+        ports << Syskit::Port.new('from_bus', :input, type) if bus_to_client
+        ports << Syskit::Port.new('to_bus', :output, type) if client_to_bus
+        dynamic = model.is_a?(Models::ComBusModel) ? bus_ports(model.message_type) : []
+        task_model("stub_driver_for_#{model_slug(model)}", ports: ports, dynamic: dynamic) do |task|
+          task.driver_for(model, as: model.is_a?(Models::ComBusModel) ? 'bus' : 'dev')
+        end
+      end
+
+      # A task model providing each of +service_models+, with their ports
+      # (made once per list of services).
+      def service_provider(service_models)
+        @service_providers ||= {}
+        @service_providers[service_models] ||= begin
+          ports = {}
+          service_models.each do |srv|
+            srv.ports.each_value { |p| ports[p.name] ||= Syskit::Port.new(p.name, p.direction, p.type) }
+          end
+          slug = service_models.map { |m| model_slug(m) }.join('_')
+          task_model("stub_#{slug}", ports: ports.values) do |task|
+            service_models.each_with_index { |srv, i| task.provides(srv, as: "srv#{i}") }
+          end
+        end
+      end
+
+      def bus_ports(type)
+        [Syskit::DynamicPort.new(/^\w+$/, :output, type), Syskit::DynamicPort.new(/^w\w+$/, :input, type)]
+      end
+
+      def task_model(name, ports: [], dynamic: [])
+        spec = Orogen::TaskSpec.new("stubs::#{name}", nil)
+        ports.each { |p| spec.ports[p.name] = p }
+        spec.dynamic_ports.concat(dynamic)
+        spec.finalize
+        model = TaskContext.new_model(spec)
+        yield(model)
+        model
+      end
+
+      def model_slug(model)
+        Naming.underscore(model.name.to_s.split('::').last.to_s.gsub(/\W/, '_'))
+      end
+    end
+  end
+end

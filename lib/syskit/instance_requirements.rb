@@ -17,10 +17,12 @@ module Syskit
     NO_HINTS = [].freeze
     DEFAULT_CONF = ['default'].freeze
     FIELDS = %i[models device service profile name arguments conf deployment_hints deployment
-                selections specialization_hints declared_at].freeze
+                selections specialization_hints declared_at instance].freeze
 
+    # +instance+: a task of the network being generated, when these
+    # requirements select it (a composition's child given to another).
     attr_reader :device, :service, :profile, :name, :arguments, :deployment, :selections,
-                :specialization_hints, :declared_at
+                :specialization_hints, :declared_at, :instance
 
     # Whether +value+ can stand for a component in a network (what +use+
     # and +add+ accept).
@@ -28,7 +30,7 @@ module Syskit
       value.is_a?(InstanceRequirements) || value.is_a?(Models::DataServiceModel) ||
         value.is_a?(Robot::Device) || value.is_a?(Models::BoundService) ||
         value.is_a?(Models::CompositionChild) || value.is_a?(Profile::Tag) ||
-        (value.is_a?(Class) && value < AbstractComponent) ||
+        (value.is_a?(Class) && value < AbstractComponent) || value.is_a?(AbstractComponent) ||
         (value.is_a?(Array) && !value.empty? && value.all? { |v| selectable?(v) })
     end
 
@@ -40,6 +42,7 @@ module Syskit
       when Robot::Device then new(device: value, declared_at: value.declared_at)
       when Models::BoundService then new([value.task_model], service: value, declared_at: location)
       when Models::CompositionChild then value.requirements
+      when AbstractComponent then new([value.model], instance: value, declared_at: location)
       when Array then new(value.map { |v| from(v, location: location).models }.flatten.uniq, declared_at: location)
       else new([value], declared_at: location)
       end
@@ -53,7 +56,7 @@ module Syskit
 
     def initialize(models = nil, device: nil, service: nil, profile: nil, name: nil, arguments: NO_ARGUMENTS,
                    conf: nil, deployment_hints: nil, deployment: nil, selections: DependencyInjection::EMPTY,
-                   specialization_hints: NO_HINTS, declared_at: nil, open: false)
+                   specialization_hints: NO_HINTS, declared_at: nil, instance: nil, open: false)
       @models = models&.freeze
       @device = device
       @service = service
@@ -66,6 +69,7 @@ module Syskit
       @selections = selections
       @specialization_hints = specialization_hints
       @declared_at = declared_at
+      @instance = instance
       freeze unless open
     end
 
@@ -87,7 +91,7 @@ module Syskit
 
     # Whether something must still be chosen to fill these requirements.
     def abstract?
-      return false if device
+      return false if device || instance
 
       model = component_model
       model.nil? || model.abstract?
@@ -237,15 +241,13 @@ module Syskit
     # arguments and sections when it gives some, both injections.
     def merge_selection(other)
       InstanceRequirements.new(
-        other.instance_variable_get(:@models), device: other.device, service: other.service,
-                                               profile: other.profile, name: other.name,
-                                               arguments: other.arguments.empty? ? arguments : other.arguments,
-                                               conf: other.conf_given? ? other.conf : @conf,
-                                               deployment_hints: other.raw_hints || @deployment_hints,
-                                               deployment: other.deployment || deployment,
-                                               selections: merged_selections(other),
-                                               specialization_hints: specialization_hints + other.specialization_hints,
-                                               declared_at: other.declared_at || declared_at
+        other.raw_models,
+        device: other.device, service: other.service, profile: other.profile, name: other.name,
+        arguments: other.arguments.empty? ? arguments : other.arguments,
+        conf: other.conf_given? ? other.conf : @conf, deployment_hints: other.raw_hints || @deployment_hints,
+        deployment: other.deployment || deployment, selections: merged_selections(other),
+        specialization_hints: specialization_hints + other.specialization_hints,
+        declared_at: other.declared_at || declared_at, instance: other.instance
       )
     end
 
@@ -253,6 +255,10 @@ module Syskit
 
     def raw_hints
       @deployment_hints
+    end
+
+    def raw_models
+      @models
     end
 
     private

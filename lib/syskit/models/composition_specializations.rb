@@ -148,9 +148,10 @@ module Syskit
       end
 
       # The model selected by injection +context+ (a Hash, a
-      # DependencyInjection or a context), as Syskit's +narrow+.
-      def narrow(context = {}, hints: [], specialization_hints: nil)
-        context = Network::Selection.context_from(context)
+      # DependencyInjection or a context), as Syskit's +narrow+ (selections
+      # by child name may also be given as the last arguments).
+      def narrow(context = nil, hints: [], specialization_hints: nil, **by_name)
+        context = Network::Selection.context_from(context || by_name.transform_keys(&:to_s))
         selection = child_names.to_h do |name|
           [name, Network::Selection.for_child(self, name, context)]
         end.compact

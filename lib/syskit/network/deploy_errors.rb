@@ -80,24 +80,29 @@ module Syskit
       def shared(deployed, first_task, second_task)
         first = first_task.requirement
         second = second_task.requirement
-        declared = second.declared_deployment
-        name = second.device&.name || second_task.plan_name
-        each = second.device ? 'device' : 'task'
-        hint = if declared
-                 "give each #{each} a deployed task of its own, e.g. deployed_as('#{name}')"
-               else
-                 "deploy one task per #{each} (usually named after the device) and tell them apart " \
-                   "with .prefer_deployed_tasks(/#{name}/)"
-               end
         DeploymentError.new(
           "#{describe(first_task)} and #{describe(second_task)} both need the deployed task #{deployed} " \
-          "(#{describe(first_task)} is declared at #{device_location(first)})",
-          location: declared&.location || device_location(second), hint: hint
+          "(#{describe(first_task)} is declared at #{device_location(first, first_task)})",
+          location: second.declared_deployment&.location || device_location(second, second_task),
+          hint: shared_hint(second_task, second)
         )
       end
 
+      def shared_hint(task, requirement)
+        name = task.plan_name
+        if requirement.declared_deployment
+          "give each #{requirement.device ? 'device' : 'task'} a deployed task of its own, e.g. deployed_as('#{name}')"
+        elsif requirement.device
+          'deploy one task per device (usually named after the device) and tell them apart ' \
+            "with .prefer_deployed_tasks(/#{name}/)"
+        else
+          "deploy another one (Syskit.conf.use_deployment #{Naming.dsl_reference(task.model)} => '#{name}') and " \
+            "#{prefer(task, requirement, "'#{name}'").sub(/\Achoose one/, 'choose it')}"
+        end
+      end
+
       def describe(task)
-        task.requirement.device&.to_s || task.plan_name
+        task.requirement.device&.to_s || task.plan_path || task.plan_name
       end
     end
   end

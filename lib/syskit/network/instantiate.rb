@@ -66,6 +66,7 @@ module Syskit
       # the composition it is a child of (nil for a root).
       def instantiate(requirements, context, path, parent)
         return device_task(requirements, requirements.device) if requirements.device
+        return requirements.instance if requirements.instance
 
         model = requirements.component_model
         if requirements.abstract?

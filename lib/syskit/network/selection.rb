@@ -56,6 +56,7 @@ module Syskit
       def check_fullfills(child, selected, value, location)
         return if selected.abstract? && selected.models.empty?
 
+        check_single_service(child, selected, value, location)
         missing = child.models.reject { |m| selected.fullfills?(m) }
         return if missing.empty?
         return if selected.device && !selected.device.driver_resolved? &&
@@ -66,6 +67,26 @@ module Syskit
           location: location,
           hint: "select a model that is or provides #{missing.map(&:to_s).join(' and ')} for '#{child.child_name}'"
         )
+      end
+
+      # A component that provides a service the child requires more than
+      # once must be told which one fills the child.
+      def check_single_service(child, selected, value, location)
+        model = selected.component_model
+        return if selected.service || selected.device || !model.respond_to?(:services_fulfilling)
+
+        child.models.grep(Models::DataServiceModel).each do |service_model|
+          services = model.services_fulfilling(service_model).select(&:master?)
+          next if services.size < 2
+
+          names = services.map(&:name)
+          raise NetworkError.new(
+            "#{value} is selected for #{child}, but it provides #{service_model} several times " \
+            "(#{names.join(', ')})",
+            location: location,
+            hint: "select one of them: '#{child.child_name}' => #{Naming.dsl_reference(model)}.#{names.first}_srv"
+          )
+        end
       end
     end
   end

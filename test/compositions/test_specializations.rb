@@ -1,0 +1,136 @@
+# frozen_string_literal: true
+
+require 'compositions/composition_test_helper'
+
+module Syskit
+  # Specializations, as Syskit selects them: the specializations that the
+  # selected components fullfill apply together, unless a constraint
+  # forbids it (then the choice is ambiguous, and prefer_specializations
+  # decides).
+  class TestSpecializations < Minitest::Test
+    include CompositionTestHelper
+
+    def setup
+      super
+      load_rig
+      @model = Composition.new_submodel(name: 'Drive') do
+        add Rig::Services::Pose, as: 'pose'
+        add OroGen.rig.Follower, as: 'follow'
+      end
+    end
+
+    def test_no_specialization_applies_to_a_plain_selection
+      assert_same @model, @model.narrow('pose' => OroGen.rig.Tracker.front_pose_srv)
+    end
+
+    def test_a_specialization_applies_when_the_selection_fullfills_it
+      spec = @model.specialize @model.pose_child => Rig::Services::Odometry do
+        pose_child.odometry_port.connect_to follow_child.pose_port
+      end
+      odometry = Composition.new_submodel do
+        add Rig::Services::Odometry, as: 'src'
+        export src_child.odometry_port
+        provides Rig::Services::Odometry, as: 'odometry'
+      end
+      narrowed = @model.narrow('pose' => odometry)
+      refute_same @model, narrowed
+      assert narrowed < @model
+      assert_equal [spec], narrowed.applied_specializations
+      assert_equal 'Drive/pose.is_a?(Rig::Services::Odometry)', narrowed.name
+      assert narrowed.pose_child.odometry_port.connected_to?(narrowed.follow_child.pose_port)
+      refute_same narrowed, @model.narrow
+      assert_same narrowed, @model.narrow('pose' => odometry)
+    end
+
+    def test_connections_of_a_specialization_stay_in_it
+      spec = @model.specialize @model.pose_child => Rig::Services::Odometry do
+        pose_child.odometry_port.connect_to follow_child.pose_port
+      end
+      assert_equal 1, spec.composition_model.connections.size
+      assert_empty @model.connections
+    end
+
+    def test_specializations_that_apply_together_are_merged
+      @model.add(Rig::Services::SpeedSource, as: 'speed')
+      odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry) { export pose_child.odometry_port }
+      speed = @model.specialize(@model.speed_child => OroGen.rig.Splitter) { export speed_child.left_port }
+      source = Composition.new_submodel do
+        add Rig::Services::Odometry, as: 'src'
+        export src_child.odometry_port
+        provides Rig::Services::Odometry, as: 'odometry'
+      end
+      splitter = OroGen.rig.Splitter
+      splitter.provides(Rig::Services::SpeedSource, as: 'left_speed', 'speed_out' => 'left') unless
+        splitter.find_service('left_speed')
+      narrowed = @model.narrow('pose' => source, 'speed' => splitter)
+      assert_equal [odometry, speed], narrowed.applied_specializations
+      assert_equal %w[left odometry], narrowed.ports.keys.sort
+    end
+
+    def test_a_constraint_makes_two_specializations_ambiguous
+      @model.add(Rig::Services::SpeedSource, as: 'speed')
+      @model.add_specialization_constraint { |a, b| a == b }
+      first = @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      @model.specialize(@model.follow_child => OroGen.rig.Follower)
+      source = Composition.new_submodel do
+        add Rig::Services::Odometry, as: 'src'
+        export src_child.odometry_port
+        provides Rig::Services::Odometry, as: 'odometry'
+      end
+      error = assert_raises(NetworkError) { @model.narrow('pose' => source) }
+      assert_match(/several specializations of Drive apply .* and cannot be combined/, error.message)
+      assert_match(/prefer_specializations/, error.hint)
+      narrowed = @model.narrow({ 'pose' => source }, hints: [{ 'pose' => Rig::Services::Odometry }])
+      assert_equal [first], narrowed.applied_specializations
+    end
+
+    def test_constraints_must_be_symmetric
+      @model.add_specialization_constraint { |a, _b| a.specialized_children.key?('pose') }
+      @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      @model.specialize(@model.follow_child => OroGen.rig.Follower)
+      source = Composition.new_submodel do
+        add Rig::Services::Odometry, as: 'src'
+        export src_child.odometry_port
+        provides Rig::Services::Odometry, as: 'odometry'
+      end
+      error = assert_raises(DeclarationError) { @model.narrow('pose' => source) }
+      assert_match(/not symmetric/, error.message)
+    end
+
+    def test_find_specialization_answers_constraint_blocks
+      spec = @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      assert_equal [Rig::Services::Odometry], spec.find_specialization('pose', Rig::Services::Pose)
+      assert_nil spec.find_specialization('follow', Rig::Services::Pose)
+      assert spec.has_specialization?('pose', Rig::Services::Odometry)
+    end
+
+    def test_specializing_an_unknown_child
+      error = assert_raises(DeclarationError) { @model.specialize('poses' => Rig::Services::Odometry) }
+      assert_match(/specialize names poses, which is not a child of Drive \(did you mean 'pose'\?\)/, error.message)
+    end
+
+    def test_submodels_inherit_specializations
+      spec = @model.specialize(@model.pose_child => Rig::Services::Odometry) { export pose_child.odometry_port }
+      submodel = @model.new_submodel(name: 'SubDrive')
+      source = Composition.new_submodel do
+        add Rig::Services::Odometry, as: 'src'
+        export src_child.odometry_port
+        provides Rig::Services::Odometry, as: 'odometry'
+      end
+      narrowed = submodel.narrow('pose' => source)
+      assert narrowed < submodel
+      assert_equal spec.specialized_children, narrowed.applied_specializations.first.specialized_children
+    end
+
+    def test_narrow_model_of_requirements
+      @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      source = Composition.new_submodel do
+        add Rig::Services::Odometry, as: 'src'
+        export src_child.odometry_port
+        provides Rig::Services::Odometry, as: 'odometry'
+      end
+      assert @model.use('pose' => source).narrow_model < @model
+      assert_same @model, @model.use('pose' => OroGen.rig.Tracker.front_pose_srv).narrow_model
+    end
+  end
+end

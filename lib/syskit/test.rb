@@ -7,6 +7,7 @@ require 'syskit/test/stubs'
 require 'syskit/test/profile_assertions'
 require 'syskit/test/task_assertions'
 require 'syskit/test/runtime_only'
+require 'syskit/test/model_helpers'
 
 module Syskit
   # Test support for apps: `require 'syskit/test'` at the top of a test
@@ -27,6 +28,7 @@ module Syskit
       include Stubs
       include ProfileAssertions
       include TaskAssertions
+      include ModelHelpers
       include RuntimeOnly
       extend RuntimeOnly::ClassMethods
     end

@@ -37,6 +37,7 @@ module Syskit
         super
         submodel.instance_variable_set(:@declared_at, Location.of_caller)
         submodel.send(:inherit_specializations, self)
+        Models.register_model(submodel)
       end
 
       # A composition model made in Ruby (+Syskit::Composition.new_submodel

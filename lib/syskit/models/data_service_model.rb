@@ -41,6 +41,7 @@ module Syskit
 
         model = model_class.new(location: location)
         namespace.const_set(name, model)
+        Models.register_model(model)
         model.send(:declare, root, options, block)
       end
 

@@ -121,7 +121,7 @@ module Syskit
           return existing
         end
 
-        requirement = requirements.device ? requirements : InstanceRequirements.from(device).merge_selection(requirements)
+        requirement = requirements.device ? requirements : requirements.merge_selection(InstanceRequirements.from(device))
         @drivers.instantiate_device(requirement, expected_model: model)
       end
 

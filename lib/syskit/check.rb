@@ -65,8 +65,17 @@ module Syskit
       ([profile.declared_at] + profile.robot.devices.map(&:declared_at)).compact.map(&:path).uniq
     end
 
+    # The devices together (they all run on the robot), then each
+    # definition on its own (definitions are what the robot can run, not
+    # all at once).
     def generate(profile, robot)
-      Network::Generator.plan_profile(app, profile, robot: robot)
+      config = app.robot_config(robot)
+      generate_requirements(profile, config, profile.device_requirements)
+      profile.definition_requirements.each { |definition| generate_requirements(profile, config, [definition]) }
+    end
+
+    def generate_requirements(profile, config, requirements)
+      Network::Generator.new(app, requirements, profile: profile, robot_config: config).generate
     rescue ErrorList => e
       @problems.concat(e.errors)
     rescue Syskit::Error => e

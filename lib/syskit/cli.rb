@@ -71,9 +71,10 @@ module Syskit
 
     desc 'plan [PROFILE] [ACTION...]', 'print the connection plan of a profile'
     long_desc <<~TEXT
-      Generates the network of PROFILE (all its devices, or the given actions,
-      e.g. gps_dev) on a robot and prints the plan: tasks, deployments,
-      configuration, ports, connections and the configure/start order.
+      Generates the network of PROFILE (all its devices and definitions, or
+      the given actions, e.g. gps_dev or arm_control_def) on a robot and
+      prints the plan: compositions, tasks, deployments, configuration,
+      ports, connections and the configure/start order.
 
       PROFILE is the profile's name or its end (Live::Base), or the path form
       of gen profile (live/base). Without PROFILE, the app's first profile.
@@ -90,9 +91,25 @@ module Syskit
     def plan(profile_name = nil, *actions)
       with_app(robots: [options[:robot]]) do |app|
         profile = find_profile(app, profile_name)
-        result = Network::Generator.plan_profile(app, profile, actions: actions, robot: options[:robot])
+        result = plan_actions(app, profile, actions)
         RENDERERS.fetch(options[:format]).write(result.plan, $stdout)
         note_warnings(app)
+      end
+    end
+
+    no_commands do
+      # A profile planned whole puts all its definitions in one network,
+      # where they may not fit together: a failure says which to plan.
+      def plan_actions(app, profile, actions)
+        Network::Generator.plan_profile(app, profile, actions: actions, robot: options[:robot])
+      rescue Syskit::Error => e
+        definitions = profile.definitions.keys
+        raise e unless actions.empty? && definitions.size > 1
+
+        raise ErrorList.new([e, Warning.new(
+          "the #{definitions.size} definitions of #{profile.name} were planned together, with its devices",
+          hint: "plan one at a time: syskit plan #{profile.name} #{definitions.first}_def"
+        )])
       end
     end
 

@@ -11,7 +11,10 @@ module Syskit
     # the drivers of the devices attached through it, a bus attached through
     # it being a box inside. Tasks that share a deployment (one process) are
     # in a dashed box when they are in the same bus box, and say their
-    # deployment otherwise. The title is the profile and the robot.
+    # deployment otherwise. A composition is a box too, holding the tasks
+    # that are its children alone (a task several compositions share, or
+    # attached to a bus, stays out), its child compositions boxes inside.
+    # The title is the profile and the robot.
     #
     # Written as Text is, a chunk at a time (see Output).
     module Dot
@@ -21,11 +24,14 @@ module Syskit
       DEVICE_DRIVER = 'style=filled, fillcolor="#ffffff"'
       BUS_BOX = 'style="rounded,filled"; fillcolor="#f2f6fc"; color="#7a9cc6"'
       DEPLOYMENT_BOX = 'style="dashed,rounded"; color="#888888"'
+      COMPOSITION_BOX = 'style="rounded,filled"; fillcolor="#f4f8ef"; color="#6b8e4e"'
 
-      # Where each task is drawn: the bus boxes (nested as the buses are)
-      # and the tasks at each level, computed once from the plan.
+      # Where each task is drawn: the bus boxes (nested as the buses are),
+      # the composition boxes (nested as the compositions are) and the
+      # tasks at each level, computed once from the plan.
       class Layout
-        Box = Struct.new(:bus, :tasks, :boxes)
+        # A cluster: its id, label and style, its tasks and inner boxes.
+        Box = Struct.new(:id, :label, :style, :tasks, :boxes)
 
         attr_reader :top, :bus_tasks, :shared_deployments
 
@@ -34,8 +40,10 @@ module Syskit
           buses = plan.devices.select(&:com_bus).to_h { |d| [d.name, d] }
           @bus_tasks = {}
           @boxes = {}
-          @top = Box.new(nil, [], [])
+          @top = Box.new(nil, nil, nil, [], [])
           buses.each_value { |bus| box_of(bus.name, buses) }
+          @owners = composition_owners(plan)
+          plan.compositions.each { |c| composition_box(c, plan) }
           plan.tasks.each { |task| place(task, devices[task.name] || [], buses) }
           @shared_deployments = shared(plan.tasks)
         end
@@ -43,7 +51,7 @@ module Syskit
         # The box a bus's driver and the devices through the bus are in.
         def box_of(bus_name, buses)
           @boxes[bus_name] ||= begin
-            box = Box.new(bus_name, [], [])
+            box = Box.new("cluster_bus_#{bus_name}", "bus #{bus_name}", BUS_BOX, [], [])
             parent = buses[bus_name]&.bus
             (parent && buses[parent] ? box_of(parent, buses) : @top).boxes << box
             box
@@ -52,13 +60,36 @@ module Syskit
 
         private
 
+        # For each task, the compositions whose child it is.
+        def composition_owners(plan)
+          owners = Hash.new { |h, k| h[k] = [] }
+          plan.compositions.each { |c| c.children.each_value { |name| owners[name] << c.name } }
+          owners
+        end
+
+        def composition_box(composition, plan)
+          @composition_boxes ||= {}
+          @composition_boxes[composition.name] ||= begin
+            box = Box.new("cluster_composition_#{composition.name}", "#{composition.name}\n#{composition.model}",
+                          COMPOSITION_BOX, [], [])
+            parent = composition.parent && plan.find_composition(composition.parent)
+            (parent ? composition_box(parent, plan) : @top).boxes << box
+            box
+          end
+        end
+
         # A bus's driver goes in the bus's box, a device's driver in the
-        # box of the bus the device is attached through.
+        # box of the bus the device is attached through; any other task in
+        # the box of the composition it is the child of, when it is the
+        # child of one only.
         def place(task, devices, buses)
           bus = devices.find(&:com_bus)
           @bus_tasks[task.name] = true if bus
           through = bus&.name || devices.map(&:bus).find { |b| b && buses[b] }
-          (through ? box_of(through, buses) : @top).tasks << task
+          return box_of(through, buses).tasks << task if through
+
+          owners = @owners.fetch(task.name, [])
+          (owners.size == 1 ? @composition_boxes[owners.first] : @top).tasks << task
         end
 
         # Deployments of several tasks, those in one box being drawn as a
@@ -96,7 +127,7 @@ module Syskit
         def box(box, indent)
           box.tasks.group_by(&:deployment).each { |deployment, tasks| deployment(deployment, tasks, indent) }
           box.boxes.each do |inner|
-            cluster("cluster_bus_#{inner.bus}", "bus #{inner.bus}", BUS_BOX, indent)
+            cluster(inner.id, inner.label, inner.style, indent)
             box(inner, "#{indent}  ")
             @out << indent << "}\n"
           end

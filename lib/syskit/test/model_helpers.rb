@@ -26,30 +26,4 @@ module Syskit
       end
     end
   end
-
-  module Models
-    # Models in the order they were defined, so that tests can remove the
-    # ones they made (see Test::ModelHelpers).
-    def self.defined_models
-      @defined_models ||= []
-    end
-
-    def self.register_model(model)
-      defined_models << model
-    end
-
-    # Removes the constants naming the models defined after the first
-    # +mark+ ones, and forgets them.
-    def self.clear_defined_since(mark)
-      (defined_models.slice!(mark..) || []).reverse_each do |model|
-        name = model.name
-        next unless name&.include?('::')
-
-        parent, _, base = name.rpartition('::')
-        namespace = Object.const_get(parent) if Object.const_defined?(parent)
-        namespace.send(:remove_const, base) if namespace&.const_defined?(base, false) &&
-                                                namespace.const_get(base, false).equal?(model)
-      end
-    end
-  end
 end

@@ -1,0 +1,82 @@
+# frozen_string_literal: true
+
+require 'compositions/composition_test_helper'
+require 'json'
+
+module Syskit
+  # Compositions and definitions through bin/syskit: plan, check, the
+  # plan's formats.
+  class TestCompositionCLI < Minitest::Test
+    include CompositionTestHelper
+
+    WATCH = <<~RUBY
+      require 'models/devices/rover'
+      using_task_library 'rig'
+      module Rig
+        module Compositions
+          class Watch < Syskit::Composition
+            add Services::Pose, as: 'pose'
+            add OroGen.rig.Follower, as: 'follower'
+            pose_child.pose_port.connect_to follower_child.pose_port
+            export follower_child.command_port, as: 'speed'
+          end
+        end
+      end
+    RUBY
+
+    PROFILE = <<~RUBY
+      profile 'Base' do
+        robot do
+          device Devices::GPS, as: 'gps'
+        end
+        define 'watch', Compositions::Watch.use('pose' => gps_dev)
+        define 'watch_tracker', Compositions::Watch.use('pose' => OroGen.rig.Tracker.front_pose_srv)
+        define 'unselected', Compositions::Watch
+      end
+    RUBY
+
+    def app
+      @app ||= rig_app({ 'models/compositions/watch.rb' => WATCH }, profile: PROFILE,
+                                                                     requires: ['models/compositions/watch'])
+    end
+
+    def test_plan_of_a_definition_in_json
+      out, err, status = run_cli('plan', '--app', app, 'Base', 'watch_def', '--format', 'json')
+      assert_equal 0, status, err
+      doc = JSON.parse(out)
+      assert_equal [{ 'name' => 'watch', 'model' => 'Rig::Compositions::Watch', 'action' => 'Rig::Profiles::Base.watch_def',
+                      'arguments' => {}, 'conf' => ['default'], 'children' => { 'pose' => 'gps', 'follower' => 'follower' },
+                      'exports' => { 'speed' => { 'task' => 'follower', 'port' => 'command' } }, 'parent' => nil }],
+                   doc['compositions']
+      assert_equal [{ 'from' => { 'task' => 'gps', 'port' => 'position' }, 'to' => { 'task' => 'follower', 'port' => 'pose' },
+                      'type' => RBS, 'policy' => { 'type' => 'data' } }], doc['connections']
+    end
+
+    def test_plan_of_the_whole_profile_says_which_definition_to_plan
+      _, err, status = run_cli('plan', '--app', app, 'Base')
+      assert_equal 1, status
+      assert_match(%r{^models/profiles/base.rb:12: the child 'pose' of Rig::Compositions::Watch \(unselected.pose\)}, err)
+      assert_match(/warning: the 3 definitions of Rig::Profiles::Base were planned together, with its devices/, err)
+      assert_match(/plan one at a time: syskit plan Rig::Profiles::Base watch_def/, err)
+    end
+
+    def test_check_generates_each_definition_on_its_own
+      out, _, status = run_cli('check', '--app', app)
+      assert_equal 1, status
+      errors = out.lines.grep(/^\S+:\d+: /)
+      assert_equal 1, errors.size, out
+      assert_match(%r{\Amodels/profiles/base.rb:12: the child 'pose' of Rig::Compositions::Watch \(unselected.pose\) needs a Rig::Services::Pose},
+                   errors.first)
+      assert_match(/^Rig: 1 error\(s\)/, out)
+    end
+
+    def test_text_and_dot_show_the_compositions
+      out, = run_cli('plan', '--app', app, 'Base', 'watch_def')
+      assert_match(/^Compositions \(1\)\n  watch  Rig::Compositions::Watch  \(Rig::Profiles::Base.watch_def, conf default\)\n    pose      gps\n    follower  follower\n    exports   speed -> follower.command\n/,
+                   out)
+      dot, = run_cli('plan', '--app', app, 'Base', 'watch_def', '--format', 'dot')
+      assert_match(/subgraph "cluster_composition_watch" \{\n    label="watch\\nRig::Compositions::Watch";/, dot)
+      assert_match(/^    "follower" \[label=/, dot)
+    end
+  end
+end

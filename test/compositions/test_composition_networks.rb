@@ -347,6 +347,18 @@ module Syskit
                    error.message)
     end
 
+    def test_the_comment_above_the_class_documents_it
+      load_rig({ 'models/compositions/doc.rb' => <<~RUBY })
+        module Rig
+          # Watches the robot's pose
+          # and logs it.
+          class Documented < Syskit::Composition
+          end
+        end
+      RUBY
+      assert_equal "Watches the robot's pose\nand logs it.", Rig::Documented.doc
+    end
+
     def test_reliable_inputs_get_a_buffer
       files = { 'models/compositions/reliable.rb' => <<~RUBY }
         require 'models/devices/rover'

@@ -6,6 +6,7 @@ require 'syskit/generators/bus_generator'
 require 'syskit/generators/orogen_generator'
 require 'syskit/generators/profile_generator'
 require 'syskit/generators/service_generator'
+require 'syskit/generators/composition_generator'
 require 'syskit/generators/orogen_conf_generator'
 
 module Syskit
@@ -24,6 +25,7 @@ module Syskit
           syskit gen dev gps/ublox/f9       # models/devices/gps/ublox/f9.rb, Devices::GPS::Ublox::F9
           syskit gen bus can                # models/devices/bus/can.rb, Devices::Bus::CAN
           syskit gen srv pose               # models/services/pose.rb, Services::Pose
+          syskit gen cmp arm_control        # models/compositions/arm_control.rb, Compositions::ArmControl
           syskit gen orogen gps_ublox       # models/orogen/gps_ublox.rb, from gps_ublox.orogen
           syskit gen profile live/base      # models/profiles/live/base.rb, Profiles::Live::Base
           syskit gen orogenconf gps_ublox::Task  # config/orogen/gps_ublox::Task.yml
@@ -110,6 +112,21 @@ module Syskit
       method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
       def srv(name)
         generate { |opts| Generators::ServiceGenerator.new(target_app, name, **opts) }
+      end
+
+      desc 'cmp NAME', 'create a composition and its test'
+      long_desc <<~TEXT
+        Creates models/compositions/NAME.rb, defining AppName::Compositions::NAME
+        (a Syskit::Composition: children, connections, exports), and its test
+        in test/compositions/test_NAME.rb. Profiles define what the robot runs
+        with compositions: define 'x', Compositions::NAME.use('child' => x_dev).
+        NAME may have a namespace (control/arm).
+
+        Example: syskit gen cmp arm_control
+      TEXT
+      method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
+      def cmp(name)
+        generate { |opts| Generators::CompositionGenerator.new(target_app, name, **opts) }
       end
 
       desc 'orogen LIB', 'create the Syskit extension file of a task library and its test'

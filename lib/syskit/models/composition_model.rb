@@ -54,6 +54,14 @@ module Syskit
         super || @given_name
       end
 
+      # Its documentation: given with +doc+, else the comment block above
+      # the class statement.
+      def doc(text = nil)
+        return super if text
+
+        @doc ||= (Profile.doc_above(declared_at) if declared_at && !specialization?)
+      end
+
       def to_s
         name || "anonymous composition (#{declared_at})"
       end

@@ -42,3 +42,21 @@ module Syskit
 end
 
 Module.include(Syskit::Compat::CoreExtensions)
+
+module Syskit
+  module Compat
+    # utilrb's (and facets') string case conversions, which Rock model
+    # code calls to make names (+"open_loop_#{name.snakecase}"+).
+    module StringExtensions
+      def snakecase
+        Naming.underscore(self)
+      end
+
+      def camelcase
+        split('_').map { |part| part[0] ? part[0].upcase + part[1..] : part }.join
+      end
+    end
+  end
+end
+
+String.include(Syskit::Compat::StringExtensions)

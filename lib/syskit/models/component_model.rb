@@ -169,9 +169,11 @@ module Syskit
       end
 
       def check_service_options(name, mappings, location)
-        unless name.match?(/\A[a-z_]\w*\z/)
+        # Syskit takes any identifier (common_models names services after
+        # their models: as: 'Test').
+        unless name.match?(/\A[A-Za-z_]\w*\z/)
           raise DeclarationError.new("'#{name}' is not a valid service name",
-                                     location: location, hint: "use a lower-case name, e.g. as: 'gps'")
+                                     location: location, hint: "use an identifier, e.g. as: 'gps'")
         end
         options = mappings.keys.grep(Symbol)
         return if options.empty?

@@ -17,7 +17,7 @@ module Syskit
     def self.clear_defined_since(mark)
       (defined_models.slice!(mark..) || []).reverse_each do |model|
         name = model.name
-        next unless name&.include?('::')
+        next unless name&.match?(/\A[A-Z]\w*(::[A-Z]\w*)+\z/)
 
         parent, _, base = name.rpartition('::')
         namespace = Object.const_get(parent) if Object.const_defined?(parent)

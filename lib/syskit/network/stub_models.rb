@@ -45,16 +45,17 @@ module Syskit
       end
 
       # A task model providing each of +service_models+, with their ports
-      # (made once per list of services).
-      def service_provider(service_models)
+      # (made once per list of services); a submodel of +base+ (a task
+      # model) when given.
+      def service_provider(service_models, base: nil)
         @service_providers ||= {}
-        @service_providers[service_models] ||= begin
+        @service_providers[[service_models, base]] ||= begin
           ports = {}
           service_models.each do |srv|
             srv.ports.each_value { |p| ports[p.name] ||= Syskit::Port.new(p.name, p.direction, p.type) }
           end
           slug = service_models.map { |m| model_slug(m) }.join('_')
-          task_model("stub_#{slug}", ports: ports.values) do |task|
+          task_model("stub_#{slug}", ports: ports.values, base: base) do |task|
             service_models.each_with_index { |srv, i| task.provides(srv, as: "srv#{i}") }
           end
         end
@@ -64,12 +65,13 @@ module Syskit
         [Syskit::DynamicPort.new(/^\w+$/, :output, type), Syskit::DynamicPort.new(/^w\w+$/, :input, type)]
       end
 
-      def task_model(name, ports: [], dynamic: [])
+      def task_model(name, ports: [], dynamic: [], base: nil)
         spec = Orogen::TaskSpec.new("stubs::#{name}", nil)
-        ports.each { |p| spec.ports[p.name] = p }
+        spec.superclass = base.spec if base
+        ports.each { |p| spec.ports[p.name] = p unless base&.find_port(p.name) }
         spec.dynamic_ports.concat(dynamic)
         spec.finalize
-        model = TaskContext.new_model(spec)
+        model = (base || TaskContext).new_model(spec)
         yield(model)
         model
       end

@@ -118,7 +118,10 @@ module Syskit
       # A deployment of several tasks is a box, one of a single task none.
       assert_match(/^    subgraph "cluster_deployment_motors" \{\n.*"left_motor".*"right_motor"/m, dot)
       refute_match(/cluster_deployment_(gps|can0|sync)"/, dot)
-      assert_match(/^  "gps" \[/, dot)
+      # A composition is a box around the children it alone has; the
+      # motors stay in their bus's box.
+      assert_match(/^  subgraph "cluster_composition_drive" \{\n.*^    "gps" \[.*^    "path_follower" \[.*?^  \}/m, dot)
+      refute_match(/cluster_composition_drive" \{[^}]*"left_motor" \[/m, dot)
     end
 
     def test_dot_is_accepted_by_graphviz
@@ -193,7 +196,8 @@ module Syskit
       text = Render::Text.render(example_plan)
       assert_match(/^Plan of AwesomeRobot::Profiles::Live::Base on robot 'default'$/, text)
       assert_match(/^  can0  canbus::Task  \(deployment can0, conf default\)$/, text)
-      assert_match(%r{^  can0\.temperature_sensor +-> temperature_sensor\.can_in +/canbus/Message  buffer 2$}, text)
+      assert_match(%r{^  can0\.temperature_sensor +-> temperature_sensor\.can_in +/canbus/Message +buffer 2$}, text)
+      assert_match(/^Compositions \(2\)\n  drive  AwesomeRobot::Compositions::Drive  /, text)
       assert_match(/^   2\. configure can0$/, text)
     end
   end

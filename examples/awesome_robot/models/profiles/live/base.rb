@@ -6,6 +6,8 @@ using_task_library 'can_temperature_sensor'
 using_task_library 'can_open'
 using_task_library 'roboteq'
 using_task_library 'nmea2000'
+require 'models/compositions/drive'
+require 'models/compositions/temperature_watch'
 
 module AwesomeRobot
   module Profiles
@@ -81,6 +83,18 @@ module AwesomeRobot
               .frame(0x702, bytes: 1, period: 0.1)
           end
         end
+
+        # What the robot runs: compositions of its devices' drivers and
+        # other components. Each gives the profile an action (drive_def).
+
+        # Follows the path with the GPS pose, at half speed.
+        define 'drive', Compositions::Drive
+          .use('position' => gps_dev, 'left' => left_motor_dev, 'right' => right_motor_dev)
+          .with_arguments(max_speed: 0.5)
+        # Alarms on the engine and water temperatures.
+        define 'watch_temperatures', Compositions::TemperatureWatch
+          .use('engine' => temperature_sensor_dev, 'water' => water_temperature_dev)
+          .with_conf('summer')
       end
     end
   end

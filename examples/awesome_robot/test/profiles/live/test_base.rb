@@ -10,6 +10,7 @@ module AwesomeRobot
         it { can_configure }
         it { can_configure_together }
         it { can_configure(Base.gps_dev, Base.forward_camera_dev) }
+        it { can_deploy(Base.drive_def, Base.watch_temperatures_def) }
       end
     end
   end

@@ -153,13 +153,13 @@ module Syskit
   end
 
   # A construct of real Rock files that this gem does not model
-  # (compositions, Roby tasks and actions, runtime-only blocks): accepted,
+  # (Roby tasks and actions, runtime-only blocks): accepted,
   # with no effect on plans. `syskit check` lists them.
   class NotModelled < Warning
     def initialize(what, location: nil)
       super("#{what}: not modelled by this gem, ignored in the plan",
             location: location,
-            hint: 'syskit plans devices, buses and their drivers; this has no effect on the plan')
+            hint: 'syskit plans devices, buses, their drivers and compositions; this has no effect on the plan')
     end
   end
 end

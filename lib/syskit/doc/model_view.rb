@@ -57,11 +57,12 @@ module Syskit
         klass unless [Models::DataServiceModel, Models::DeviceModel, Models::ComBusModel].include?(klass)
       end
 
-      # Task models whose services are or provide this model: for a device
-      # or bus, its drivers.
+      # Task models whose services are or provide this model; for a device
+      # or bus, its drivers (a bus's include those providing its BusSrv).
       def implementers
         catalog.entries(:task_model).filter_map do |entry|
-          services = entry.object.services_fulfilling(model)
+          task = entry.object
+          services = device? ? task.driver_services_for(model) : task.services_fulfilling(model)
           Implementer.new(entry.object, services) unless services.empty?
         end
       end

@@ -142,6 +142,7 @@ module Syskit
         output = options[:output] ? File.expand_path(options[:output]) : File.join(app.root, 'doc', 'site')
         result = Doc.build(app, output: output, robot: options[:robot])
         report_site(result)
+        note_warnings(app)
       end
     end
 

@@ -17,6 +17,18 @@ module Syskit
     class Browser
       class Error < StandardError; end
 
+      # The events that are errors of a page, and what to say of each
+      # (nil: not an error).
+      ERROR_EVENTS = {
+        'Runtime.exceptionThrown' => lambda { |p|
+          p.dig('exceptionDetails', 'exception', 'description') || p['exceptionDetails']['text']
+        },
+        'Runtime.consoleAPICalled' => lambda { |p|
+          "console.#{p['type']}: #{p['args'].map { |a| a['value'] }.join(' ')}" if %w[error assert].include?(p['type'])
+        },
+        'Log.entryAdded' => ->(p) { "#{p['entry']['text']} #{p['entry']['url']}" if p['entry']['level'] == 'error' }
+      }.freeze
+
       COMMANDS = %w[chromium chromium-browser google-chrome].freeze
       TIMEOUT = 30
 
@@ -58,8 +70,10 @@ module Syskit
                 '--no-default-browser-check', '--disable-extensions', '--mute-audio', '--hide-scrollbars',
                 '--force-color-profile=srgb', "--window-size=#{width},#{height}", "--user-data-dir=#{@profile}",
                 '--remote-debugging-pipe', 'about:blank']
-        @pid = Process.spawn(ENV["CHROME_BIN"] || self.class.command, *args, 3 => to_browser, 4 => from_browser,
-                                                         in: File::NULL, out: File::NULL, err: ENV['BROWSER_LOG'] || File::NULL)
+        # CHROME_BIN: another browser; BROWSER_LOG: a file for its messages.
+        @pid = Process.spawn(ENV['CHROME_BIN'] || self.class.command, *args,
+                             3 => to_browser, 4 => from_browser,
+                             in: File::NULL, out: File::NULL, err: ENV['BROWSER_LOG'] || File::NULL)
         to_browser.close
         from_browser.close
         @next_id = 0
@@ -154,14 +168,14 @@ module Syskit
       end
 
       # Events read while waiting for an answer are kept for later.
-      def read_until
-        found = @pending.find { |m| yield m }
+      def read_until(&wanted)
+        found = @pending.find(&wanted)
         return @pending.delete(found) if found
 
         Timeout.timeout(TIMEOUT) do
           loop do
             message = next_message
-            return message if yield message
+            return message if wanted.call(message)
 
             @pending << message
           end
@@ -176,12 +190,6 @@ module Syskit
         text = @buffer.slice!(0..at).chop
         JSON.parse(text)
       end
-
-      ERROR_EVENTS = {
-        'Runtime.exceptionThrown' => ->(p) { p.dig('exceptionDetails', 'exception', 'description') || p['exceptionDetails']['text'] },
-        'Runtime.consoleAPICalled' => ->(p) { "console.#{p['type']}: #{p['args'].map { |a| a['value'] }.join(' ')}" if %w[error assert].include?(p['type']) },
-        'Log.entryAdded' => ->(p) { "#{p['entry']['text']} #{p['entry']['url']}" if p['entry']['level'] == 'error' }
-      }.freeze
 
       def collect_errors(session, errors)
         @pending.reject! do |m|
@@ -226,32 +234,31 @@ module Syskit
             line = data.byteslice((y * (stride + 1)) + 1, stride).bytes
             line.each_index do |i|
               left = i >= bpp ? line[i - bpp] : 0
-              up = previous[i]
               corner = i >= bpp ? previous[i - bpp] : 0
-              line[i] = (line[i] + predict(filter, left, up, corner)) & 0xff
+              line[i] = (line[i] + predict(filter, left, previous[i], corner)) & 0xff
             end
             previous = line
           end
         end
 
-        def predict(filter, left, up, corner)
+        def predict(filter, left, above, corner)
           case filter
           when 0 then 0
           when 1 then left
-          when 2 then up
-          when 3 then (left + up) / 2
-          else paeth(left, up, corner)
+          when 2 then above
+          when 3 then (left + above) / 2
+          else paeth(left, above, corner)
           end
         end
 
-        def paeth(left, up, corner)
-          p = left + up - corner
-          pa = (p - left).abs
-          pb = (p - up).abs
-          pc = (p - corner).abs
-          return left if pa <= pb && pa <= pc
+        def paeth(left, above, corner)
+          estimate = left + above - corner
+          to_left = (estimate - left).abs
+          to_above = (estimate - above).abs
+          to_corner = (estimate - corner).abs
+          return left if to_left <= to_above && to_left <= to_corner
 
-          pb <= pc ? up : corner
+          to_above <= to_corner ? above : corner
         end
       end
     end

@@ -108,8 +108,8 @@ module Syskit
     def test_a_task_model_page_shows_inheritance_dynamic_ports_and_operations
       doc = page('tasks/canbus.Task.html')
       assert_includes texts(doc, "//section[@id='services']//tbody/tr"),
-                      'bus_in CommonModels::Devices::Bus::CAN::BusInSrv provides (drives CommonModels::Devices::Bus::CAN, ' \
-                      'argument bus_in_dev) to_bus → in'
+                      'bus_in CommonModels::Devices::Bus::CAN::BusInSrv provides ' \
+                      '(drives CommonModels::Devices::Bus::CAN, argument bus_in_dev) to_bus → in'
       assert_includes texts(doc, "//section[@id='ports']/table[2]//tr"), '/\\w+/ output /canbus/Message'
       assert_match(/\Awatch\(name: /, texts(doc, "//section[@id='operations']//tbody/tr").last)
       gps = page('tasks/gps_ublox.F9Task.html')

@@ -39,21 +39,14 @@ module Syskit
 
       # What the robot block sets on a device, as [name, HTML] pairs: its
       # bus attributes (CAN filters in hex), configuration sections,
-      # deployment preferences, timing and declared frames.
+      # deployment preferences, timing and declared traffic.
       def settings(device)
         list = device.dsl_attributes.map { |name, v| [name.to_s, code(Render::Text.plain(v, +'', ids: true))] }
         list << ['with_conf', device.conf.map { |c| code(c) }.join(', ')] if device.conf != Robot::Device::DEFAULT_CONF
         unless device.deployment_hints.empty?
           list << ['prefer_deployed_tasks', device.deployment_hints.map { |d| code(d.inspect) }.join(', ')]
         end
-        %i[period burst sample_size].each do |name|
-          value = device.public_send(name)
-          list << [name.to_s, h(name == :period ? format.ms(value) : value.to_s)] if value
-        end
-        list << ['bitrate', h(format.bitrate(device.bitrate))] if device.com_bus? && device.bitrate
-        frames = device.can_frames.size
-        list << ['frame', h(Naming.count(frames, 'frame'))] if frames.positive?
-        list
+        list.concat(timing_settings(device))
       end
 
       # The plan drawn as SVG, to be put in the page as is (without the
@@ -99,6 +92,17 @@ module Syskit
 
       def code(text)
         "<code>#{h(text)}</code>"
+      end
+
+      def timing_settings(device)
+        list = %i[period burst sample_size].filter_map do |name|
+          value = device.public_send(name)
+          [name.to_s, h(name == :period ? format.ms(value) : value.to_s)] if value
+        end
+        list << ['bitrate', h(format.bitrate(device.bitrate))] if device.com_bus? && device.bitrate
+        frames = device.can_frames.size
+        list << ['frame', h(Naming.count(frames, 'frame'))] if frames.positive?
+        list
       end
 
       def generate

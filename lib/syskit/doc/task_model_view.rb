@@ -86,16 +86,10 @@ module Syskit
       def deployments
         found = {}
         catalog.entries(:task_library).each do |entry|
-          entry.object.deployments.each_value do |deployment|
-            deployment.tasks.each do |t|
-              found[[t.name, deployment.name]] ||= Deployed.new(t.name, deployment.name, entry.object, []) if mine?(t)
-            end
-          end
+          entry.object.deployments.each_value { |deployment| add_deployed(found, deployment.tasks, entry.object) }
         end
         catalog.app.robot_configs.sort.each do |robot, config|
-          config.deployed_tasks.each do |t|
-            (found[[t.name, t.deployment.name]] ||= Deployed.new(t.name, t.deployment.name, nil, [])).robots << robot if mine?(t)
-          end
+          add_deployed(found, config.deployed_tasks).each { |d| d.robots << robot }
         end
         found.values.sort_by { |d| [d.deployment, d.name] }
       end
@@ -110,8 +104,11 @@ module Syskit
 
       private
 
-      def mine?(deployed_task)
-        deployed_task.model.equal?(model)
+      # The Deployed entries of those of +tasks+ that run this model.
+      def add_deployed(found, tasks, library = nil)
+        tasks.select { |t| t.model.equal?(model) }.map do |t|
+          found[[t.name, t.deployment.name]] ||= Deployed.new(t.name, t.deployment.name, library, [])
+        end
       end
 
       def spec_chain

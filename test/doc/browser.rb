@@ -87,7 +87,9 @@ module Syskit
       def open(url)
         session = tab
         collect_errors(session, []) # the previous page's
-        command('Page.navigate', { url: url }, session: session)
+        navigation = command('Page.navigate', { url: url }, session: session)
+        # Another fragment of the page shown is no new load: load it again.
+        command('Page.reload', session: session) unless navigation['loaderId']
         errors = []
         wait_for('Page.loadEventFired', session, errors)
         # Events already sent (a script's error at load) are read too.
@@ -123,7 +125,12 @@ module Syskit
         Base64.decode64(command('Page.captureScreenshot', params, session: session)['data'])
       end
 
+      def closed?
+        @closed
+      end
+
       def close
+        @closed = true
         begin
           Timeout.timeout(5) { command('Browser.close') }
         rescue StandardError, Timeout::Error

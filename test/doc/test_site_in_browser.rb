@@ -14,8 +14,20 @@ module Syskit
   class TestDocSiteInBrowser < Minitest::Test
     include SelfTest::SiteHelper
 
+    # One browser for the tests of this class, closed after the last one
+    # (an idle browser left running would slow the timing-sensitive tests
+    # that follow).
     def self.browser
-      @browser ||= SelfTest::Browser.new.tap { |b| Minitest.after_run { b.close } }
+      @browser ||= SelfTest::Browser.new.tap { |b| Minitest.after_run { b.close unless b.closed? } }
+    end
+
+    def self.test_done
+      @done = (@done || 0) + 1
+      @browser.close if @browser && !@browser.closed? && @done == runnable_methods.size
+    end
+
+    def teardown
+      self.class.test_done
     end
 
     def setup
@@ -85,7 +97,31 @@ module Syskit
                       can_temperature_sensor::task], visible(page)
     end
 
+    def test_slash_focuses_the_filter_and_enter_opens_the_first_match
+      page = browser.open(url('index.html'))
+      page.evaluate("document.dispatchEvent(new KeyboardEvent('keydown', { key: '/' }))")
+      assert_equal 'search', page.evaluate('document.activeElement.id')
+      filter(page, 'fluid level')
+      page.evaluate("document.getElementById('search').dispatchEvent(new KeyboardEvent('keydown', { key: 'Enter' }))")
+      assert_equal url('devices/AwesomeRobot.Devices.N2k.FluidLevel.html'), location_after_navigation(page)
+    end
+
     private
+
+    # The page's address once the navigation it started is done.
+    def location_after_navigation(page)
+      50.times do
+        href = begin
+          page.evaluate('document.readyState === "complete" && location.href')
+        rescue SelfTest::Browser::Error
+          nil # the document is being replaced
+        end
+        return href if href && !href.end_with?('index.html')
+
+        sleep 0.1
+      end
+      flunk 'the page did not change'
+    end
 
     def keep_screenshot(page, dir, path)
       FileUtils.mkdir_p(dir)

@@ -121,8 +121,11 @@ module Syskit
 
     def test_a_profile_page
       doc = page('profiles/AwesomeRobot.Profiles.Live.Base.html')
-      devices = texts(doc, "//section[@id='devices']//tbody/tr")
+      devices = texts(doc, "//section[@id='devices']//tbody/tr[@id]")
       assert_equal 12, devices.size
+      # The comment above a device's declaration is its documentation, in the row after it.
+      assert_equal 'Its frames travel on can0\'s wire.',
+                   texts(doc, "//tr[@id='device-fuel_level']/following-sibling::tr[1][@class='device-doc']").first
       assert_equal 'temperature_sensor AwesomeRobot::Devices::Temperature::CANSensor can_temperature_sensor::Task ' \
                    'can0 can_id [0x1234,0xFFFF] prefer_deployed_tasks "temperature_sensor" period 100 ms frame 1 frame',
                    devices.grep(/\Atemperature_sensor/).first

@@ -20,18 +20,20 @@ module Syskit
     # the bundles it uses) defines. It only reads the app.
     #
     # Each kind is one row of KINDS: where its pages go, the template that
-    # draws them and the method that lists its objects. A new kind of model
-    # (compositions) is a row, a +collect_+ method and a template.
+    # draws them, the view the template reads (nil: the object itself) and,
+    # by its key, the +collect_KEY+ method that lists its objects. A new
+    # kind of model (compositions) is a row, a +collect_+ method (which
+    # can pick them among #modules), a view and a template.
     class Catalog
-      Kind = Struct.new(:key, :title, :singular, :dir, :template)
+      Kind = Struct.new(:key, :title, :singular, :dir, :template, :view)
 
       KINDS = [
-        Kind.new(:device, 'Device models', 'device model', 'devices', 'model'),
-        Kind.new(:bus, 'Bus models', 'bus model', 'buses', 'model'),
-        Kind.new(:service, 'Data services', 'data service', 'services', 'model'),
-        Kind.new(:task_library, 'Task libraries', 'task library', 'libraries', 'task_library'),
-        Kind.new(:task_model, 'Task models', 'task model', 'tasks', 'task_model'),
-        Kind.new(:profile, 'Profiles', 'profile', 'profiles', 'profile')
+        Kind.new(:device, 'Device models', 'device model', 'devices', 'model', :ModelView),
+        Kind.new(:bus, 'Bus models', 'bus model', 'buses', 'model', :ModelView),
+        Kind.new(:service, 'Data services', 'data service', 'services', 'model', :ModelView),
+        Kind.new(:task_library, 'Task libraries', 'task library', 'libraries', 'task_library', nil),
+        Kind.new(:task_model, 'Task models', 'task model', 'tasks', 'task_model', :TaskModelView),
+        Kind.new(:profile, 'Profiles', 'profile', 'profiles', 'profile', :ProfileView)
       ].freeze
 
       attr_reader :app
@@ -84,26 +86,31 @@ module Syskit
         end.sort_by(&:name)
       end
 
-      # Service, device and bus models, found in the modules the app's
-      # files defined; a bus's own services are documented on its page.
-      def models
-        @models ||= begin
-          found = {}.compare_by_identity
-          app.defined_modules.each { |mod| walk(mod, found, {}.compare_by_identity) }
-          found.keys.select { |m| m.name && !m.bus_model }
+      # Every named module and class reachable from the top-level modules
+      # the app's files defined, in name order: where its models are.
+      def modules
+        @modules ||= begin
+          seen = {}.compare_by_identity
+          app.defined_modules.each { |mod| walk(mod, seen) }
+          seen.keys.select(&:name)
         end
       end
 
-      def walk(mod, found, seen)
+      # Service, device and bus models; a bus's own services are
+      # documented on its page.
+      def models
+        @models ||= modules.select { |m| m.is_a?(Models::DataServiceModel) && !m.bus_model }
+      end
+
+      def walk(mod, seen)
         return if seen[mod]
 
         seen[mod] = true
-        found[mod] = true if mod.is_a?(Models::DataServiceModel)
         mod.constants(false).sort.each do |const|
           next if mod.autoload?(const)
 
           value = mod.const_get(const, false)
-          walk(value, found, seen) if value.is_a?(Module)
+          walk(value, seen) if value.is_a?(Module)
         end
       end
 

@@ -39,9 +39,14 @@ module Syskit
       def link(object, text = nil)
         entry = object.is_a?(Entry) ? object : catalog.entry_for(object)
         text ||= entry ? entry.name : object.to_s
-        return %(<span class="name">#{h(text)}</span>) unless entry
+        return %(<span class="name">#{name(text)}</span>) unless entry
 
-        %(<a href="#{h(url(entry.path))}">#{h(text)}</a>)
+        %(<a href="#{h(url(entry.path))}">#{name(text)}</a>)
+      end
+
+      # A model name that may break after each :: in a narrow column.
+      def name(text)
+        h(text).gsub('::', '::<wbr />')
       end
 
       # The documentation text as paragraphs (blank lines separate them;

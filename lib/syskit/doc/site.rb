@@ -66,14 +66,10 @@ module Syskit
         page.render('layout', title: entry ? entry.name : app.name, body: body, entry: entry)
       end
 
-      # What the template of +entry+ reads.
+      # What the template of +entry+ reads: its kind's view, or the object.
       def view_for(entry)
-        case entry.kind.key
-        when :device, :bus, :service then ModelView.new(catalog, entry.object)
-        when :task_model then TaskModelView.new(catalog, entry.object)
-        when :profile then ProfileView.new(catalog, entry.object, robot: robot, dot: @dot)
-        else entry.object
-        end
+        view = entry.kind.view
+        view ? Doc.const_get(view).new(catalog, entry.object, robot: robot, dot: @dot) : entry.object
       end
 
       private

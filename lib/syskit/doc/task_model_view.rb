@@ -22,7 +22,8 @@ module Syskit
 
       attr_reader :model, :catalog
 
-      def initialize(catalog, model)
+      # (+robot+ and +dot+ are for the views of profiles.)
+      def initialize(catalog, model, **_site)
         @catalog = catalog
         @model = model
       end

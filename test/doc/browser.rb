@@ -81,21 +81,40 @@ module Syskit
         @buffer = +''
       end
 
-      # Opens +url+ (in the browser's one tab) and waits for its load
-      # event; the page's errors (exceptions, console.error, failed loads)
-      # are collected.
+      # Opens +url+ (in the browser's one tab) and waits until it is
+      # loaded; the page's errors (exceptions, console.error, failed
+      # loads) are collected.
+      #
+      # The page shown before is marked, and the new one is loaded when
+      # the document has no mark and is complete: load events can be stale
+      # (a page a test navigated to by a click).
       def open(url)
         session = tab
+        # Another fragment of the page shown would not load it again.
+        open('about:blank') if evaluate(session, "location.href.split('#')[0]") == url.split('#').first
+        evaluate(session, 'window.syskitPrevious = true')
         collect_errors(session, []) # the previous page's
-        navigation = command('Page.navigate', { url: url }, session: session)
-        # Another fragment of the page shown is no new load: load it again.
-        command('Page.reload', session: session) unless navigation['loaderId']
+        command('Page.navigate', { url: url }, session: session)
+        wait_until_loaded(session)
         errors = []
-        wait_for('Page.loadEventFired', session, errors)
-        # Events already sent (a script's error at load) are read too.
-        evaluate(session, '1')
         collect_errors(session, errors)
         Page.new(self, session, url, errors)
+      end
+
+      def wait_until_loaded(session)
+        Timeout.timeout(TIMEOUT) do
+          loop do
+            loaded = begin
+              evaluate(session, "!window.syskitPrevious && document.readyState === 'complete'")
+            rescue Error
+              false # the document is being replaced
+            end
+            break if loaded
+
+            sleep 0.02
+          end
+        end
+        @pending.reject! { |m| m['method'] == 'Page.loadEventFired' }
       end
 
       def tab
@@ -167,11 +186,6 @@ module Syskit
         raise Error, "#{method}: #{reply['error']['message']}" if reply['error']
 
         reply['result']
-      end
-
-      def wait_for(event, session, errors)
-        read_until { |m| m['method'] == event && m['sessionId'] == session }
-        collect_errors(session, errors)
       end
 
       # Events read while waiting for an answer are kept for later.

@@ -155,6 +155,12 @@ module Syskit
       self
     end
 
+    # The top-level modules the app's files (and its bundles') defined,
+    # by name, while it is active.
+    def defined_modules
+      @environment.defined_modules
+    end
+
     # Removes everything the app defined: constants, loaded files, load path.
     def unload
       @environment.deactivate

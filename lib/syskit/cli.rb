@@ -7,6 +7,7 @@ require 'syskit/render/text'
 require 'syskit/render/json'
 require 'syskit/render/dot'
 require 'syskit/render/svg'
+require 'syskit/doc'
 require 'syskit/cli/support'
 require 'syskit/cli/command_line'
 require 'syskit/cli/style'
@@ -133,6 +134,35 @@ module Syskit
       end
     end
 
+    desc 'doc', "write the app's models and plans as a static HTML site"
+    long_desc <<~TEXT
+      Writes an index of every device model, bus model, data service, task
+      library, task model and profile of the app (and of the bundles it
+      uses), a page for each, and each profile's connection plan on the
+      robot, drawn with graphviz when it is installed. The site works
+      offline, from file://; the same app gives the same files.
+
+      --output defaults to doc/site in the app; a directory there is only
+      replaced if syskit doc wrote it.
+
+      Example: syskit doc --app ~/dev/awesome_robot --output /tmp/site
+    TEXT
+    method_option :app, type: :string, desc: 'the app directory'
+    method_option :robot, type: :string, default: 'default', desc: 'the robot configuration the plans are made for'
+    method_option :output, type: :string, desc: 'where to write the site (default: doc/site in the app)'
+    def doc
+      # Every task library of the app is documented, not only those its
+      # profiles use (as syskit check loads them).
+      with_app(load: false) do |app|
+        app.load!(robots: [options[:robot]], everything: true)
+        app.robot_config(options[:robot])
+        output = options[:output] ? File.expand_path(options[:output]) : File.join(app.root, 'doc', 'site')
+        result = Doc.build(app, output: output, robot: options[:robot])
+        report_site(result)
+        note_warnings(app)
+      end
+    end
+
     desc 'test [OPTIONS] [FILES...]', "run an app's tests (every test/**/test_*.rb by default)"
     long_desc <<~TEXT
       Runs the app's minitest files with syskit's test harness set up first,
@@ -158,6 +188,17 @@ module Syskit
     end
 
     private
+
+    # What syskit doc wrote, and what the site could not show.
+    def report_site(result)
+      style = Style.for($stderr)
+      result.unplanned.each do |profile, errors|
+        warn style.warning("#{profile.name} could not be planned (#{errors.first.message}): its page says why")
+      end
+      warn style.warning('graphviz is not installed: plans are listed, not drawn (install graphviz)') unless result.dot
+      puts "wrote #{Naming.count(result.pages, 'page')} to #{result.output}"
+      puts "open #{File.join(result.output, 'index.html')}"
+    end
 
     # Warnings do not stop a plan (constructs of Rock files this gem does
     # not model, ...): one line on stderr says there are some.

@@ -124,6 +124,15 @@ module Syskit
       refute_match(/cluster_composition_drive" \{[^}]*"left_motor" \[/m, dot)
     end
 
+    def test_dot_links_tasks_to_the_urls_given_for_their_models
+      plan = example_plan
+      dot = Render::Dot.write(plan, StringIO.new(+''), links: { 'canbus::Task' => 'tasks/canbus "x".html' }).string
+      assert_match(%r{^    "can0" \[label=.*fillcolor="#cfe0f5", color="#2f5d95", URL="tasks/canbus \\"x\\".html", (?#
+                   )tooltip="canbus::Task"\];$}, dot)
+      refute_match(/^    "sync" \[.*URL=/, dot)
+      refute_includes Render::Dot.render(plan), 'URL='
+    end
+
     def test_dot_is_accepted_by_graphviz
       skip 'graphviz (dot) is not installed' unless system('command -v dot >/dev/null 2>&1')
 

@@ -70,6 +70,15 @@ module Syskit
         @active = false
       end
 
+      # The top-level modules the app's files defined (AwesomeRobot,
+      # CommonModels...), sorted by name: where its models are.
+      def defined_modules
+        return [] unless @active
+
+        names = (Object.constants - @constants_before - constants.keys).select { |c| owned_constant?(c) }
+        names.sort.map { |c| Object.const_get(c) }.grep(Module)
+      end
+
       # Whether +path+ belongs to the app or one of its bundles (and is
       # forgotten on unload).
       def owned_file?(path)

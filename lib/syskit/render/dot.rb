@@ -16,6 +16,9 @@ module Syskit
     # attached to a bus, stays out), its child compositions boxes inside.
     # The title is the profile and the robot.
     #
+    # +links+ (task model name => URL) makes each task's box a link (the
+    # documentation site links tasks to their model's page).
+    #
     # Written as Text is, a chunk at a time (see Output).
     module Dot
       extend Output
@@ -101,9 +104,10 @@ module Syskit
 
       # Writes the graph of one plan.
       class Writer
-        def initialize(plan, io)
+        def initialize(plan, io, links: nil)
           @plan = plan
           @io = io
+          @links = links
           @out = Dot.quote(plan.profile.to_s, +'digraph ') << " {\n"
           @layout = Layout.new(plan)
           @ports = {} # task name => port name => record field
@@ -172,6 +176,8 @@ module Syskit
         # A bus driver is drawn apart from device drivers.
         def style(task)
           @out << '}", ' << (@layout.bus_tasks[task.name] ? BUS_DRIVER : DEVICE_DRIVER)
+          url = @links && @links[task.model]
+          url ? Dot.quote(task.model, Dot.quote(url, @out << ', URL=') << ', tooltip=') : @out
         end
 
         # {<i0> name|<i1> other}
@@ -202,8 +208,8 @@ module Syskit
       module_function
 
       # Writes the graph to +io+; returns +io+.
-      def write(plan, io)
-        Writer.new(plan, io).write
+      def write(plan, io, links: nil)
+        Writer.new(plan, io, links: links).write
       end
 
       SPECIAL = /[\\"\n]/

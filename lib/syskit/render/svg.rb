@@ -12,9 +12,10 @@ module Syskit
 
       module_function
 
-      # Writes the SVG of +plan+ to +io+; returns +io+.
-      def write(plan, io, dot: dot_command)
-        svg, err, status = Open3.capture3(dot, '-Tsvg', stdin_data: Dot.render(plan), binmode: true)
+      # Writes the SVG of +plan+ to +io+ (+links+: see Dot); returns +io+.
+      def write(plan, io, dot: dot_command, links: nil)
+        graph = Dot.write(plan, StringIO.new(+''), links: links).string
+        svg, err, status = Open3.capture3(dot, '-Tsvg', stdin_data: graph, binmode: true)
         unless status.success?
           said = err.lines.first.to_s.strip
           raise Error.new("graphviz's dot could not draw the plan (exit status #{status.exitstatus})" \

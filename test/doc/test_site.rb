@@ -1,0 +1,157 @@
+# frozen_string_literal: true
+
+require_relative 'site_helper'
+
+module Syskit
+  # `syskit doc` on the example app and on small apps, read from the files
+  # it writes (the browser tests are in test_site_in_browser.rb).
+  class TestDocSite < Minitest::Test
+    include SelfTest::SiteHelper
+
+    def test_it_prints_where_the_site_is
+      out = SelfTest::SiteHelper.example_site { flunk }.last if example_site
+      dir = example_site
+      assert_equal "wrote #{html_pages(dir).size} pages to #{dir}\nopen #{dir}/index.html\n", out
+    end
+
+    def test_the_index_lists_every_kind_and_marks_what_comes_from_a_bundle
+      index = page('index.html')
+      assert_equal ['Device models 7', 'Bus models 2', 'Data services 1', 'Task libraries 9', 'Task models 11',
+                    'Profiles 1'], texts(index, '//section/h2')
+      can = REXML::XPath.first(index, "//li[@data-name='commonmodels::devices::bus::can']")
+      assert_equal "CommonModels::Devices::Bus::CAN common_models (syskit's own) Controller Area Network.", squeeze(can)
+      f9 = REXML::XPath.first(index, "//li[@data-name='awesomerobot::devices::gps::ublox::f9']")
+      assert_equal 'devices/AwesomeRobot.Devices.GPS.Ublox.F9.html', REXML::XPath.first(f9, 'a').attributes['href']
+      assert_nil REXML::XPath.first(f9, ".//span[@class='badge origin']")
+    end
+
+    def test_every_page_is_well_formed_with_unique_ids_and_no_external_resource
+      dir = example_site
+      html_pages(dir).each do |path|
+        text = File.read(File.join(dir, path))
+        assert text.start_with?("<!DOCTYPE html>\n<html lang=\"en\">"), path
+        doc = page(path, dir) # raises on anything that is not well-formed
+        ids = REXML::XPath.match(doc, '//@id').map(&:value)
+        assert_equal ids.uniq, ids, "#{path}: duplicate ids"
+        refute_empty texts(doc, '/html/head/title').first, path
+        refs = REXML::XPath.match(doc, '//@href | //@src | //@xlink:href').map(&:value)
+        assert_empty refs.grep(%r{\A(?:[a-z]+:)?//}i), "#{path} refers to the network"
+      end
+    end
+
+    def test_the_same_app_gives_the_same_bytes
+      again = File.join(Dir.mktmpdir('syskit-doc'), 'site')
+      _, err, status = run_cli('doc', '--app', SelfTest::SiteHelper::EXAMPLE, '--output', again)
+      assert_equal 0, status, err
+      assert_equal site_files(example_site), site_files(again)
+      site_files(again).each do |file|
+        assert File.binread(File.join(example_site, file)) == File.binread(File.join(again, file)), "#{file} differs"
+      end
+    ensure
+      FileUtils.rm_rf(File.dirname(again))
+    end
+
+    def test_a_device_model_page
+      doc = page('devices/AwesomeRobot.Devices.GPS.Ublox.F9.html')
+      assert_equal ["Ublox's 9th generation GNSS receivers (F9P, F9R)."], texts(doc, "//div[@class='doc']/p")
+      assert_equal ['pose_samples output /base/samples/RigidBodyState'], texts(doc, "//section[@id='ports']//tbody/tr")
+      assert_equal ['AwesomeRobot::Services::Position, ports mapped: position_samples → pose_samples'],
+                   texts(doc, "//section[@id='provides']//li")
+      assert_equal ['gps_ublox::F9Task f9 (AwesomeRobot::Devices::GPS::Ublox::F9) pose_samples'],
+                   texts(doc, "//section[@id='drivers']//tbody/tr")
+      assert_equal ['gps in AwesomeRobot::Profiles::Live::Base'], texts(doc, "//section[@id='robots']//li")
+      assert_equal '../tasks/gps_ublox.F9Task.html',
+                   REXML::XPath.first(doc, "//section[@id='drivers']//a").attributes['href']
+    end
+
+    def test_a_data_service_page_says_what_provides_it
+      doc = page('services/AwesomeRobot.Services.Position.html')
+      assert_equal ['Provided by AwesomeRobot::Devices::GPS::Ublox::F9.'],
+                   texts(doc, "//section[@id='provides']/p")
+      assert_equal ['gps_ublox::F9Task f9 (AwesomeRobot::Devices::GPS::Ublox::F9) pose_samples'],
+                   texts(doc, "//section[@id='drivers']//tbody/tr")
+    end
+
+    def test_a_bus_model_page
+      doc = page('buses/CommonModels.Devices.Bus.CAN.html')
+      facts = texts(doc, "//section[@id='bus']/dl/*")
+      assert_equal ['message type', '/canbus/Message'], facts.first(2)
+      assert_equal ['attached devices get', '.can_id'], facts.last(2)
+      assert_includes texts(doc, "//section[@id='bus']//tbody/tr"), 'BusInSrv to_bus input the bus driver'
+      uses = texts(doc, "//section[@id='robots']//li")
+      assert_equal 'can0 in AwesomeRobot::Profiles::Live::Base, attached devices: temperature_sensor ' \
+                   '(AwesomeRobot::Devices::Temperature::CANSensor), water_temperature ' \
+                   '(AwesomeRobot::Devices::Temperature::CANSensor), sync (AwesomeRobot::Devices::CANOpenSync), ' \
+                   'n2k (AwesomeRobot::Devices::N2k::Bus)', uses.first
+      assert_equal 3, uses.size # can0, n2k (a CAN bus through its provides), can1
+      # simple_can::Task drives CAN buses through BusSrv, nmea2000::CANTask its sub-bus.
+      assert_equal %w[canbus::Task nmea2000::CANTask simple_can::Task],
+                   texts(doc, "//section[@id='drivers']//td[1]").uniq
+    end
+
+    def test_a_task_model_page_with_its_configuration_sections
+      doc = page('tasks/camera_gige.Task.html')
+      assert_equal ['GigE Vision camera driver.'], texts(doc, "//div[@class='doc']/p")
+      assert_equal ['exposure /int32_t 10000', 'frame_rate /double 10.0', 'ip /std/string none'],
+                   texts(doc, "//section[@id='properties']//tbody/tr")
+      assert_equal %w[default forward aft], texts(doc, "//section[@id='configuration']/h3")
+      assert_equal ['exposure 5000', 'frame_rate 20.0'],
+                   texts(doc, "//section[@id='configuration']/table[1]//tr")
+      assert_equal ['ip "10.40.50.50"'], texts(doc, "//section[@id='configuration']/table[2]//tr")
+      assert_equal ['aft_camera in deployment cameras of camera_gige, on robot default',
+                    'forward_camera in deployment cameras of camera_gige, on robot default'],
+                   texts(doc, "//section[@id='deployments']//li")
+      assert_equal ['forward_camera in AwesomeRobot::Profiles::Live::Base',
+                    'aft_camera in AwesomeRobot::Profiles::Live::Base'], texts(doc, "//section[@id='robots']//li")
+    end
+
+    def test_a_task_model_page_shows_inheritance_dynamic_ports_and_operations
+      doc = page('tasks/canbus.Task.html')
+      assert_includes texts(doc, "//section[@id='services']//tbody/tr"),
+                      'bus_in CommonModels::Devices::Bus::CAN::BusInSrv provides ' \
+                      '(drives CommonModels::Devices::Bus::CAN, argument bus_in_dev) to_bus → in'
+      assert_includes texts(doc, "//section[@id='ports']/table[2]//tr"), '/\\w+/ output /canbus/Message'
+      assert_match(/\Awatch\(name: /, texts(doc, "//section[@id='operations']//tbody/tr").last)
+      gps = page('tasks/gps_ublox.F9Task.html')
+      assert_equal ['task library', 'gps_ublox', 'subclass of', 'iodrivers_base::Task'],
+                   texts(gps, "//dl[@class='facts']/*").first(4)
+      inherited = texts(gps, "//section[@id='properties']//tbody/tr/td[1]").grep(/from/)
+      assert_includes inherited, 'io_port from iodrivers_base::Task'
+    end
+
+    def test_a_profile_page
+      doc = page('profiles/AwesomeRobot.Profiles.Live.Base.html')
+      devices = texts(doc, "//section[@id='devices']//tbody/tr[@id]")
+      assert_equal 12, devices.size
+      # The comment above a device's declaration is its documentation, in the row after it.
+      assert_equal 'Its frames travel on can0\'s wire.',
+                   texts(doc, "//tr[@id='device-fuel_level']/following-sibling::tr[1][@class='device-doc']").first
+      assert_equal 'temperature_sensor AwesomeRobot::Devices::Temperature::CANSensor can_temperature_sensor::Task ' \
+                   'can0 can_id [0x1234,0xFFFF] prefer_deployed_tasks "temperature_sensor" period 100 ms frame 1 frame',
+                   devices.grep(/\Atemperature_sensor/).first
+      assert_equal 12, REXML::XPath.match(doc, "//section[@id='tasks']/table[1]/tbody/tr").size
+      assert_includes texts(doc, "//section[@id='tasks']/table[2]//tr"),
+                      'can0.temperature_sensor temperature_sensor.can_in /canbus/Message buffer 2'
+      assert_equal ['Bus can0', 'Bus can1'], texts(doc, "//section[@class='can-bus']/h2")
+      timing = texts(doc, "//section[@id='bus-can1']//table[@class='timing']/tbody/tr")
+      assert_equal '202 right_motor 8 1.000 1.000 0.200 0.135 0.065 0.805 0.195 ok', timing[3]
+    end
+
+    def test_the_profile_page_draws_the_plan_with_links_to_the_task_models
+      skip 'graphviz (dot) is not installed: the drawn plan is not checked' unless Doc.dot_command
+      html = File.read(File.join(example_site, 'profiles/AwesomeRobot.Profiles.Live.Base.html'))
+      svg = html[%r{<figure class="graph">\s*(<svg.*?</svg>)}m, 1]
+      refute_nil svg, 'the plan is drawn inline'
+      assert_includes svg, %(xlink:href="../tasks/canbus.Task.html")
+      assert_includes svg, '>left_motor</text>'
+    end
+
+    def test_each_can_bus_has_its_charts
+      html = File.read(File.join(example_site, 'profiles/AwesomeRobot.Profiles.Live.Base.html'))
+      can1 = html[%r{<section id="bus-can1".*?</section>}m]
+      assert_equal 2, can1.scan('<svg class="chart"').size
+      assert_includes can1, '<text class="label" x="218" y="78">left_motor  27.1 %</text>'
+      assert_includes can1, '0.805 / 1 ms</text>'
+    end
+  end
+end

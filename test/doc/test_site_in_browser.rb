@@ -1,0 +1,152 @@
+# frozen_string_literal: true
+
+require_relative 'site_helper'
+require_relative 'browser'
+require 'uri'
+
+module Syskit
+  # The example app's site in a real browser (Debian's chromium, headless):
+  # pages load without errors, links lead somewhere, the index's filter
+  # works and pages show something. Skipped, saying so, without chromium.
+  #
+  # SYSKIT_DOC_SCREENSHOTS=DIR keeps a screenshot of each page there, to
+  # look at.
+  class TestDocSiteInBrowser < Minitest::Test
+    include SelfTest::SiteHelper
+
+    # One browser for the tests of this class, closed after the last one
+    # (an idle browser left running would slow the timing-sensitive tests
+    # that follow).
+    def self.browser
+      @browser ||= SelfTest::Browser.new.tap { |b| Minitest.after_run { b.close unless b.closed? } }
+    end
+
+    def self.test_done
+      @done = (@done || 0) + 1
+      @browser.close if @browser && !@browser.closed? && @done == runnable_methods.size
+    end
+
+    def teardown
+      self.class.test_done
+    end
+
+    def setup
+      skip 'chromium is not installed (apt-get install chromium): the site is not checked in a browser' \
+        unless SelfTest::Browser.command
+    end
+
+    def browser
+      self.class.browser
+    end
+
+    def url(path)
+      "file://#{File.join(example_site, path)}"
+    end
+
+    # Every link of the page, resolved: anchors (HTML and the SVG of the
+    # plan), style sheets, scripts.
+    LINKS = <<~JS
+      [...document.querySelectorAll('a')].map(a =>
+        a.href instanceof SVGAnimatedString ? new URL(a.href.baseVal, document.baseURI).href : a.href)
+      .concat([...document.querySelectorAll('link[href]')].map(l => l.href))
+      .concat([...document.querySelectorAll('script[src]')].map(s => s.src))
+    JS
+
+    # One visit per page (loading 30 pages takes a while): errors, links,
+    # and a screenshot.
+    def test_every_page_loads_without_errors_its_links_resolve_and_it_is_not_blank
+      keep = ENV.fetch('SYSKIT_DOC_SCREENSHOTS', nil)
+      checked = 0
+      html_pages(example_site).each do |path|
+        page = browser.open(url(path))
+        assert_empty page.errors, "#{path} logged errors"
+        page.evaluate(LINKS).each do |link|
+          next if link.start_with?('data:')
+
+          assert_link_resolves(link, path)
+          checked += 1
+        end
+        refute SelfTest::Browser.blank?(page.screenshot(scale: 0.25)), "#{path} looks blank"
+        keep_screenshot(page, keep, path) if keep
+      end
+      assert_operator checked, :>, 300
+    end
+
+    def test_the_filter_narrows_the_index
+      page = browser.open(url('index.html'))
+      all = visible(page)
+      assert_equal 31, all.size
+      assert_equal '31 entries', page.evaluate("document.getElementById('search-count').textContent")
+
+      shown = filter(page, 'gps')
+      assert_equal %w[awesomerobot::devices::gps::ublox::f9 gps_ublox gps_ublox::f9task], shown
+      assert_equal '3 of 31', page.evaluate("document.getElementById('search-count').textContent")
+      assert_equal %w[devices libraries tasks], page.evaluate(<<~JS)
+        [...document.querySelectorAll('section.kind')].filter(s => s.offsetParent !== null).map(s => s.id)
+      JS
+      # Every word must match, in the name or the summary.
+      assert_equal ['canbus::task'], filter(page, 'canbus per-device')
+      assert_empty filter(page, 'no such model')
+      assert page.evaluate("document.getElementById('no-match').offsetParent !== null")
+      assert_equal all, filter(page, '')
+    end
+
+    def test_the_index_opens_filtered_from_its_address
+      page = browser.open("#{url('index.html')}#q=temperature")
+      assert_equal %w[awesomerobot::devices::temperature::cansensor can_temperature_sensor
+                      can_temperature_sensor::task], visible(page)
+    end
+
+    def test_slash_focuses_the_filter_and_enter_opens_the_first_match
+      page = browser.open(url('index.html'))
+      page.evaluate("document.dispatchEvent(new KeyboardEvent('keydown', { key: '/' }))")
+      assert_equal 'search', page.evaluate('document.activeElement.id')
+      filter(page, 'fluid level')
+      page.evaluate("document.getElementById('search').dispatchEvent(new KeyboardEvent('keydown', { key: 'Enter' }))")
+      assert_equal url('devices/AwesomeRobot.Devices.N2k.FluidLevel.html'), location_after_navigation(page)
+    end
+
+    private
+
+    # The page's address once the navigation it started is done.
+    def location_after_navigation(page)
+      50.times do
+        href = begin
+          page.evaluate('document.readyState === "complete" && location.href')
+        rescue SelfTest::Browser::Error
+          nil # the document is being replaced
+        end
+        return href if href && !href.end_with?('index.html')
+
+        sleep 0.1
+      end
+      flunk 'the page did not change'
+    end
+
+    def keep_screenshot(page, dir, path)
+      FileUtils.mkdir_p(dir)
+      File.binwrite(File.join(dir, "#{path.tr('/', '_')}.png"), page.screenshot(full: true))
+    end
+
+    def visible(page)
+      page.evaluate("[...document.querySelectorAll('li[data-name]')].filter(li => li.offsetParent !== null)" \
+                    '.map(li => li.dataset.name)')
+    end
+
+    def filter(page, text)
+      page.evaluate("(() => { const i = document.getElementById('search'); i.value = #{text.to_json}; " \
+                    "i.dispatchEvent(new Event('input')); })()")
+      visible(page)
+    end
+
+    def assert_link_resolves(link, from)
+      uri = URI(link)
+      assert_equal 'file', uri.scheme, "#{from} links to #{link}"
+      path = URI.decode_www_form_component(uri.path)
+      assert File.file?(path), "#{from} links to #{link}, which does not exist"
+      return unless uri.fragment && !uri.fragment.start_with?('q=')
+
+      assert_includes File.read(path), %(id="#{uri.fragment}"), "#{from} links to #{link}: no such anchor"
+    end
+  end
+end

@@ -92,7 +92,7 @@ module Syskit
       doc = page('profiles/AwesomeRobot.Profiles.Live.Base.html', output)
       assert_match(/drawn by Graphviz, which is not installed here: install it \(sudo apt install graphviz/,
                    texts(doc, "//section[@id='plan']/p[@class='notice']").first)
-      assert_equal 12, REXML::XPath.match(doc, "//section[@id='tasks']/table[1]/tbody/tr").size
+      assert_equal 14, REXML::XPath.match(doc, "//section[@id='tasks']/table[1]/tbody/tr").size
     end
 
     def test_models_of_other_bundles_are_marked_with_their_bundle

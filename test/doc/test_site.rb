@@ -16,8 +16,8 @@ module Syskit
 
     def test_the_index_lists_every_kind_and_marks_what_comes_from_a_bundle
       index = page('index.html')
-      assert_equal ['Device models 7', 'Bus models 2', 'Data services 1', 'Task libraries 9', 'Task models 11',
-                    'Profiles 1'], texts(index, '//section/h2')
+      assert_equal ['Device models 7', 'Bus models 2', 'Data services 1', 'Task libraries 10', 'Task models 13',
+                    'Compositions 2', 'Profiles 1'], texts(index, '//section/h2')
       can = REXML::XPath.first(index, "//li[@data-name='commonmodels::devices::bus::can']")
       assert_equal "CommonModels::Devices::Bus::CAN common_models (syskit's own) Controller Area Network.", squeeze(can)
       f9 = REXML::XPath.first(index, "//li[@data-name='awesomerobot::devices::gps::ublox::f9']")
@@ -129,12 +129,46 @@ module Syskit
       assert_equal 'temperature_sensor AwesomeRobot::Devices::Temperature::CANSensor can_temperature_sensor::Task ' \
                    'can0 can_id [0x1234,0xFFFF] prefer_deployed_tasks "temperature_sensor" period 100 ms frame 1 frame',
                    devices.grep(/\Atemperature_sensor/).first
-      assert_equal 12, REXML::XPath.match(doc, "//section[@id='tasks']/table[1]/tbody/tr").size
+      assert_equal 14, REXML::XPath.match(doc, "//section[@id='tasks']/table[1]/tbody/tr").size
       assert_includes texts(doc, "//section[@id='tasks']/table[2]//tr"),
                       'can0.temperature_sensor temperature_sensor.can_in /canbus/Message buffer 2'
       assert_equal ['Bus can0', 'Bus can1'], texts(doc, "//section[@class='can-bus']/h2")
       timing = texts(doc, "//section[@id='bus-can1']//table[@class='timing']/tbody/tr")
       assert_equal '202 right_motor 8 1.000 1.000 0.200 0.135 0.065 0.805 0.195 ok', timing[3]
+    end
+
+    def test_a_profile_page_lists_its_definitions
+      doc = page('profiles/AwesomeRobot.Profiles.Live.Base.html')
+      rows = texts(doc, "//section[@id='definitions']//tbody/tr[@id]")
+      assert_equal ['drive_def AwesomeRobot::Compositions::Drive position gps_dev left left_motor_dev right ' \
+                    'right_motor_dev arguments max_speed: 0.5',
+                    'watch_temperatures_def AwesomeRobot::Compositions::TemperatureWatch engine ' \
+                    'temperature_sensor_dev water water_temperature_dev sections summer'], rows
+      assert_equal 'Follows the path with the GPS pose, at half speed.',
+                   texts(doc, "//tr[@id='definition-drive']/following-sibling::tr[1]").first
+      link = REXML::XPath.first(doc, "//tr[@id='definition-drive']//a[code='gps_dev']")
+      assert_equal '#device-gps', link.attributes['href']
+    end
+
+    def test_a_composition_page
+      doc = page('compositions/AwesomeRobot.Compositions.Drive.html')
+      assert_match(/\ADrives the robot along its path/, texts(doc, "//div[@class='doc']/p").first)
+      assert_equal ['position AwesomeRobot::Services::Position to select',
+                    'follower navigation::PathFollower arguments max_speed: from(:parent_task).max_speed',
+                    'left AwesomeRobot::Devices::Roboteq::CANOpen to select',
+                    'right AwesomeRobot::Devices::Roboteq::CANOpen to select'],
+                   texts(doc, "//section[@id='children']//tbody/tr")
+      assert_equal ['position.position_samples follower.pose data', 'follower.left_speed left.speed_command data',
+                    'follower.right_speed right.speed_command data'],
+                   texts(doc, "//section[@id='dataflow']//table[@class='connections']/tbody/tr")
+      assert_equal ['pose input /base/samples/RigidBodyState follower.pose'],
+                   texts(doc, "//section[@id='ports']//tbody/tr")
+      assert_equal ['AwesomeRobot::Profiles::Live::Base.drive_def'], texts(doc, "//section[@id='definitions']//li")
+      %w[dataflow hierarchy].each do |graph|
+        refute_nil REXML::XPath.first(doc, "//section[@id='#{graph}']//*[local-name()='svg']"), graph
+      end
+      watch = page('compositions/AwesomeRobot.Compositions.TemperatureWatch.html')
+      assert_equal ['summer: monitor with default, summer'], texts(watch, "//section[@id='ports']/ul/li")
     end
 
     def test_the_profile_page_draws_the_plan_with_links_to_the_task_models

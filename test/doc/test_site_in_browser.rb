@@ -75,12 +75,12 @@ module Syskit
     def test_the_filter_narrows_the_index
       page = browser.open(url('index.html'))
       all = visible(page)
-      assert_equal 31, all.size
-      assert_equal '31 entries', page.evaluate("document.getElementById('search-count').textContent")
+      assert_equal 36, all.size
+      assert_equal '36 entries', page.evaluate("document.getElementById('search-count').textContent")
 
       shown = filter(page, 'gps')
       assert_equal %w[awesomerobot::devices::gps::ublox::f9 gps_ublox gps_ublox::f9task], shown
-      assert_equal '3 of 31', page.evaluate("document.getElementById('search-count').textContent")
+      assert_equal '3 of 36', page.evaluate("document.getElementById('search-count').textContent")
       assert_equal %w[devices libraries tasks], page.evaluate(<<~JS)
         [...document.querySelectorAll('section.kind')].filter(s => s.offsetParent !== null).map(s => s.id)
       JS
@@ -94,7 +94,8 @@ module Syskit
     def test_the_index_opens_filtered_from_its_address
       page = browser.open("#{url('index.html')}#q=temperature")
       assert_equal %w[awesomerobot::devices::temperature::cansensor can_temperature_sensor
-                      can_temperature_sensor::task], visible(page)
+                      can_temperature_sensor::task navigation::temperaturemonitor
+                      awesomerobot::compositions::temperaturewatch], visible(page)
     end
 
     def test_slash_focuses_the_filter_and_enter_opens_the_first_match

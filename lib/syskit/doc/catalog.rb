@@ -22,8 +22,8 @@ module Syskit
     # Each kind is one row of KINDS: where its pages go, the template that
     # draws them, the view the template reads (nil: the object itself) and,
     # by its key, the +collect_KEY+ method that lists its objects. A new
-    # kind of model (compositions) is a row, a +collect_+ method (which
-    # can pick them among #modules), a view and a template.
+    # kind of model is a row, a +collect_+ method (which can pick them
+    # among #modules), a view and a template.
     class Catalog
       Kind = Struct.new(:key, :title, :singular, :dir, :template, :view)
 
@@ -33,6 +33,7 @@ module Syskit
         Kind.new(:service, 'Data services', 'data service', 'services', 'model', :ModelView),
         Kind.new(:task_library, 'Task libraries', 'task library', 'libraries', 'task_library', nil),
         Kind.new(:task_model, 'Task models', 'task model', 'tasks', 'task_model', :TaskModelView),
+        Kind.new(:composition, 'Compositions', 'composition', 'compositions', 'composition', :CompositionView),
         Kind.new(:profile, 'Profiles', 'profile', 'profiles', 'profile', :ProfileView)
       ].freeze
 
@@ -144,6 +145,12 @@ module Syskit
           spec = model.spec
           [model.name, model, spec.doc || @comments.above(spec.declared_at), spec.declared_at, spec.library.path]
         end
+      end
+
+      # Composition models (not the submodels specializations make).
+      def collect_composition
+        modules.select { |m| m.is_a?(Class) && m < Composition && !m.specialization? }
+               .map { |m| [m.name, m, m.doc, m.declared_at] }
       end
 
       def collect_profile

@@ -37,6 +37,25 @@ module Syskit
         profile.robot.devices
       end
 
+      # The profile's definitions (see Profile::Definitions), by name.
+      def definitions
+        profile.definitions.values
+      end
+
+      # What a definition selects for the children of its composition,
+      # as [key, selected] pairs: the key's name, and the device selected
+      # (a Robot::Device) or the name of what is.
+      def selections(definition)
+        injection = definition.requirements.selections
+        explicit = injection.explicit.map { |k, v| [k.is_a?(String) ? k : k.to_s, selected(v)] }
+        explicit + injection.defaults.map { |v| ['(default)', selected(v)] }
+      end
+
+      def selected(value)
+        device = value.device if value.is_a?(InstanceRequirements)
+        device || (value.respond_to?(:short_name) ? value.short_name : value.to_s)
+      end
+
       # What the robot block sets on a device, as [name, HTML] pairs: its
       # bus attributes (CAN filters in hex), configuration sections,
       # deployment preferences, timing and declared traffic.

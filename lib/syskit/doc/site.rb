@@ -8,6 +8,7 @@ require 'syskit/doc/page'
 require 'syskit/doc/model_view'
 require 'syskit/doc/task_model_view'
 require 'syskit/doc/profile_view'
+require 'syskit/doc/composition_view'
 
 module Syskit
   module Doc

@@ -14,17 +14,19 @@ module Syskit
 
       # Writes the SVG of +plan+ to +io+ (+links+: see Dot); returns +io+.
       def write(plan, io, dot: dot_command, links: nil)
-        graph = Dot.write(plan, StringIO.new(+''), links: links).string
-        svg, err, status = Open3.capture3(dot, '-Tsvg', stdin_data: graph, binmode: true)
-        unless status.success?
-          said = err.lines.first.to_s.strip
-          raise Error.new("graphviz's dot could not draw the plan (exit status #{status.exitstatus})" \
-                          "#{": #{said}" unless said.empty?}",
-                          hint: 'write the graph with --format dot and run dot -Tsvg on it to see what graphviz says')
-        end
-
-        io.write(svg)
+        io.write(draw(Dot.write(plan, StringIO.new(+''), links: links).string, dot: dot))
         io
+      end
+
+      # The SVG Graphviz draws of the DOT graph +graph+.
+      def draw(graph, dot: dot_command, what: 'the plan')
+        svg, err, status = Open3.capture3(dot, '-Tsvg', stdin_data: graph, binmode: true)
+        return svg if status.success?
+
+        said = err.lines.first.to_s.strip
+        raise Error.new("graphviz's dot could not draw #{what} (exit status #{status.exitstatus})" \
+                        "#{": #{said}" unless said.empty?}",
+                        hint: 'write the graph with --format dot and run dot -Tsvg on it to see what graphviz says')
       end
 
       # The dot executable on PATH, or an error saying how to get one.

@@ -13,5 +13,10 @@ module Syskit
   # What task contexts and compositions are (Syskit::Component): the
   # class test files and custom models name.
   class Component < AbstractComponent
+    # Syskit's name for Models::Placeholder.for: a model standing for any
+    # component providing +models+.
+    def self.create_proxy_task_model(models, **)
+      Models::Placeholder.for(models)
+    end
   end
 end

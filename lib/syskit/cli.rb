@@ -107,10 +107,10 @@ module Syskit
         definitions = profile.definitions.keys
         raise e unless actions.empty? && definitions.size > 1
 
-        raise ErrorList.new([e, Warning.new(
+        raise ErrorList, [e, Warning.new(
           "the #{definitions.size} definitions of #{profile.name} were planned together, with its devices",
           hint: "plan one at a time: syskit plan #{profile.name} #{definitions.first}_def"
-        )])
+        )]
       end
     end
 

@@ -104,8 +104,8 @@ module Syskit
     # The injections in effect where a child is instantiated: the
     # profile's (its robot's devices, used profiles, +use+ statements),
     # then each enclosing requirement's +use+, later ones winning. Each
-    # push resolves the pushed defaults against its own explicit keys
-    # first, as Syskit does. A frozen value; #push and #mask return new ones.
+    # layer resolves its defaults against its own explicit keys
+    # first, as Syskit does. A frozen value; #with and #mask return new ones.
     class Context
       # Roots of the model hierarchies: fullfilled by everything, never a
       # key of a default selection.
@@ -125,7 +125,7 @@ module Syskit
 
       EMPTY = new
 
-      def push(injection)
+      def with(injection)
         return self if injection.nil? || injection.empty?
 
         added = Context.resolve_defaults(injection)
@@ -138,7 +138,7 @@ module Syskit
       def mask(keys)
         return self if keys.empty?
 
-        Context.new(state.reject { |key, _| keys.include?(key) }, @locations)
+        Context.new(state.except(*keys), @locations)
       end
 
       # Where +key+ was selected.

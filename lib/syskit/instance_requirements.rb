@@ -24,24 +24,29 @@ module Syskit
     attr_reader :device, :service, :profile, :name, :arguments, :deployment, :selections,
                 :specialization_hints, :declared_at, :instance
 
+    # What stands for requirements besides models and lists of them (see
+    # .from): requirements, a model's service, a device, a tag, a
+    # composition's child, a task of the network being generated.
+    def self.selectable_kinds
+      [InstanceRequirements, Models::DataServiceModel, Robot::Device, Models::BoundService,
+       Models::CompositionChild, Profile::Tag, AbstractComponent]
+    end
+
     # Whether +value+ can stand for a component in a network (what +use+
     # and +add+ accept).
     def self.selectable?(value)
-      value.is_a?(InstanceRequirements) || value.is_a?(Models::DataServiceModel) ||
-        value.is_a?(Robot::Device) || value.is_a?(Models::BoundService) ||
-        value.is_a?(Models::CompositionChild) || value.is_a?(Profile::Tag) ||
-        (value.is_a?(Class) && value < AbstractComponent) || value.is_a?(AbstractComponent) ||
-        (value.is_a?(Array) && !value.empty? && value.all? { |v| selectable?(v) })
+      return value.all? { |v| selectable?(v) } if value.is_a?(Array) && !value.empty?
+
+      (value.is_a?(Class) && value < AbstractComponent) || selectable_kinds.any? { |kind| value.is_a?(kind) }
     end
 
     # The requirements +value+ stands for (see .selectable?).
     def self.from(value, location: nil)
       case value
       when InstanceRequirements then value
-      when Profile::Tag then value.requirements
+      when Profile::Tag, Models::CompositionChild then value.requirements
       when Robot::Device then new(device: value, declared_at: value.declared_at)
       when Models::BoundService then new([value.task_model], service: value, declared_at: location)
-      when Models::CompositionChild then value.requirements
       when AbstractComponent then new([value.model], instance: value, declared_at: location)
       when Array then new(value.map { |v| from(v, location: location).models }.flatten.uniq, declared_at: location)
       else new([value], declared_at: location)
@@ -206,7 +211,7 @@ module Syskit
       return component_model unless composition?
 
       context = profile ? profile.dependency_injection_context : DependencyInjection::Context::EMPTY
-      component_model.narrow(context.push(selections), hints: specialization_hints)
+      component_model.narrow(context.with(selections), hints: specialization_hints)
     end
 
     def to_instance_requirements
@@ -218,16 +223,13 @@ module Syskit
       component_model.respond_to?(:find_child) ? component_model.find_child(name) : nil
     end
 
+    # An action by its name (+Base.drive_def+, +gps_dev+), else the model
+    # and the statements that changed it, as they are written.
     def to_s
-      base =
-        if name then profile ? "#{profile.name}.#{name}" : name
-        elsif device then "#{device.name}_dev"
-        elsif service then "#{service.task_model.name}.#{service.name}_srv"
-        else models.map { |m| m.respond_to?(:short_name) ? m.short_name : m.to_s }.join(',')
-        end
-      return base if name || device
+      return profile ? "#{profile.name}.#{name}" : name if name
+      return "#{device.name}_dev" if device
 
-      parts = [base]
+      parts = [base_name]
       parts << selections.to_s unless selections.empty?
       parts << "with_conf(#{conf.map(&:inspect).join(', ')})" if @conf
       parts << "with_arguments(#{arguments.map { |k, v| "#{k}: #{v.inspect}" }.join(', ')})" unless arguments.empty?
@@ -252,6 +254,12 @@ module Syskit
     end
 
     protected
+
+    def base_name
+      return "#{service.task_model.name}.#{service.name}_srv" if service
+
+      models.map { |m| m.respond_to?(:short_name) ? m.short_name : m.to_s }.join(',')
+    end
 
     def raw_hints
       @deployment_hints

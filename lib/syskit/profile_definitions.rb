@@ -154,15 +154,15 @@ module Syskit
       # selections of the profiles it uses, then its own.
       def dependency_injection_context
         @dependency_injection_context ||= begin
-          context = DependencyInjection::Context::EMPTY.push(robot_injection)
-          all_used_profiles.each { |p| context = context.push(p.selections) }
-          context.push(selections)
+          context = DependencyInjection::Context::EMPTY.with(robot_injection)
+          all_used_profiles.each { |p| context = context.with(p.selections) }
+          context.with(selections)
         end
       end
 
       # Every profile used, directly or not, each once.
       def all_used_profiles(found = [])
-        used_profiles.each do |profile, _|
+        used_profiles.each do |(profile, _tags)|
           next if found.include?(profile)
 
           found << profile
@@ -182,16 +182,18 @@ module Syskit
       def resolve_tag_selection(profile, tags, location)
         tags.to_h do |key, value|
           tag = key.is_a?(Tag) ? key : profile.find_tag(key)
-          unless tag
-            known = profile.tags.keys
-            raise DeclarationError.new(
-              "#{profile.name} has no tag '#{key}'#{Naming.did_you_mean(key.to_s, known)}",
-              location: location, hint: known.empty? ? "#{profile.name} declares no tags" : "its tags: #{known.join(', ')}"
-            )
-          end
+          raise unknown_tag(profile, key, location) unless tag
 
           [tag, value]
         end
+      end
+
+      def unknown_tag(profile, key, location)
+        known = profile.tags.keys
+        DeclarationError.new(
+          "#{profile.name} has no tag '#{key}'#{Naming.did_you_mean(key.to_s, known)}",
+          location: location, hint: known.empty? ? "#{profile.name} declares no tags" : "its tags: #{known.join(', ')}"
+        )
       end
 
       def define_definition_action(name)
@@ -200,8 +202,8 @@ module Syskit
       end
 
       # A method of the profile module (+Base.arm_control_def+).
-      def define_action(method_name, &block)
-        namespace.define_singleton_method(method_name, &block)
+      def define_action(method_name, &)
+        namespace.define_singleton_method(method_name, &)
       end
     end
   end

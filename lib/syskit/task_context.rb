@@ -36,6 +36,7 @@ module Syskit
     end
 
     def initialize(arguments = {})
+      super()
       @arguments = arguments
       @properties = model.properties_class.new
       @created_ports = NO_PORTS

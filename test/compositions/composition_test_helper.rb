@@ -107,6 +107,40 @@ module Syskit
       end
     RUBY
 
+    # Follows the pose of a GPS (or any pose source), driving two wheels.
+    FOLLOW = <<~RUBY
+      require 'models/devices/rover'
+      using_task_library 'rig'
+      module Rig
+        module Compositions
+          class Follow < Syskit::Composition
+            argument :gain, default: 2.0
+            add Services::Pose, as: 'pose'
+            add OroGen.rig.Follower, as: 'follower'
+            add OroGen.rig.Splitter, as: 'split'
+            add Devices::Wheel, as: 'left'
+            add Devices::Wheel, as: 'right'
+            pose_child.pose_port.connect_to follower_child.pose_port
+            follower_child.command_port.connect_to split_child.in_port
+            split_child.left_port.connect_to left_child.cmd_port
+            split_child.right_port.connect_to right_child.cmd_port
+            export follower_child.command_port, as: 'speed'
+          end
+        end
+      end
+    RUBY
+
+    def follow_app(profile, files = {})
+      load_rig({ 'models/compositions/follow.rb' => FOLLOW }.merge(files),
+               profile: profile, requires: ['models/compositions/follow'])
+    end
+
+    WHEELS = "'left' => left_wheel_dev, 'right' => right_wheel_dev"
+
+    def connection_lines(plan)
+      plan.connections.map { |c| "#{c.from.task}.#{c.from.port} -> #{c.to.task}.#{c.to.port}" }
+    end
+
     # The app with +files+ added (a profile in models/profiles/base.rb is
     # wrapped in the Rig::Profiles module, after the requires).
     def rig_app(files = {}, profile: nil, requires: [])

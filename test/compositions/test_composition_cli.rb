@@ -37,25 +37,28 @@ module Syskit
 
     def app
       @app ||= rig_app({ 'models/compositions/watch.rb' => WATCH }, profile: PROFILE,
-                                                                     requires: ['models/compositions/watch'])
+                                                                    requires: ['models/compositions/watch'])
     end
 
     def test_plan_of_a_definition_in_json
       out, err, status = run_cli('plan', '--app', app, 'Base', 'watch_def', '--format', 'json')
       assert_equal 0, status, err
       doc = JSON.parse(out)
-      assert_equal [{ 'name' => 'watch', 'model' => 'Rig::Compositions::Watch', 'action' => 'Rig::Profiles::Base.watch_def',
-                      'arguments' => {}, 'conf' => ['default'], 'children' => { 'pose' => 'gps', 'follower' => 'follower' },
+      assert_equal [{ 'name' => 'watch', 'model' => 'Rig::Compositions::Watch',
+                      'action' => 'Rig::Profiles::Base.watch_def', 'arguments' => {}, 'conf' => ['default'],
+                      'children' => { 'pose' => 'gps', 'follower' => 'follower' },
                       'exports' => { 'speed' => { 'task' => 'follower', 'port' => 'command' } }, 'parent' => nil }],
                    doc['compositions']
-      assert_equal [{ 'from' => { 'task' => 'gps', 'port' => 'position' }, 'to' => { 'task' => 'follower', 'port' => 'pose' },
+      assert_equal [{ 'from' => { 'task' => 'gps', 'port' => 'position' },
+                      'to' => { 'task' => 'follower', 'port' => 'pose' },
                       'type' => RBS, 'policy' => { 'type' => 'data' } }], doc['connections']
     end
 
     def test_plan_of_the_whole_profile_says_which_definition_to_plan
       _, err, status = run_cli('plan', '--app', app, 'Base')
       assert_equal 1, status
-      assert_match(%r{^models/profiles/base.rb:12: the child 'pose' of Rig::Compositions::Watch \(unselected.pose\)}, err)
+      assert_match(%r{^models/profiles/base.rb:12: the child 'pose' of Rig::Compositions::Watch \(unselected.pose\)},
+                   err)
       assert_match(/warning: the 3 definitions of Rig::Profiles::Base were planned together, with its devices/, err)
       assert_match(/plan one at a time: syskit plan Rig::Profiles::Base watch_def/, err)
     end
@@ -65,15 +68,21 @@ module Syskit
       assert_equal 1, status
       errors = out.lines.grep(/^\S+:\d+: /)
       assert_equal 1, errors.size, out
-      assert_match(%r{\Amodels/profiles/base.rb:12: the child 'pose' of Rig::Compositions::Watch \(unselected.pose\) needs a Rig::Services::Pose},
+      assert_match(%r{\Amodels/profiles/base.rb:12: the child 'pose' of Rig::Compositions::Watch \(unselected.pose\) },
                    errors.first)
+      assert_match(/needs a Rig::Services::Pose/, errors.first)
       assert_match(/^Rig: 1 error\(s\)/, out)
     end
 
     def test_text_and_dot_show_the_compositions
       out, = run_cli('plan', '--app', app, 'Base', 'watch_def')
-      assert_match(/^Compositions \(1\)\n  watch  Rig::Compositions::Watch  \(Rig::Profiles::Base.watch_def, conf default\)\n    pose      gps\n    follower  follower\n    exports   speed -> follower.command\n/,
-                   out)
+      assert_includes out, <<~TEXT
+        Compositions (1)
+          watch  Rig::Compositions::Watch  (Rig::Profiles::Base.watch_def, conf default)
+            pose      gps
+            follower  follower
+            exports   speed -> follower.command
+      TEXT
       dot, = run_cli('plan', '--app', app, 'Base', 'watch_def', '--format', 'dot')
       assert_match(/subgraph "cluster_composition_watch" \{\n    label="watch\\nRig::Compositions::Watch";/, dot)
       assert_match(/^    "follower" \[label=/, dot)

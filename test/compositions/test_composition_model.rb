@@ -255,7 +255,7 @@ module Syskit
       model = new_cmp do
         add OroGen.rig.Follower, as: 'follow'
         event :arrived
-        script { poll {} }
+        script { poll { nil } }
       end
       assert_equal %w[follow], model.child_names
       warnings = app.problems.map(&:message).grep(/not modelled/)

@@ -49,11 +49,12 @@ module Syskit
     end
 
     def test_a_definition_name_must_be_a_method_name
-      root = rig_app({ 'models/compositions/watch.rb' => WATCH }, profile: <<~RUBY, requires: ['models/compositions/watch'])
-        profile 'Base' do
-          define 'Watch It', Compositions::Watch
-        end
-      RUBY
+      root = rig_app({ 'models/compositions/watch.rb' => WATCH },
+                     profile: <<~RUBY, requires: ['models/compositions/watch'])
+                       profile 'Base' do
+                         define 'Watch It', Compositions::Watch
+                       end
+                     RUBY
       error = load_problem(root)
       assert_match(/define expects a definition name, got "Watch It"/, error.message)
       assert_equal 'models/profiles/base.rb:7', error.location.to_s(root)
@@ -133,14 +134,15 @@ module Syskit
     end
 
     def test_use_profile_of_an_unknown_tag
-      root = rig_app({ 'models/compositions/watch.rb' => WATCH }, profile: <<~RUBY, requires: ['models/compositions/watch'])
-        profile 'Generic' do
-          tag 'localization', Services::Pose
-        end
-        profile 'Base' do
-          use_profile Generic, 'localisation' => OroGen.rig.Tracker
-        end
-      RUBY
+      root = rig_app({ 'models/compositions/watch.rb' => WATCH },
+                     profile: <<~RUBY, requires: ['models/compositions/watch'])
+                       profile 'Generic' do
+                         tag 'localization', Services::Pose
+                       end
+                       profile 'Base' do
+                         use_profile Generic, 'localisation' => OroGen.rig.Tracker
+                       end
+                     RUBY
       error = load_problem(root)
       assert_match(/Rig::Profiles::Generic has no tag 'localisation' \(did you mean 'localization'\?\)/, error.message)
       assert_equal 'models/profiles/base.rb:10', error.location.to_s(root)

@@ -19,6 +19,15 @@ module Syskit
       end
     end
 
+    # A composition providing odometry (from a child of its own).
+    def odometry_source
+      Composition.new_submodel do
+        add Rig::Services::Odometry, as: 'src'
+        export src_child.odometry_port
+        provides Rig::Services::Odometry, as: 'odometry'
+      end
+    end
+
     def test_no_specialization_applies_to_a_plain_selection
       assert_same @model, @model.narrow('pose' => OroGen.rig.Tracker.front_pose_srv)
     end
@@ -27,13 +36,8 @@ module Syskit
       spec = @model.specialize @model.pose_child => Rig::Services::Odometry do
         pose_child.odometry_port.connect_to follow_child.pose_port
       end
-      odometry = Composition.new_submodel do
-        add Rig::Services::Odometry, as: 'src'
-        export src_child.odometry_port
-        provides Rig::Services::Odometry, as: 'odometry'
-      end
+      odometry = odometry_source
       narrowed = @model.narrow('pose' => odometry)
-      refute_same @model, narrowed
       assert narrowed < @model
       assert_equal [spec], narrowed.applied_specializations
       assert_equal 'Drive/pose.is_a?(Rig::Services::Odometry)', narrowed.name
@@ -54,11 +58,7 @@ module Syskit
       @model.add(Rig::Services::SpeedSource, as: 'speed')
       odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry) { export pose_child.odometry_port }
       speed = @model.specialize(@model.speed_child => OroGen.rig.Splitter) { export speed_child.left_port }
-      source = Composition.new_submodel do
-        add Rig::Services::Odometry, as: 'src'
-        export src_child.odometry_port
-        provides Rig::Services::Odometry, as: 'odometry'
-      end
+      source = odometry_source
       splitter = OroGen.rig.Splitter
       splitter.provides(Rig::Services::SpeedSource, as: 'left_speed', 'speed_out' => 'left') unless
         splitter.find_service('left_speed')
@@ -72,11 +72,7 @@ module Syskit
       @model.add_specialization_constraint { |a, b| a == b }
       first = @model.specialize(@model.pose_child => Rig::Services::Odometry)
       @model.specialize(@model.follow_child => OroGen.rig.Follower)
-      source = Composition.new_submodel do
-        add Rig::Services::Odometry, as: 'src'
-        export src_child.odometry_port
-        provides Rig::Services::Odometry, as: 'odometry'
-      end
+      source = odometry_source
       error = assert_raises(NetworkError) { @model.narrow('pose' => source) }
       assert_match(/several specializations of Drive apply .* and cannot be combined/, error.message)
       assert_match(/prefer_specializations/, error.hint)
@@ -88,11 +84,7 @@ module Syskit
       @model.add_specialization_constraint { |a, _b| a.specialized_children.key?('pose') }
       @model.specialize(@model.pose_child => Rig::Services::Odometry)
       @model.specialize(@model.follow_child => OroGen.rig.Follower)
-      source = Composition.new_submodel do
-        add Rig::Services::Odometry, as: 'src'
-        export src_child.odometry_port
-        provides Rig::Services::Odometry, as: 'odometry'
-      end
+      source = odometry_source
       error = assert_raises(DeclarationError) { @model.narrow('pose' => source) }
       assert_match(/not symmetric/, error.message)
     end
@@ -112,11 +104,7 @@ module Syskit
     def test_submodels_inherit_specializations
       spec = @model.specialize(@model.pose_child => Rig::Services::Odometry) { export pose_child.odometry_port }
       submodel = @model.new_submodel(name: 'SubDrive')
-      source = Composition.new_submodel do
-        add Rig::Services::Odometry, as: 'src'
-        export src_child.odometry_port
-        provides Rig::Services::Odometry, as: 'odometry'
-      end
+      source = odometry_source
       narrowed = submodel.narrow('pose' => source)
       assert narrowed < submodel
       assert_equal spec.specialized_children, narrowed.applied_specializations.first.specialized_children
@@ -124,11 +112,7 @@ module Syskit
 
     def test_narrow_model_of_requirements
       @model.specialize(@model.pose_child => Rig::Services::Odometry)
-      source = Composition.new_submodel do
-        add Rig::Services::Odometry, as: 'src'
-        export src_child.odometry_port
-        provides Rig::Services::Odometry, as: 'odometry'
-      end
+      source = odometry_source
       assert @model.use('pose' => source).narrow_model < @model
       assert_same @model, @model.use('pose' => OroGen.rig.Tracker.front_pose_srv).narrow_model
     end

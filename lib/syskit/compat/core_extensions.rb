@@ -38,13 +38,7 @@ module Syskit
         attr_writer name
       end
     end
-  end
-end
 
-Module.include(Syskit::Compat::CoreExtensions)
-
-module Syskit
-  module Compat
     # utilrb's (and facets') string case conversions, which Rock model
     # code calls to make names (+"open_loop_#{name.snakecase}"+).
     module StringExtensions
@@ -59,4 +53,5 @@ module Syskit
   end
 end
 
+Module.include(Syskit::Compat::CoreExtensions)
 String.include(Syskit::Compat::StringExtensions)

@@ -38,7 +38,9 @@ module Syskit
       end
 
       def to_s
-        "from(#{object.inspect})#{calls.map { |name, args| ".#{name}#{"(#{args.join(', ')})" unless args.empty?}" }.join}"
+        "from(#{object.inspect})#{calls.map do |name, args|
+          ".#{name}#{"(#{args.join(', ')})" unless args.empty?}"
+        end.join}"
       end
       alias inspect to_s
 

@@ -57,7 +57,7 @@ module Syskit
       def definitions
         catalog.entries(:profile).flat_map do |entry|
           entry.object.definitions.values.select { |d| d.requirements.component_model.equal?(model) }
-                                          .map { |d| [entry, d] }
+               .map { |d| [entry, d] }
         end
       end
 

@@ -14,7 +14,8 @@ module Syskit
       # Acronyms most robots need; the app's config lists them, to edit.
       ACRONYMS = %w[GPS CAN IMU].freeze
       # Directories that start empty, kept by git through a .gitkeep.
-      EMPTY_DIRS = %w[models/devices models/services models/compositions models/orogen models/typekits config/orogen].freeze
+      EMPTY_DIRS = %w[models/devices models/services models/compositions models/orogen models/typekits
+                      config/orogen].freeze
 
       attr_reader :root, :app_name
 

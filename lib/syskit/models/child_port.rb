@@ -1,26 +1,32 @@
 # frozen_string_literal: true
 
 module Syskit
+  # Models of composition children's ports (see CompositionChild).
   module Models
     # A port of a composition child (+arm_child.joints_cmd_port+): what
     # +connect_to+ and +export+ take. It knows the model that declares it
-    # (the child's task model, or one of its service models) and its name
-    # there, so that it maps onto whatever component fills the child.
+    # (+owner+: the child's task model, or one of its service models), so
+    # that it maps onto whatever component fills the child.
     class ChildPort
-      attr_reader :child, :name, :direction, :type, :owner, :owner_port
+      attr_reader :child, :name, :direction, :type, :owner
 
       # Connection policy keys Syskit accepts (Orocos's), and the kinds of
       # connections.
       POLICY_KEYS = %i[type size init pull lock lock_policy transport data_size name_id].freeze
       POLICY_TYPES = %i[data buffer circular_buffer].freeze
 
-      def initialize(child, name, direction, type, owner, owner_port)
+      # +port+: the port of +owner+ (a Port).
+      def initialize(child, port, owner)
         @child = child
-        @name = name
-        @direction = direction
-        @type = type
+        @name = port.name
+        @direction = port.direction
+        @type = port.type
         @owner = owner
-        @owner_port = owner_port
+      end
+
+      # The port's name in the model that declares it.
+      def owner_port
+        name
       end
 
       def input?
@@ -101,7 +107,7 @@ module Syskit
         unless unknown.empty?
           raise DeclarationError.new("unknown connection policy option #{unknown.map { |k| "#{k}:" }.join(', ')}",
                                      location: location,
-                                     hint: "policies are written type: :buffer, size: 10 (or type: :data)")
+                                     hint: 'policies are written type: :buffer, size: 10 (or type: :data)')
         end
         type = options[:type]
         if type && !POLICY_TYPES.include?(type.to_sym)
@@ -117,17 +123,9 @@ module Syskit
       # the other side is an error naming them.
       def self.autoconnect(outputs, other, policy, location)
         inputs = other.is_a?(ChildPort) ? [other] : other.each_input_port.to_a
-        made = 0
-        outputs.each do |out|
-          candidates = inputs.select { |i| i.type == out.type }
-          next if candidates.empty?
-          if candidates.size > 1
-            candidates = candidates.select { |i| i.name == out.name }
-            raise ambiguous_autoconnect(out, other, inputs, location) unless candidates.size == 1
-          end
-
-          out.composition_model.add_connection(out, candidates.first, policy(policy, location), location)
-          made += 1
+        made = outputs.count do |out|
+          input = autoconnect_input(out, other, inputs, location)
+          out.composition_model.add_connection(out, input, policy(policy, location), location) if input
         end
         return unless made.zero?
 
@@ -135,6 +133,18 @@ module Syskit
           "#{outputs.first&.child || 'the child'} has no output port of the type of an input of #{other}",
           location: location, hint: 'connect ports explicitly: a_child.x_port.connect_to b_child.y_port'
         )
+      end
+
+      # The input of +inputs+ +out+ connects to: the only one of its type,
+      # else the one of its type and name; nil when none has its type.
+      def self.autoconnect_input(out, other, inputs, location)
+        candidates = inputs.select { |i| i.type == out.type }
+        return candidates.first if candidates.size < 2
+
+        named = candidates.select { |i| i.name == out.name }
+        raise ambiguous_autoconnect(out, other, inputs, location) unless named.size == 1
+
+        named.first
       end
 
       def self.ambiguous_autoconnect(out, other, inputs, location)

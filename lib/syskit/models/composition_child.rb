@@ -88,7 +88,7 @@ module Syskit
           found = {}
           models.each do |model|
             model.ports.each_value do |port|
-              found[port.name] ||= ChildPort.new(self, port.name, port.direction, port.type, model, port.name)
+              found[port.name] ||= ChildPort.new(self, port, model)
             end
             break if model.is_a?(Class)
           end
@@ -180,7 +180,7 @@ module Syskit
 
         def find_port(name)
           port = service_model.find_port(name)
-          ChildPort.new(child, port.name, port.direction, port.type, service_model, port.name) if port
+          ChildPort.new(child, port, service_model) if port
         end
 
         def to_s

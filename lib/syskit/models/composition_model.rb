@@ -5,6 +5,7 @@ require 'syskit/models/composition_ports'
 require 'syskit/models/composition_specializations'
 
 module Syskit
+  # The class-level side of components (see Composition).
   module Models
     # The class-level side of compositions (+class ArmControl <
     # Syskit::Composition+): children by role, exported ports, connections
@@ -270,24 +271,23 @@ module Syskit
     # the existing ones replaces it; an unrelated service is added; two
     # unrelated component models are an error.
     def self.merge_models(existing, added, location, child)
-      result = existing.dup
-      added.each do |model|
+      added.each_with_object(existing.dup) do |model, result|
         next if result.any? { |m| m.fullfills?(model) }
 
-        replaced = result.index { |m| model.fullfills?(m) }
-        if replaced
-          result[replaced] = model
-          result.reject!.with_index { |m, i| i != replaced && model.fullfills?(m) }
-        elsif model.is_a?(Class) && (other = result.find { |m| m.is_a?(Class) })
-          raise DeclarationError.new(
-            "#{child} cannot be both a #{other} and a #{model}",
-            location: location, hint: "overload it with a submodel of #{other}, or with a data service"
-          )
-        else
-          result << model
-        end
+        refined = result.select { |m| model.fullfills?(m) }
+        next result[result.index(refined.first)] = model if refined.size == 1
+        next result.replace(result - refined) << model unless refined.empty?
+
+        other = result.find { |m| m.is_a?(Class) } if model.is_a?(Class)
+        raise unrelated_models(child, other, model, location) if other
+
+        result << model
       end
-      result.uniq
+    end
+
+    def self.unrelated_models(child, other, model, location)
+      DeclarationError.new("#{child} cannot be both a #{other} and a #{model}",
+                           location: location, hint: "overload it with a submodel of #{other}, or with a data service")
     end
   end
 end

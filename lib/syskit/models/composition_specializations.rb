@@ -68,7 +68,7 @@ module Syskit
 
         def to_s
           "#{root.short_name}/" + specialized_children.map do |name, models|
-            "#{name}.is_a?(#{models.map(&:to_s).join(',')})"
+            "#{name}.is_a?(#{models.join(',')})"
           end.join(',')
         end
         alias inspect to_s
@@ -181,14 +181,17 @@ module Syskit
       # Groups of specializations that apply together: one per
       # specialization, with every later one compatible with the group.
       def specialization_candidates(matching)
-        return [] if matching.empty?
+        groups = matching.map { |spec| compatible_group(spec, matching) }.uniq
+        groups.reject { |g| groups.any? { |other| other != g && (g - other).empty? } }
+      end
 
-        groups = matching.map do |spec|
-          matching.each_with_object([spec]) do |other, group|
-            group << other if !group.include?(other) && group.all? { |s| compatible?(s, other) }
-          end.sort_by { |s| matching.index(s) }
+      # +spec+ and each of +matching+ compatible with all those before, in
+      # declaration order.
+      def compatible_group(spec, matching)
+        group = matching.each_with_object([spec]) do |other, found|
+          found << other if !found.include?(other) && found.all? { |s| compatible?(s, other) }
         end
-        groups.uniq.reject { |g| groups.any? { |other| other != g && (g - other).empty? } }
+        group.sort_by { |s| matching.index(s) }
       end
 
       def compatible?(one, other)
@@ -222,7 +225,7 @@ module Syskit
       end
 
       def ambiguous_specialization(candidates, selection, location)
-        choices = candidates.map { |group| group.map(&:to_s).join(' + ') }
+        choices = candidates.map { |group| group.join(' + ') }
         selected = selection.map { |name, sel| "#{name} => #{sel}" }.join(', ')
         NetworkError.new(
           "several specializations of #{self} apply to #{selected} and cannot be combined: #{choices.join('; ')}",
@@ -247,7 +250,7 @@ module Syskit
         @specialized_children = children.freeze
         @declared_at = root.declared_at
         @given_name = "#{root.short_name}/" + children.map do |name, models|
-          "#{name}.is_a?(#{models.map(&:to_s).join(',')})"
+          "#{name}.is_a?(#{models.join(',')})"
         end.join(',')
       end
 

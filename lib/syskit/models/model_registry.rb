@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 module Syskit
+  # What the app's model files define (see Models.defined_models).
   module Models
     # Models in the order they were defined, so that tests can remove the
     # ones they made (see Test::ModelHelpers).
@@ -22,7 +23,7 @@ module Syskit
         parent, _, base = name.rpartition('::')
         namespace = Object.const_get(parent) if Object.const_defined?(parent)
         namespace.send(:remove_const, base) if namespace&.const_defined?(base, false) &&
-                                                namespace.const_get(base, false).equal?(model)
+                                               namespace.const_get(base, false).equal?(model)
       end
     end
   end

@@ -27,11 +27,4 @@ module Syskit
       end
     end
   end
-
-  class Component
-    # Syskit's name for Models::Placeholder.for.
-    def self.create_proxy_task_model(models, **)
-      Models::Placeholder.for(models)
-    end
-  end
 end

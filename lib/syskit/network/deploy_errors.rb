@@ -18,7 +18,9 @@ module Syskit
       # What a task is, in messages.
       def what(task, requirement)
         device = requirement.device
-        device ? "the driver of #{device} (#{task.model.name})" : "#{task.plan_path || task.plan_name} (#{task.model.name})"
+        return "the driver of #{device} (#{task.model.name})" if device
+
+        "#{task.plan_path || task.plan_name} (#{task.model.name})"
       end
 
       # How to prefer +name+ for +task+: on its device, or in the

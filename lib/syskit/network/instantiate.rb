@@ -50,7 +50,7 @@ module Syskit
         @root = requirement
         return if @context.roots.any? { |t| t.requirement.equal?(requirement) }
 
-        context = @base.push(requirement.selections)
+        context = @base.with(requirement.selections)
         task = instantiate(requirement, context, root_name(requirement), nil)
         @context.roots << task
       ensure
@@ -121,7 +121,8 @@ module Syskit
           return existing
         end
 
-        requirement = requirements.device ? requirements : requirements.merge_selection(InstanceRequirements.from(device))
+        requirement = requirements
+        requirement = requirements.merge_selection(InstanceRequirements.from(device)) unless requirements.device
         @drivers.instantiate_device(requirement, expected_model: model)
       end
 
@@ -174,7 +175,7 @@ module Syskit
         composition.requirement = requirements
         composition.parent = parent
         @building.push(composition)
-        instantiate_children(composition, selections, requirements, context, path)
+        instantiate_children(composition, selections, requirements, context)
         @context.compositions << composition
         composition
       ensure
@@ -198,14 +199,14 @@ module Syskit
 
       # Children referring to a sibling (+use(srv => first_child)+) come
       # after it.
-      def instantiate_children(composition, selections, requirements, context, path)
+      def instantiate_children(composition, selections, requirements, context)
         pending = selections.keys
         until pending.empty?
           ready = pending.reject { |name| waits_for_sibling?(composition, selections[name]) }
           raise sibling_cycle(composition, pending) if ready.empty?
 
           ready.each do |name|
-            instantiate_child(composition, name, selections[name], requirements, context, path)
+            instantiate_child(composition, name, selections[name], requirements, context)
           end
           pending -= ready
         end
@@ -225,7 +226,7 @@ module Syskit
         found
       end
 
-      def instantiate_child(composition, name, selection, requirements, context, path)
+      def instantiate_child(composition, name, selection, requirements, context)
         child = composition.model.find_child(name)
         return composition.add_child(name, referenced_task(selection.reference)) if selection.reference
 
@@ -233,7 +234,7 @@ module Syskit
         return if child.optional? && child_requirements.abstract? && !@stub_abstract
 
         child_context = child_context(context, selection, requirements, name, child_requirements)
-        task = instantiate(child_requirements, child_context, "#{path}.#{name}", composition)
+        task = instantiate(child_requirements, child_context, "#{composition.name}.#{name}", composition)
         composition.add_child(name, task)
         composition.child_selections[name] = child_requirements
       end
@@ -244,9 +245,9 @@ module Syskit
       def child_context(context, selection, requirements, name, child_requirements)
         grandchildren = requirements.selections.grandchild_selections(name)
         context = context.mask(selection.used_keys)
-        context = context.push(DependencyInjection.new(grandchildren, [], requirements.declared_at)) unless
+        context = context.with(DependencyInjection.new(grandchildren, [], requirements.declared_at)) unless
           grandchildren.empty?
-        context.push(resolve_references(child_requirements.selections))
+        context.with(resolve_references(child_requirements.selections))
       end
 
       # Selections naming a child of an enclosing composition select its task.
@@ -287,7 +288,7 @@ module Syskit
         robot = (@stub_robot ||= Robot::Definition.new(nil))
         driver = Test::StubModels.device_driver(model)
         device = robot.add_device(Robot::Device, model, path.tr('.', '_'), using: driver, options: {},
-                                                                               location: requirements.declared_at)
+                                                                           location: requirements.declared_at)
         device.driver_model = driver
         device_task(requirements, device)
       end

@@ -9,7 +9,7 @@ module Syskit
       # Nothing concrete is selected for what +requirements+ ask at +path+
       # (a child of +parent+, or a root); +model+: an abstract composition.
       def abstract_child(requirements, path, parent, location, model = nil)
-        what = model || requirements.models.map(&:to_s).join(', ')
+        what = model || requirements.models.join(', ')
         tag = requirements.name if requirements.name&.end_with?('_tag')
         role = path.split('.').last
         where = parent ? "the child '#{role}' of #{parent.model} (#{path})" : path
@@ -29,7 +29,7 @@ module Syskit
           "use a concrete submodel of #{model}, or select children that one of its specializations applies to"
         elsif parent
           "select one: #{parent.model}.use('#{role}' => Model) (a task or composition model providing " \
-            "#{requirements.models.map(&:to_s).join(' and ')}, a device, or a definition)"
+            "#{requirements.models.join(' and ')}, a device, or a definition)"
         else
           "plan a concrete model, or select one with use(#{requirements.models.first} => Model) in the profile"
         end

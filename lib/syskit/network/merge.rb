@@ -18,16 +18,13 @@ module Syskit
       end
 
       def run
-        candidates = @context.tasks.reject { |t| t.requirement.device }
-        groups = candidates.group_by { |t| Instantiate.merge_key(t.model, t.requirement, t.arguments) }
-                           .values.select { |g| g.size > 1 }
+        groups = equal_groups(@context.tasks.reject { |t| t.requirement.device })
         return if groups.empty?
 
         replaced = {}.compare_by_identity
         loop do
           inputs = input_sources(replaced)
-          merged = groups.sum { |group| merge_group(group, inputs, replaced) }
-          break if merged.zero?
+          break if groups.sum { |group| merge_group(group, inputs, replaced) }.zero?
 
           groups = groups.map { |g| g.reject { |t| replaced.key?(t) } }.select { |g| g.size > 1 }
         end
@@ -35,6 +32,12 @@ module Syskit
       end
 
       private
+
+      # Tasks with the same merge key, by groups of two or more.
+      def equal_groups(tasks)
+        tasks.group_by { |t| Instantiate.merge_key(t.model, t.requirement, t.arguments) }
+             .values.select { |g| g.size > 1 }
+      end
 
       # For each task, its input ports' sources ([task, port] pairs), tasks
       # already merged standing for the ones they replaced.

@@ -19,9 +19,9 @@ module Syskit
       def context_from(value)
         case value
         when DependencyInjection::Context then value
-        when DependencyInjection then DependencyInjection::Context::EMPTY.push(value)
+        when DependencyInjection then DependencyInjection::Context::EMPTY.with(value)
         when nil then DependencyInjection::Context::EMPTY
-        when Hash then DependencyInjection::Context::EMPTY.push(DependencyInjection::EMPTY.add([value], nil))
+        when Hash then DependencyInjection::Context::EMPTY.with(DependencyInjection::EMPTY.add([value], nil))
         else raise ArgumentError, "expected selections, got #{value.inspect}"
         end
       end
@@ -57,16 +57,23 @@ module Syskit
         return if selected.abstract? && selected.models.empty?
 
         check_single_service(child, selected, value, location)
-        missing = child.models.reject { |m| selected.fullfills?(m) }
+        missing = missing_models(child, selected)
         return if missing.empty?
-        return if selected.device && !selected.device.driver_resolved? &&
-                  missing.all? { |m| m.is_a?(Class) } # checked once the driver is known
 
         raise NetworkError.new(
-          "#{value} is selected for #{child}, but it does not fullfill #{missing.map(&:to_s).join(', ')}",
+          "#{value} is selected for #{child}, but it does not fullfill #{missing.join(', ')}",
           location: location,
-          hint: "select a model that is or provides #{missing.map(&:to_s).join(' and ')} for '#{child.child_name}'"
+          hint: "select a model that is or provides #{missing.join(' and ')} for '#{child.child_name}'"
         )
+      end
+
+      # What +child+ requires and +selected+ does not fullfill. A device
+      # whose driver is not known yet is checked against task models once
+      # it is (see Drivers#instantiate_device).
+      def missing_models(child, selected)
+        missing = child.models.reject { |m| selected.fullfills?(m) }
+        pending = selected.device && !selected.device.driver_resolved?
+        pending ? missing.grep_v(Class) : missing
       end
 
       # A component that provides a service the child requires more than

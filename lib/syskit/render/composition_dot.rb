@@ -26,7 +26,8 @@ module Syskit
 
       def hierarchy(model, links: {})
         out = Dot.quote(model.short_name, +'digraph ') << " {\n  rankdir=TB;\n"
-        out << "  node [shape=box, style=\"rounded,filled\", fillcolor=\"#ffffff\", fontname=\"Helvetica\", fontsize=10];\n"
+        out << '  node [shape=box, style="rounded,filled", fillcolor="#ffffff", fontname="Helvetica", ' \
+               "fontsize=10];\n"
         out << "  edge [fontname=\"Helvetica\", fontsize=9, color=\"#6b8e4e\"];\n"
         tree(model, 'root', links, out, [])
         out << "}\n"
@@ -70,7 +71,13 @@ module Syskit
       def export_node(export, out)
         Dot.quote("export_#{export.name}", out << '  ')
         Dot.quote(export.name, out << ' [shape=cds, style=filled, fillcolor="#f4f8ef", label=') << "];\n"
-        from, to = export.port.input? ? ["export_#{export.name}", endpoint(export.port, 'i')] : [endpoint(export.port, 'o'), "export_#{export.name}"]
+        from, to = if export.port.input?
+                     ["export_#{export.name}",
+                      endpoint(export.port,
+                               'i')]
+                   else
+                     [endpoint(export.port, 'o'), "export_#{export.name}"]
+                   end
         out << '  ' << quoted_endpoint(from) << ' -> ' << quoted_endpoint(to) << " [style=dashed];\n"
       end
 
@@ -97,17 +104,20 @@ module Syskit
         Dot.quote(url, out << ', URL=') if url
         out << ", fillcolor=\"#f4f8ef\"];\n"
         model.each_child do |name, child|
-          child_id = "#{id}.#{name}"
-          component = child.requirements.component_model
-          if component.is_a?(Class) && component <= Composition && !seen.include?(component)
-            tree(component, child_id, links, out, seen + [model])
-          else
-            Dot.quote(child_id, out << '  ') << ' [label=' << Dot.quote(models_label(child), +'')
-            link(child, links, out) << "];\n"
-          end
-          Dot.quote(id, out << '  ') << ' -> ' << Dot.quote(child_id, +'') << ' [label=' << Dot.quote(name, +'') << "];\n"
+          tree_child(child, "#{id}.#{name}", links, out, seen + [model])
+          Dot.quote(id, out << '  ') << ' -> ' << Dot.quote("#{id}.#{name}", +'')
+          Dot.quote(name, out << ' [label=') << "];\n"
         end
         out
+      end
+
+      def tree_child(child, id, links, out, seen)
+        component = child.requirements.component_model
+        nested = component.is_a?(Class) && component <= Composition && !seen.include?(component)
+        return tree(component, id, links, out, seen) if nested
+
+        Dot.quote(id, out << '  ') << ' [label=' << Dot.quote(models_label(child), +'')
+        link(child, links, out) << "];\n"
       end
     end
   end

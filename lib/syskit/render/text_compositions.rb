@@ -33,20 +33,31 @@ module Syskit
         end
 
         def composition_text(composition, indent, out)
-          out << indent << composition.name << '  ' << composition.model << '  ('
+          header(composition, out << indent)
+          lines = rows(composition)
+          width = lines.map { |title, _| title.size }.max.to_i + 2
+          lines.each { |title, text| Text.pad(width - title.size, out << indent << '  ' << title) << text << "\n" }
+          out
+        end
+
+        # "name  Model  (action, conf default)"
+        def header(composition, out)
+          out << composition.name << '  ' << composition.model << '  ('
           out << composition.action << ', ' if composition.action
           Text.list(composition.conf, out << 'conf ') << ")\n"
+        end
+
+        # [title, text] lines: its arguments, a line per child, its exports.
+        def rows(composition)
           rows = []
           unless composition.arguments.empty?
-            rows << ['arguments', composition.arguments.map { |k, v| Text.plain(v, +"#{k}: ") }.join(', ')]
+            rows << ['arguments', composition.arguments.map { |k, v| Text.plain(v, "#{k}: ") }.join(', ')]
           end
           composition.children.each { |role, name| rows << [role, name] }
           composition.exports.each_with_index do |(port, endpoint), i|
             rows << [i.zero? ? 'exports' : '', "#{port} -> #{endpoint.task}.#{endpoint.port}"]
           end
-          width = rows.map { |title, _| title.size }.max.to_i + 2
-          rows.each { |title, value| Text.pad(width - title.size, out << indent << '  ' << title) << value << "\n" }
-          out
+          rows
         end
       end
     end

@@ -74,10 +74,10 @@ module Syskit
       # still abstract is stubbed (a task providing the services, a device
       # and its driver), every task stub-deployed and configured. Returns
       # the root task (the composition), also available as +task+.
-      def syskit_stub_and_deploy(model = syskit_described_model, &block)
+      def syskit_stub_and_deploy(model = syskit_described_model, &)
         models = model.is_a?(Array) ? model : [model]
         requirements = models.map { |m| m.respond_to?(:to_instance_requirements) ? m.to_instance_requirements : m }
-        result = syskit_stub_generate(requirements, &block)
+        result = syskit_stub_generate(requirements, &)
         roots = result.context.roots
         @task = model.is_a?(Array) ? roots : roots.first
       end

@@ -1,0 +1,201 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Network
+    class Plan
+      # How a Plan is made of a generated network: its entries, each frozen
+      # as it is built (so the plan is a frozen value without walking it
+      # again), sorted by name where order is not meaningful.
+      module Builder
+        module_function
+
+        NO_ATTRIBUTES = {}.freeze
+        NO_DEPENDENCIES = [].freeze
+        NO_OPERATIONS = [].freeze
+
+        def build(context)
+          # The plan entries of a model's static ports are shared by its
+          # tasks; a file's path relative to the app is computed once.
+          static_ports = {}
+          paths = {}
+          Plan.new(
+            profile: context.profile&.name, robot: context.robot_config&.name,
+            tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports) },
+            devices: device_entries(context, paths),
+            connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
+            order: context.order.map { |s| Step.new(s.step, s.task.name).freeze },
+            buses: bus_entries(context, paths),
+            compositions: context.compositions.map { |c| composition_entry(c) }.sort_by!(&:name)
+          )
+        end
+
+        # A composition, its exports followed down to the tasks that have
+        # the ports; the action it was made for when it is a root.
+        def composition_entry(composition)
+          requirement = composition.requirement
+          Composition.new(
+            composition.name, composition.model.short_name,
+            (requirement.to_s if requirement.name && !composition.parent),
+            freeze_plain(composition.arguments.sort.to_h { |k, v| [k.to_s, plain_argument(v)] }),
+            composition.conf, composition.children_by_role.transform_values(&:name).freeze,
+            export_entries(composition), composition.parent&.name
+          ).freeze
+        end
+
+        def export_entries(composition)
+          composition.model.exports.keys.sort.each_with_object({}) do |name, all|
+            task, port = composition.resolve_export(name)
+            all[name] = Endpoint.new(task.name, port).freeze if task
+          end.freeze
+        end
+
+        # The CAN buses of the plan that have a wire of their own (not
+        # attached to another CAN bus), by name.
+        def bus_entries(context, paths)
+          context.tasks_by_name.filter_map do |task|
+            bus = context.device_of(task)
+            next unless bus&.com_bus? && Robot::CanTraffic.can_bus?(bus) && bus.carrier.equal?(bus)
+
+            frames = bus.frames_on_wire.sort_by.with_index { |f, i| [f.arbitration_key, f.device.to_s, i] }
+            utilization = bus.bitrate && CAN::Timing.utilization(bus.bitrate, frames)
+            Bus.new(bus.name, bus.bitrate, utilization, frames.map { |f| frame_entry(f, paths) }.freeze).freeze
+          end
+        end
+
+        # The plan entry of a declared CAN::Timing::Frame.
+        def frame_entry(frame, paths)
+          Frame.new(frame.id, frame.extended, frame.bytes, frame.period, frame.deadline, frame.jitter,
+                    frame.device, declared_at(frame.location, paths)).freeze
+        end
+
+        # Entries are frozen as they are built, so the plan is a frozen value
+        # without walking it again.
+        def task_entry(task, static_ports)
+          children = task.children
+          deployment = task.deployed_task.deployment
+          Task.new(
+            task.name, task.model.name, deployment.name,                        # name, model, deployment
+            device_names(task), task.conf,                                      # devices, conf (frozen)
+            freeze_plain(task.properties.to_plain),                             # properties
+            task_ports(task, static_ports),                                     # ports
+            children.empty? ? NO_DEPENDENCIES : children.map(&:name).sort!.freeze, # depends_on
+            deployment.unmanaged?,                                              # unmanaged
+            operation_entries(task)                                             # operations
+          ).freeze
+        end
+
+        def operation_entries(task)
+          calls = task.operation_calls
+          return NO_OPERATIONS if calls.empty?
+
+          declared = task.model.spec&.all_operations || {}
+          calls.map do |c|
+            names = declared[c.name]&.arguments&.map { |(name, _)| name.to_s }.freeze || NO_OPERATIONS
+            Operation.new(c.name, freeze_plain(c.arguments.map { |a| plain_argument(a) }), names).freeze
+          end.freeze
+        end
+
+        # An operation's argument as plain data (typed values through their type).
+        def plain_argument(value)
+          case value
+          when Types::StructValue then value.class.type.to_plain(value)
+          when Array then value.map { |v| plain_argument(v) }
+          when Hash then value.to_h { |k, v| [k.to_s, plain_argument(v)] }
+          when Symbol, Robot::Device, Module then value.to_s
+          else value
+          end
+        end
+
+        # The task's devices, each followed by its slaves.
+        def device_names(task)
+          devices = task.devices
+          return devices.map(&:name).freeze if devices.all? { |d| d.slaves.empty? }
+
+          devices.flat_map { |d| [d.name, *d.each_slave.map(&:full_name)] }.freeze
+        end
+
+        # A device entry per task, and one per slave of its device, by name.
+        def device_entries(context, paths)
+          entries = []
+          context.tasks.each do |task|
+            device = context.device_of(task)
+            next unless device
+
+            entries << device_entry(device, task, paths)
+            device.each_slave { |slave| entries << device_entry(slave, task, paths) }
+          end
+          entries.sort_by!(&:name)
+        end
+
+        # The model's static ports, then those the task's configure created.
+        def task_ports(task, static_ports)
+          ports = static_ports[task.model] ||= task.model.ports.each_value.map do |p|
+            port_entry(p)
+          end.sort_by!(&:name).freeze
+          return ports if task.created_ports.empty?
+
+          (ports + task.created_ports.each_value.map { |p| port_entry(p) }).sort_by!(&:name).freeze
+        end
+
+        def device_entry(device, task, paths)
+          attributes = device.dsl_attributes
+          attached = device.attached?
+          Device.new(
+            device.full_name, device.model.name, task.name, device.bus&.name,   # name, model, task, bus
+            attached ? device.bus_to_client? : nil,                             # bus_to_client
+            attached ? device.client_to_bus? : nil,                             # client_to_bus
+            attributes.empty? ? NO_ATTRIBUTES : plain_attributes(attributes),   # attributes
+            device.period, device.burst, device.sample_size,                    # period, burst, sample_size
+            declared_at(device.declared_at, paths),                             # declared_at
+            device.master_device&.name,                                         # master
+            device.com_bus?                                                     # com_bus
+          ).freeze
+        end
+
+        # "path:line", the path relative to the app (computed once per file).
+        def declared_at(location, paths)
+          return unless location
+
+          "#{paths[location.path] ||= location.relative_path}:#{location.lineno}"
+        end
+
+        DIRECTIONS = { input: 'input', output: 'output' }.freeze
+
+        def port_entry(port)
+          Port.new(port.name, DIRECTIONS.fetch(port.direction), port.type.name, port.dynamic?).freeze
+        end
+
+        def connection_entry(conn)
+          Connection.new(
+            Endpoint.new(conn.from_task.name, conn.from_port.name).freeze, # from
+            Endpoint.new(conn.to_task.name, conn.to_port.name).freeze,     # to
+            conn.from_port.type.name, conn.policy                          # type, policy (frozen)
+          ).freeze
+        end
+
+        # DSL attributes by name, sorted.
+        def plain_attributes(attributes)
+          plain = {}
+          attributes.keys.sort!.each { |k| plain[k.name] = attributes[k] }
+          freeze_plain(plain)
+        end
+
+        # Freezes plain data (hashes, arrays, strings) all the way down.
+        def freeze_plain(value)
+          if value.is_a?(Hash)
+            value.each_value { |v| freeze_plain(v) }
+          elsif value.is_a?(Array)
+            value.each { |v| freeze_plain(v) }
+          end
+          value.freeze
+        end
+
+        # One string per connection, compared as the four names in turn ("\0"
+        # sorts before any character of a name).
+        def connection_key(conn)
+          "#{conn.from.task}\0#{conn.from.port}\0#{conn.to.task}\0#{conn.to.port}"
+        end
+      end
+    end
+  end
+end

@@ -66,7 +66,7 @@ module Syskit
       Open3.capture3(RbConfig.ruby, '-I', LIB, '-S', 'rake', 'test', chdir: app)
     end
 
-    NEW_APP = <<~TEXT
+    NEW_APP = <<~TEXT.freeze
       create Gemfile
       create README.md
       create Rakefile

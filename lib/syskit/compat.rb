@@ -6,6 +6,7 @@ require 'syskit/compat/roby'
 require 'syskit/compat/core_extensions'
 require 'syskit/compat/task_statements'
 require 'syskit/compat/conf'
+require 'syskit/compat/gazebo'
 
 module Syskit
   # Compatibility with real Rock files, in one place: the names Rock code
@@ -15,7 +16,7 @@ module Syskit
   # - recorded (affects the plan): Robot.requires blocks, Syskit.conf's
   #   deployment statements, Roby.app.auto_load_all_task_libraries;
   # - accepted, with one located "not modelled by this gem" warning each:
-  #   ruby task contexts, Roby tasks, action interfaces and
+  #   Roby tasks, action interfaces and
   #   command libraries (the classes below), runtime-only task statements
   #   (TaskStatements::RUNTIME_STATEMENTS), profile statements about compositions
   #   (Profile::NOT_MODELLED), Roby.app's runtime settings;
@@ -166,7 +167,6 @@ module Syskit
     Syskit.const_set(:NetworkGeneration, Module.new)
     Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
-    not_modelled_class(Syskit, :RubyTaskContext, 'ruby task context')
     not_modelled_class(Roby, :Task, 'Roby task')
     # Roby's task library (Roby::Tasks::Simple, ...).
     Roby.const_set(:Tasks, Module.new)

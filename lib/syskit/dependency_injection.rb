@@ -44,8 +44,14 @@ module Syskit
       explicit = self.explicit.dup
       defaults = self.defaults.dup
       mappings.each do |mapping|
+        next if not_modelled?(mapping, location)
+
         if mapping.is_a?(Hash)
-          mapping.each { |key, value| explicit[normalize_key(key, location)] = check_value(value, key, location) }
+          mapping.each do |key, value|
+            next if not_modelled?(key, location) || not_modelled?(value, location)
+
+            explicit[normalize_key(key, location)] = check_value(value, key, location)
+          end
         else
           defaults << check_value(mapping, nil, location)
         end
@@ -69,6 +75,15 @@ module Syskit
     alias inspect to_s
 
     private
+
+    # A value made by a statement this gem does not model (the device of
+    # use_gazebo_model): the selection is left out, with a warning.
+    def not_modelled?(value, location)
+      return false unless Compat::Ignored === value # rubocop:disable Style/CaseEquality
+
+      Syskit.app&.not_modelled('a selection of something not modelled', location)
+      true
+    end
 
     def key_name(key)
       key.is_a?(String) ? "'#{key}'" : key.to_s

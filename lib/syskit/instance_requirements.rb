@@ -35,6 +35,8 @@ module Syskit
     # Whether +value+ can stand for a component in a network (what +use+
     # and +add+ accept).
     def self.selectable?(value)
+      # What a not-modelled statement returned answers any call: asked first.
+      return false if Compat::Ignored === value # rubocop:disable Style/CaseEquality
       return value.all? { |v| selectable?(v) } if value.is_a?(Array) && !value.empty?
 
       (value.is_a?(Class) && value < AbstractComponent) || selectable_kinds.any? { |kind| value.is_a?(kind) }

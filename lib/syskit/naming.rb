@@ -54,7 +54,8 @@ module Syskit
     # a task library, the constant name otherwise.
     def dsl_reference(model)
       name = model.name.to_s
-      return name unless model.is_a?(Class) && model < Syskit::TaskContext && name.include?('::')
+      from_library = model.is_a?(Class) && model < Syskit::TaskContext && model.spec&.library
+      return name unless from_library
 
       "OroGen.#{name.gsub('::', '.')}"
     end

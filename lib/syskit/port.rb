@@ -50,6 +50,11 @@ module Syskit
       @dynamic
     end
 
+    # Its type's name, as oroGen's ports say it (+port.orocos_type_name+).
+    def orocos_type_name
+      type.name
+    end
+
     def to_s
       "#{direction} port '#{name}' (#{type.name})"
     end

@@ -120,10 +120,7 @@ module Syskit
     # with a "not modelled" warning each (see Compat). The value says which
     # action name a statement defines, when it defines one, so that later
     # statements can refer to it.
-    NOT_MODELLED = {
-      use_gazebo_model: ->(url, *, as: nil, **) { "#{as || url.to_s.sub(%r{\Amodel://}, '').split('/').first}_dev" },
-      use_sdf_world: nil, use_sdf_model: nil, transformer: nil
-    }.freeze
+    NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: nil, transformer: nil }.freeze
 
     # The comment block above +location+ (documentation of a statement).
     def self.doc_above(location)
@@ -162,6 +159,19 @@ module Syskit
       def use(*mappings)
         syskit_profile.use(mappings, location: Location.of_caller)
         self
+      end
+
+      # rock_gazebo's statement: the model's device (see Compat::Gazebo),
+      # else not modelled.
+      def use_gazebo_model(url, *, as: nil, **)
+        location = Location.of_caller
+        device = Compat::Gazebo.use_model(syskit_profile, url, as: as, location: location)
+        return device if device
+
+        Syskit.app&.not_modelled("use_gazebo_model in profile #{self}", location)
+        name = "#{as || url.to_s.sub(%r{\Amodel://}, '').split('/').first}_dev"
+        define_singleton_method(name) { Compat::Ignored.instance } unless respond_to?(name)
+        Compat::Ignored.instance
       end
 
       def use_profile(profile, tags = {})

@@ -67,6 +67,8 @@ module Syskit
       def define(name, requirements, location:, doc: nil)
         name = Arguments.name(name, statement: 'define', what: 'a definition name', pattern: Arguments::METHOD_NAME,
                                     example: "define 'arm_control', Compositions::ArmControl")
+        return not_modelled_definition(name, location) if Compat::Ignored === requirements # rubocop:disable Style/CaseEquality
+
         unless InstanceRequirements.selectable?(requirements)
           raise DeclarationError.new(
             "define '#{name}' expects a model, a device or requirements, got #{Arguments.shown(requirements)}",
@@ -76,6 +78,14 @@ module Syskit
 
         requirements = dependency_injection_context.direct_selection_for(requirements) || requirements
         register_definition(name, InstanceRequirements.from(requirements, location: location), doc, location)
+      end
+
+      # A definition of something not modelled: its action stands for it,
+      # with a warning.
+      def not_modelled_definition(name, location)
+        Syskit.app&.not_modelled("definition '#{name}' of something not modelled", location)
+        define_action("#{name}_def") { Compat::Ignored.instance }
+        Compat::Ignored.instance
       end
 
       def register_definition(name, requirements, doc, location)

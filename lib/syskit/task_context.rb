@@ -93,6 +93,16 @@ module Syskit
       end
     end
 
+    # The services made for this task from dynamic services (its devices'
+    # slaves declared from one, as Syskit's required dynamic services).
+    def each_required_dynamic_service(&block)
+      return enum_for(__method__) unless block
+
+      devices.each do |device|
+        device.each_slave { |slave| yield slave.service if slave.dynamic_service_name && slave.service }
+      end
+    end
+
     # The device this task drives, when it drives only one.
     def robot_device
       found = devices

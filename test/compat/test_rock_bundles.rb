@@ -29,10 +29,9 @@ module Syskit
         'models/profiles/base.rb:24: warning: use_gazebo_model in profile Rover::Profiles::Base',
         "config/robots/default.rb:4: warning: the Ruby library 'roby/schedulers/temporal' (part of Rock's runtime)",
         'config/robots/default.rb:5: warning: Roby.scheduler',
-        'config/robots/sim.rb:5: warning: Syskit.conf.use_gazebo_world',
-        'config/robots/sim.rb:6: warning: Syskit.conf.use_ruby_tasks'
+        'config/robots/sim.rb:5: warning: Syskit.conf.use_gazebo_world'
       ], warnings
-      assert_match(/^Rover: 0 error\(s\), 8 warning\(s\)$/, out)
+      assert_match(/^Rover: 0 error\(s\), 7 warning\(s\)$/, out)
     end
 
     def test_the_plan_of_a_rock_style_robot

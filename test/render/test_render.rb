@@ -14,6 +14,44 @@ module Syskit
       Network::Generator.plan_profile(app, AwesomeRobot::Profiles::Live::Base.syskit_profile).plan
     end
 
+    # Rock's configuration files write .nan for an unknown value; a
+    # configure method may compute an infinity: both are values of a
+    # double, written as JavaScript writes them in the JSON.
+    NAN_SPEC = <<~RUBY
+      name 'imu'
+      import_types_from 'base'
+      task_context 'Task' do
+        property 'rate', 'int', 100
+        property 'bias', 'double', 0.0
+        property 'limit', 'double', 0.0
+        output_port 'samples', '/base/samples/IMUSensors'
+      end
+    RUBY
+    NAN_EXTENSION = <<~RUBY
+      require 'models/devices/imu'
+      Syskit.extend_model OroGen.imu.Task do
+        driver_for MyApp::Devices::IMU, as: 'imu'
+        def configure
+          super
+          properties.limit = 1.0 / 0
+        end
+      end
+    RUBY
+
+    def test_nan_and_infinity_are_values_of_doubles
+      root = my_app("device(Devices::IMU, as: 'imu')\n",
+                    'config/orogen/imu::Task.yml' => "--- name:default\nrate: 50\nbias: .nan\n",
+                    'models/orogen/imu.orogen' => NAN_SPEC, 'models/orogen/imu.rb' => NAN_EXTENSION)
+      out, err, status = run_cli('plan', '--app', root, '--format', 'json')
+      assert_equal 0, status, err
+      assert_match(/"bias": NaN,\n\s*"limit": Infinity,/, out)
+      properties = JSON.parse(out, allow_nan: true)['tasks'].first['properties']
+      assert properties['bias'].nan?
+      assert_equal Float::INFINITY, properties['limit']
+      text, = run_cli('plan', '--app', root)
+      assert_match(/bias: NaN\n\s+limit: Infinity\n/, text)
+    end
+
     def test_json_has_the_keys_of_the_spec
       doc = JSON.parse(Render::JSON.render(example_plan))
       assert_equal %w[profile robot tasks devices connections order buses compositions], doc.keys

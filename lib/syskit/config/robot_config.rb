@@ -17,7 +17,7 @@ module Syskit
       # Statements of Syskit.conf about a running system (process servers,
       # simulators, logging, ruby tasks): accepted, with a "not modelled"
       # warning each (see Compat).
-      NOT_MODELLED = %i[use_ruby_tasks use_gazebo_world register_process_server remove_process_server
+      NOT_MODELLED = %i[use_gazebo_world register_process_server remove_process_server
                         connect_to_orocos_process_server redirect_local_process_server disables_local_process_server
                         transformer_enabled= export_types= auto_restart_deployments_with_quarantines=
                         exception_transition_timeout= logs only_load_models=].freeze
@@ -74,6 +74,19 @@ module Syskit
         mappings = mappings.merge(options.reject { |key, _| key.is_a?(Symbol) })
         check_options(options.keys.grep(Symbol), location)
         mappings.each { |model, name| add_mapping(model, name, nil, location) }
+        self
+      end
+
+      # Ruby task contexts (see RubyTaskContext), each deployed as a task of
+      # its own name: +use_ruby_tasks Generator => 'setpoint'+. +on:+ (the
+      # process they run in) has no effect on plans.
+      def use_ruby_tasks(mappings = {}, on: nil, **more) # rubocop:disable Lint/UnusedMethodArgument
+        location = Location.of_caller
+        mappings.merge(more).each do |model, name|
+          raise not_a_ruby_task(model, name, location) unless model.is_a?(Class) && model < RubyTaskContext
+
+          add_mapping(model, name, nil, location)
+        end
         self
       end
 
@@ -241,6 +254,13 @@ module Syskit
         deployment = Orogen::DeploymentSpec.new(name.to_s, location: location)
         deployment.add_task(name.to_s, model, location: location)
         deployment
+      end
+
+      def not_a_ruby_task(model, name, location)
+        DeploymentError.new("use_ruby_tasks expects ruby task models, got #{Arguments.shown(model)}",
+                            location: location,
+                            hint: 'deploy task contexts of .orogen files with ' \
+                                  "use_deployment #{model.inspect} => '#{name}'")
       end
 
       def usage_error(spec, location)

@@ -144,6 +144,15 @@ module Syskit
         ports[name.to_s]
       end
 
+      # Its input (output) ports, in declaration order.
+      def each_input_port(&)
+        ports.each_value.select(&:input?).each(&)
+      end
+
+      def each_output_port(&)
+        ports.each_value.select(&:output?).each(&)
+      end
+
       # Timing information real bundles write (+worstcase_processing_time 0.2+):
       # recorded, and used to size buffers.
       def worstcase_processing_time(seconds = nil)

@@ -98,9 +98,15 @@ module Syskit
           'deploy one task per device (usually named after the device) and tell them apart ' \
             "with .prefer_deployed_tasks(/#{name}/)"
         else
-          "deploy another one (Syskit.conf.use_deployment #{Naming.dsl_reference(task.model)} => '#{name}') and " \
+          "deploy another one (Syskit.conf.#{deploy_statement(task.model)} #{Naming.dsl_reference(task.model)} => " \
+            "'#{name}') and " \
             "#{prefer(task, requirement, "'#{name}'").sub(/\Achoose one/, 'choose it')}"
         end
+      end
+
+      # How a robot configuration deploys a task of +model+.
+      def deploy_statement(model)
+        model <= RubyTaskContext ? 'use_ruby_tasks' : 'use_deployment'
       end
 
       def describe(task)

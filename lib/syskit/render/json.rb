@@ -28,7 +28,10 @@ module Syskit
         # json is required here, not at start-up: it adds Kernel#j and #jj,
         # which user files could then call by mistake.
         require 'json'
-        state = ::JSON::State.new(indent: '  ', space: ' ', object_nl: "\n", array_nl: "\n")
+        # NaN and infinities (Rock's configuration files write .nan) as
+        # JavaScript writes them, which Ruby's JSON.parse(text, allow_nan:
+        # true) and Python's json read.
+        state = ::JSON::State.new(indent: '  ', space: ' ', object_nl: "\n", array_nl: "\n", allow_nan: true)
         state.depth = 1
         out = +"{\n  \"profile\": " << state.generate(plan.profile) << ",\n  \"robot\": " << state.generate(plan.robot)
         port_hashes = {}.compare_by_identity

@@ -51,16 +51,12 @@ module Syskit
         raise ValueError, "expected #{expected} for #{name}, got #{value.inspect}"
       end
 
-      # +value+ as a Float a plan can hold: JSON has no NaN nor infinities,
-      # so they are refused where they are set rather than when printed.
-      def finite(value)
+      # +value+ as a Float. NaN and the infinities are values as in
+      # Typelib (Rock's configuration files write .nan for "unknown"): the
+      # plan's JSON writes them as NaN and Infinity (see Render::JSON).
+      def float(value)
         mismatch(value, 'a number') unless value.is_a?(Numeric) && value.real?
-        float = value.to_f
-        return float if float.finite?
-
-        shown = value.to_s
-        shown = "#{shown[0, 12]}... (#{shown.size} digits)" if shown.size > 24
-        raise ValueError, "#{shown} is not a finite number: #{name} holds finite values only (no NaN or infinity)"
+        value.to_f
       end
 
       # +value+ (a String or Symbol) as UTF-8 text: plans are UTF-8, so
@@ -114,7 +110,7 @@ module Syskit
       end
 
       def from_ruby(value)
-        finite(value)
+        float(value)
       end
     end
 
@@ -240,7 +236,7 @@ module Syskit
         when String then text(value)
         when Symbol then text(value).to_sym
         when Integer, true, false, nil then value
-        when Numeric then finite(value)
+        when Numeric then float(value)
         else mismatch(value, 'plain data (hash, array, string, number)')
         end
       end

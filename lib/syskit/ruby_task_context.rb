@@ -1,0 +1,95 @@
+# frozen_string_literal: true
+
+module Syskit
+  # A component written in Ruby (Syskit::RubyTaskContext): a task context
+  # whose ports and properties are declared in its class body rather than
+  # in an .orogen file.
+  #
+  #   class Generator < Syskit::RubyTaskContext
+  #     output_port 'out', '/double'
+  #     property 'period', '/double', 0.1
+  #   end
+  #
+  # It is deployed with +Syskit.conf.use_ruby_tasks Generator => 'name'+,
+  # and is otherwise planned as any task context. What it does at runtime
+  # (its events, its threads) is Roby's, and not modelled.
+  class RubyTaskContext < TaskContext
+    # The spec of a Ruby task model: named after the model (its constant,
+    # known once the class is assigned to one), never finalized, so that
+    # its ports and properties are read as declared so far.
+    class Spec < Orogen::TaskSpec
+      def initialize(model, superclass)
+        super(nil, nil, superclass: superclass, location: model.declared_at)
+        @model = model
+      end
+
+      def name
+        @model.name
+      end
+    end
+
+    class << self
+      # Where the model was declared.
+      attr_reader :declared_at
+
+      def inherited(submodel)
+        super
+        submodel.instance_variable_set(:@declared_at, Location.of_caller)
+        submodel.send(:setup_model, Spec.new(submodel, spec))
+        Models.register_model(submodel)
+      end
+
+      # A model made in Ruby: +Generator.new_submodel { output_port ... }+.
+      def new_submodel(name: nil, &block)
+        model = Class.new(self)
+        model.instance_variable_set(:@given_name, name) if name
+        model.class_eval(&block) if block
+        model
+      end
+
+      # The constant's name, else the one given to new_submodel.
+      def name
+        Module.instance_method(:name).bind_call(self) || @given_name || "anonymous ruby task (#{declared_at})"
+      end
+
+      def input_port(name, type)
+        add_port(name, :input, type)
+      end
+
+      def output_port(name, type)
+        add_port(name, :output, type)
+      end
+
+      # Declares a property: +property 'period', '/double', 0.1+.
+      def property(name, type, default = nil)
+        name = check_name(name, 'property')
+        property = Orogen::Property.new(name, Models.resolve_type(type, Location.of_caller), default)
+        spec.properties[name] = property
+        @properties_class = nil
+        Orogen::PropertyModifiers.new(property)
+      end
+
+      private
+
+      def add_port(name, direction, type)
+        name = check_name(name, "#{direction}_port")
+        port = Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
+        spec.ports[name] = port
+        Models::ComponentModel.declarations_changed
+        define_method("#{name}_port") { find_bound_port(name) } unless method_defined?("#{name}_port")
+        PortModifiers.new(port)
+      end
+
+      def check_name(name, statement)
+        name = Arguments.name(name, statement: statement, what: 'a name', pattern: Arguments::METHOD_NAME,
+                                    example: "#{statement} 'out', '/double'")
+        return name unless spec.find_port(name) || spec.all_properties.key?(name)
+
+        raise DeclarationError.new("#{self.name} already has a port or property named '#{name}'",
+                                   location: Location.of_caller, hint: 'give it another name')
+      end
+    end
+
+    setup_model(Spec.new(self, nil))
+  end
+end

@@ -1,0 +1,148 @@
+# frozen_string_literal: true
+
+require 'compositions/composition_test_helper'
+
+module Syskit
+  # What the Rock tutorials' compositions are made of besides task
+  # contexts: components written in Ruby (Syskit::RubyTaskContext, deployed
+  # with use_ruby_tasks) and the device of a simulated model
+  # (use_gazebo_model).
+  class TestRubyTasksAndGazebo < Minitest::Test
+    include CompositionTestHelper
+
+    GENERATOR = <<~RUBY
+      require 'models/devices/rover'
+      using_task_library 'rig'
+      module Rig
+        module Compositions
+          # Writes a constant speed.
+          class SpeedGenerator < Syskit::RubyTaskContext
+            argument :speed, default: 1.0
+            output_port 'out', '/double'
+            property 'period', '/double', 0.1
+          end
+
+          class Cruise < Syskit::Composition
+            argument :speed
+            add(SpeedGenerator, as: 'speed').with_arguments(speed: from(:parent_task).speed)
+            add Devices::Wheel, as: 'wheel'
+            speed_child.out_port.connect_to wheel_child.cmd_port
+          end
+        end
+      end
+    RUBY
+
+    def test_a_ruby_task_declares_its_ports_and_is_deployed_with_use_ruby_tasks
+      robot = "#{FILES['config/robots/default.rb']}require 'models/compositions/cruise'\n" \
+              "Syskit.conf.use_ruby_tasks Rig::Compositions::SpeedGenerator => 'speed_setpoint'\n"
+      app = load_rig({ 'models/compositions/cruise.rb' => GENERATOR, 'config/robots/default.rb' => robot },
+                     profile: <<~RUBY, requires: ['models/compositions/cruise'])
+                       profile 'Base' do
+                       #{ROBOT.lines.map { |l| "  #{l}" }.join}
+                         define 'cruise', Compositions::Cruise.use('wheel' => left_wheel_dev).with_arguments(speed: 2.0)
+                       end
+                     RUBY
+      model = Rig::Compositions::SpeedGenerator
+      assert_equal 'Rig::Compositions::SpeedGenerator', model.name
+      assert_equal %w[out], model.ports.keys
+      assert_equal 'Writes a constant speed.', Robot::DocComment.new.above(model.declared_at)
+      plan = plan_of(app, 'cruise_def')
+      task = plan.find_task('speed_setpoint')
+      assert_equal ['Rig::Compositions::SpeedGenerator', { 'period' => 0.1 }], [task.model, task.properties]
+      assert_equal ['speed_setpoint.out -> left_wheel.cmd'], connection_lines(plan)
+    end
+
+    def test_new_submodel_of_a_ruby_task
+      load_rig
+      model = RubyTaskContext.new_submodel(name: 'Generator') { output_port 'out', '/double' }
+      assert_equal 'Generator', model.name
+      sub = model.new_submodel
+      sub.input_port 'in', '/double'
+      assert_equal %w[in out], sub.ports.keys.sort
+      assert_equal %w[out], model.ports.keys
+      error = assert_raises(DeclarationError) { sub.output_port 'out', '/double' }
+      assert_match(/already has a port or property named 'out'/, error.message)
+    end
+
+    def test_use_ruby_tasks_refuses_a_task_context_of_a_library
+      robot = "#{FILES['config/robots/default.rb']}Syskit.conf.use_ruby_tasks OroGen.rig.Follower => 'x'\n"
+      root = rig_app({ 'config/robots/default.rb' => robot })
+      error = load_problem(root)
+      assert_match(/use_ruby_tasks expects ruby task models, got rig::Follower/, error.message)
+      assert_match(/use_deployment rig::Follower => 'x'/, error.hint)
+    end
+
+    # A bundle playing common_models' part: the gazebo model device and
+    # the simulator's task library, in our own words.
+    SIM_BUNDLE = {
+      'config/syskit.yml' => "name: CommonModels\n",
+      'models/devices/gazebo/root_model.rb' => <<~RUBY,
+        module CommonModels
+          module Devices
+            module Gazebo
+              device_type 'RootModel' do
+                input_port 'joints_cmd', '/base/samples/Joints'
+                output_port 'joints_status', '/base/samples/Joints'
+              end
+            end
+          end
+        end
+      RUBY
+      'models/orogen/rock_gazebo.orogen' => <<~RUBY,
+        name 'rock_gazebo'
+        import_types_from 'base'
+        task_context 'ModelTask' do
+          input_port 'joints_cmd', '/base/samples/Joints'
+          output_port 'joints_samples', '/base/samples/Joints'
+        end
+      RUBY
+      'models/orogen/rock_gazebo.rb' => <<~RUBY
+        require 'common_models/models/devices/gazebo/root_model'
+        Syskit.extend_model OroGen.rock_gazebo.ModelTask do
+          driver_for CommonModels::Devices::Gazebo::RootModel, as: 'model', 'joints_status' => 'joints_samples'
+        end
+      RUBY
+    }.freeze
+
+    def test_use_gazebo_model_declares_the_device_of_the_model
+      sim = write_app(SIM_BUNDLE, name: 'common_models')
+      app = write_app({
+                        'config/syskit.yml' => "name: Sim\nbundles: [#{sim}]\n",
+                        'config/robots/default.rb' => "# the simulator runs the model's task\n",
+                        'models/profiles/base.rb' => <<~RUBY
+                          module Sim
+                            module Profiles
+                              profile 'Base' do
+                                use_gazebo_model 'model://arm', prefix_device_with_name: true
+                              end
+                            end
+                          end
+                        RUBY
+                      }, name: 'sim')
+      loaded = load_app(app)
+      device = Sim::Profiles::Base.arm_dev.device
+      assert_equal ['arm', 'CommonModels::Devices::Gazebo::RootModel'], [device.name, device.model.name]
+      assert_match(%r{the links, joints and sensors of model://arm}, loaded.problems.first.message)
+      plan = Network::Generator.plan_profile(loaded, Sim::Profiles::Base.syskit_profile).plan
+      task = plan.find_task('gazebo_arm')
+      assert_equal ['rock_gazebo::ModelTask', true], [task.model, task.unmanaged]
+    end
+
+    def test_use_gazebo_model_without_the_simulator_is_not_modelled
+      app = write_app({ 'config/syskit.yml' => "name: Sim\n", 'models/profiles/base.rb' => <<~RUBY }, name: 'sim')
+        module Sim
+          module Profiles
+            profile 'Base' do
+              use_gazebo_model 'model://arm'
+              define 'arm_control', Syskit::Composition.new_submodel.use('arm' => arm_dev)
+            end
+          end
+        end
+      RUBY
+      loaded = load_app(app)
+      messages = loaded.problems.map(&:message)
+      assert_match(/use_gazebo_model in profile Sim::Profiles::Base: not modelled/, messages[0])
+      assert_match(/a selection of something not modelled/, messages[1])
+    end
+  end
+end

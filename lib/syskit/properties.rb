@@ -43,12 +43,24 @@ module Syskit
     # ConfigurationError pointing at the caller when it does not fit.
     def []=(name, value)
       name = check_name(name)
-      @values[name] = declarations.fetch(name).type.from_ruby(value)
+      if Compat::Ignored === value # rubocop:disable Style/CaseEquality
+        not_modelled_value(name)
+      else
+        @values[name] = declarations.fetch(name).type.from_ruby(value)
+      end
     rescue Types::ValueError, ArgumentError => e
       raise ConfigurationError.new(
         "property '#{name}' of #{self.class.task_model.name}: #{e.message}",
         location: Location.of_caller, hint: "give it a value of type #{declarations[name]&.type}"
       )
+    end
+
+    # A value made from something this gem does not model (the SDF model
+    # of a simulated robot): the property keeps its value, with a warning.
+    def not_modelled_value(name)
+      Syskit.app&.not_modelled("property '#{name}' of #{self.class.task_model.name} set from something not " \
+                               'modelled (it keeps its value)', Location.of_caller)
+      @values[name]
     end
 
     def key?(name)

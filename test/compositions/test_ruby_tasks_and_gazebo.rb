@@ -128,6 +128,43 @@ module Syskit
       assert_equal ['rock_gazebo::ModelTask', true], [task.model, task.unmanaged]
     end
 
+    # The simulator's task reading the model's SDF, as Rock's tutorials do.
+    SDF_READER = <<~RUBY
+      require 'common_models/models/devices/gazebo/root_model'
+      Syskit.extend_model OroGen.rock_gazebo.ModelTask do
+        driver_for CommonModels::Devices::Gazebo::RootModel, as: 'model', 'joints_status' => 'joints_samples'
+        argument :robot
+        def configure
+          super
+          properties.model_sdf = robot.sdf_model.make_root.to_xml_string
+        end
+      end
+    RUBY
+
+    def test_the_sdf_model_of_a_gazebo_profile_is_not_modelled
+      sim = write_app(SIM_BUNDLE.merge('models/orogen/rock_gazebo.rb' => SDF_READER), name: 'common_models')
+      File.write(File.join(sim, 'models/orogen/rock_gazebo.orogen'),
+                 SIM_BUNDLE['models/orogen/rock_gazebo.orogen'].sub('do', "do\n  property 'model_sdf', '/std/string'"))
+      app = write_app({ 'config/syskit.yml' => "name: Sim\nbundles: [#{sim}]\n", 'config/robots/default.rb' => '',
+                        'models/profiles/base.rb' => <<~RUBY }, name: 'sim')
+                          module Sim
+                            module Profiles
+                              profile 'Base' do
+                                use_gazebo_model 'model://arm'
+                              end
+                            end
+                          end
+                        RUBY
+      loaded = load_app(app)
+      requirement = Sim::Profiles::Base.arm_dev.with_arguments(robot: Sim::Profiles::Base)
+      result = Network::Generator.new(loaded, [requirement], profile: Sim::Profiles::Base.syskit_profile,
+                                                             robot_config: loaded.robot_config('default')).generate
+      assert_equal '', result.plan.find_task('gazebo_arm').properties['model_sdf']
+      messages = loaded.problems.map(&:message)
+      assert(messages.any? { |m| m.start_with?('the SDF model of Sim::Profiles::Base: not modelled') })
+      assert(messages.any? { |m| m.start_with?("property 'model_sdf' of rock_gazebo::ModelTask set from something") })
+    end
+
     def test_use_gazebo_model_without_the_simulator_is_not_modelled
       app = write_app({ 'config/syskit.yml' => "name: Sim\n", 'models/profiles/base.rb' => <<~RUBY }, name: 'sim')
         module Sim

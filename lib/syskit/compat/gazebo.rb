@@ -25,7 +25,17 @@ module Syskit
                          location)
         device = profile.robot.add_device(Robot::Device, model, name, using: driver, options: {}, location: location)
         device.deployed_as_unmanaged("gazebo_#{name}")
+        define_sdf_model(profile.namespace)
         device
+      end
+
+      # +profile.sdf_model+, which configure methods read the model's SDF
+      # from: not modelled (what is made of it is not modelled either).
+      def define_sdf_model(namespace)
+        namespace.define_singleton_method(:sdf_model) do
+          Syskit.app&.not_modelled("the SDF model of #{self}", Location.of_caller)
+          Compat::Ignored.instance
+        end
       end
 
       def device_and_driver(app, location)

@@ -7,6 +7,7 @@ require 'syskit/compat/core_extensions'
 require 'syskit/compat/task_statements'
 require 'syskit/compat/conf'
 require 'syskit/compat/gazebo'
+require 'syskit/compat/base_float'
 
 module Syskit
   # Compatibility with real Rock files, in one place: the names Rock code
@@ -36,7 +37,7 @@ module Syskit
 
     # The top-level constants an active app installs besides OroGen and Types.
     def self.constants
-      { Robot: Config::RobotDSL, Roby: Roby, Conf: ConfStruct.new, Typelib: Typelib, Eigen: Eigen }
+      { Robot: Config::RobotDSL, Roby: Roby, Conf: ConfStruct.new, Typelib: Typelib, Eigen: Eigen, Base: BaseFloat }
     end
 
     # Records that a model of kind +kind+ (a composition, ...) was defined,

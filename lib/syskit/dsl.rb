@@ -24,6 +24,7 @@ module Syskit
       def require(name)
         super
       rescue LoadError
+        return false if Compat.provided_library?(name)
         raise unless Syskit.app && Compat.runtime_library?(name)
 
         Syskit.app.not_modelled("the Ruby library '#{name}' (part of Rock's runtime)", Location.of_caller)

@@ -50,6 +50,12 @@ module Syskit
       @dynamic
     end
 
+    # Whether this port can be connected to +other+: an output to an input
+    # of the same type (Syskit's +can_connect_to?+).
+    def can_connect_to?(other)
+      output? && other.input? && type == other.type
+    end
+
     # Its type's name, as oroGen's ports say it (+port.orocos_type_name+).
     def orocos_type_name
       type.name

@@ -144,6 +144,10 @@ module Syskit
         ports[name.to_s]
       end
 
+      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        ports.key?(name.to_s)
+      end
+
       # Its input (output) ports, in declaration order.
       def each_input_port(&)
         ports.each_value.select(&:input?).each(&)
@@ -186,6 +190,17 @@ module Syskit
         fullfilled_models.include?(model)
       end
       alias fulfills? fullfills?
+      # Syskit's name on services: whether it is or provides +model+.
+      alias provides? fullfills?
+
+      # Adds the port +port+ and its reader (+pose_port+, as Syskit's models
+      # have), unless a method of that name exists.
+      def add_port_entry(port)
+        ports[port.name] = port
+        reader = "#{port.name}_port"
+        define_singleton_method(reader) { find_port(port.name) } unless respond_to?(reader)
+        port
+      end
 
       # This model and every model it provides, in the order Syskit lists
       # them (Ruby's ancestors when models include what they provide): the
@@ -240,8 +255,7 @@ module Syskit
                                      location: location, hint: 'give each port its own name')
         end
 
-        port = Port.new(name, direction, Models.resolve_type(type, location))
-        ports[name] = port
+        port = add_port_entry(Port.new(name, direction, Models.resolve_type(type, location)))
         PortModifiers.new(port)
       end
 

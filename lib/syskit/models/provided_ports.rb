@@ -33,7 +33,7 @@ module Syskit
           end
           [port.name, name]
         end
-        added.each { |port| @model.ports[port.name] = Port.new(port.name, port.direction, port.type) }
+        added.each { |port| @model.add_port_entry(Port.new(port.name, port.direction, port.type)) }
         mapping
       end
 

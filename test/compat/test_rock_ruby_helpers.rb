@@ -1,0 +1,40 @@
+# frozen_string_literal: true
+
+require 'compositions/composition_test_helper'
+
+module Syskit
+  # What Rock's model code and tests call on service models and ports, and
+  # Rock's base/float, as the gem provides them.
+  class TestRockRubyHelpers < Minitest::Test
+    include CompositionTestHelper
+
+    def test_service_models_answer_syskit_s_questions
+      load_rig
+      odometry = Rig::Services::Odometry
+      assert odometry.provides?(Rig::Services::Pose)
+      refute Rig::Services::Pose.provides?(odometry)
+      assert odometry.has_port?(:odometry)
+      refute odometry.has_port?('pose')
+      assert_same odometry.find_port('odometry'), odometry.odometry_port
+      assert_equal RBS, Rig::Services::Pose.pose_port.orocos_type_name
+    end
+
+    def test_ports_say_whether_they_can_connect
+      load_rig
+      out = Rig::Services::Pose.pose_port
+      assert out.can_connect_to?(OroGen.rig.Follower.find_port('pose'))
+      refute out.can_connect_to?(OroGen.rig.Splitter.find_port('in'))
+      refute OroGen.rig.Follower.find_port('pose').can_connect_to?(out)
+    end
+
+    def test_base_float_is_provided
+      values = "require 'base/float'\nmodule Rig\n  VALUES = [Base.unset, Base.unknown].freeze\nend\n"
+      app = load_app(rig_app({ 'models/values.rb' => values }))
+      assert(Rig::VALUES.all?(&:nan?))
+      assert Base.unset?(Float::NAN)
+      refute Base.unknown?(1.0)
+      assert Base.infinity?(Base.infinity)
+      assert_empty app.problems.grep(NotModelled)
+    end
+  end
+end

@@ -83,17 +83,21 @@ module Syskit
       checkout of syskit) the example app.
 
       --format svg draws the dot graph with graphviz (which must be installed).
+      The picture shows the ports the plan connects; --all-ports shows every
+      port.
 
       Example: syskit plan Live::Base temperature_sensor_dev --format json
     TEXT
     method_option :app, type: :string, desc: 'the app directory'
     method_option :robot, type: :string, default: 'default', desc: 'the robot configuration (config/robots/NAME.rb)'
     method_option :format, type: :string, default: 'text', enum: RENDERERS.keys, desc: 'output format'
+    method_option :all_ports, type: :boolean, default: false, desc: 'dot and svg: draw unconnected ports too'
     def plan(profile_name = nil, *actions)
       with_app(robots: [options[:robot]]) do |app|
         profile = find_profile(app, profile_name)
         result = plan_actions(app, profile, actions)
-        RENDERERS.fetch(options[:format]).write(result.plan, $stdout)
+        picture = %w[dot svg].include?(options[:format]) ? { all_ports: options[:all_ports] } : {}
+        RENDERERS.fetch(options[:format]).write(result.plan, $stdout, **picture)
         note_warnings(app)
       end
     end

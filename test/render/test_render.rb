@@ -138,10 +138,42 @@ module Syskit
       title = %(  label="AwesomeRobot::Profiles::Live::Base on robot 'default'";\n  labelloc=t;)
       assert dot.start_with?(%(digraph "AwesomeRobot::Profiles::Live::Base" {\n#{title}))
       # Inputs on the left, the task in the middle, outputs on the right.
+      # Under the model, the device's CAN filter.
       assert_includes dot, '"temperature_sensor" [label="{{<i0> can_in}|' \
-                           'temperature_sensor\\ncan_temperature_sensor::Task|{<o0> can_out|<o1> temperature}}"'
-      assert_includes dot, '"can0":o2 -> "temperature_sensor":i0 [label="buffer 2"];'
-      assert_includes dot, '"sync":o0 -> "can0":i0 [label="buffer 12"];'
+                           'temperature_sensor\\ncan_temperature_sensor::Task\\nid\\ 0x1234/0xFFFF|' \
+                           '{<o0> can_out|<o1> temperature}}"'
+      assert_includes dot, '"can0":o1 -> "temperature_sensor":i0 [label="buffer 2"];'
+      # Frames into the bus driver enter it from below, so the bus's devices
+      # line up on one side of it.
+      assert_includes dot, '"sync":o0 -> "can0":i0:s [label="buffer 12"];'
+    end
+
+    def test_dot_draws_the_ports_the_plan_connects_and_counts_the_others
+      plan = example_plan
+      dot = Render::Dot.render(plan)
+      gps = plan.tasks.find { |task| task.name == 'gps' }
+      hidden = gps.ports.count { |port| port.name != 'pose_samples' }
+      assert_operator hidden, :>, 1
+      note = "+#{hidden}\\ ports\\ not\\ connected"
+      assert_includes dot, %("gps" [label="{gps\\ngps_ublox::F9Task\\n#{note}|{<o0> pose_samples}}")
+      all = Render::Dot.write(plan, StringIO.new(+''), all_ports: true).string
+      refute_includes all, 'not\\ connected'
+      gps_node = all[/^    "gps" \[label=.*$/]
+      gps.ports.each { |port| assert_match(/<[io]\d+> #{port.name}[|}]/, gps_node) }
+    end
+
+    def test_dot_labels_a_bus_with_its_bitrate_and_load
+      dot = Render::Dot.render(example_plan)
+      assert_match(%r{^  subgraph "cluster_bus_can1" \{\n    label="bus can1\\n1 Mbit/s, load \d+\.\d %";}, dot)
+      # A bus without a bitrate has no load to show.
+      assert_includes dot, %(label="bus n2k"; )
+    end
+
+    def test_dot_writes_a_policy_once_for_the_connections_into_one_port
+      dot = Render::Dot.render(example_plan)
+      into_can1 = dot.lines.grep(/-> "can1":i0:s/)
+      assert_equal 2, into_can1.size
+      assert_equal 1, into_can1.grep(/label="buffer 20"/).size
     end
 
     def test_dot_groups_the_devices_of_a_bus_with_its_driver_and_draws_bus_drivers_apart

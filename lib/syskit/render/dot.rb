@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/render/output'
+require 'syskit/can/timing/format'
 
 module Syskit
   module Render
@@ -15,6 +16,13 @@ module Syskit
     # that are its children alone (a task several compositions share, or
     # attached to a bus, stays out), its child compositions boxes inside.
     # The title is the profile and the robot.
+    #
+    # For the picture to stay readable: a task shows the ports the plan
+    # connects (+all_ports: true+ for every port, a note says how many are
+    # left out otherwise), a bus box its bitrate and load, a device its CAN
+    # filter; the writes of attached devices into their bus driver enter
+    # its input from below, and several connections into one input with
+    # one policy are labelled once.
     #
     # +links+ (task model name => URL) makes each task's box a link (the
     # documentation site links tasks to their model's page).
@@ -41,6 +49,7 @@ module Syskit
         def initialize(plan)
           devices = plan.devices.group_by(&:task)
           buses = plan.devices.select(&:com_bus).to_h { |d| [d.name, d] }
+          @wires = plan.buses.to_h { |b| [b.name, b] }
           @bus_tasks = {}
           @boxes = {}
           @top = Box.new(nil, nil, nil, [], [])
@@ -54,7 +63,7 @@ module Syskit
         # The box a bus's driver and the devices through the bus are in.
         def box_of(bus_name, buses)
           @boxes[bus_name] ||= begin
-            box = Box.new("cluster_bus_#{bus_name}", "bus #{bus_name}", BUS_BOX, [], [])
+            box = Box.new("cluster_bus_#{bus_name}", bus_label(bus_name), BUS_BOX, [], [])
             parent = buses[bus_name]&.bus
             (parent && buses[parent] ? box_of(parent, buses) : @top).boxes << box
             box
@@ -62,6 +71,15 @@ module Syskit
         end
 
         private
+
+        # "bus can0", then its bitrate and load when it declares them.
+        def bus_label(bus_name)
+          wire = @wires[bus_name]
+          return "bus #{bus_name}" unless wire&.bitrate
+
+          load = wire.utilization ? ", load #{CAN::Timing::Format.percent(wire.utilization)}" : ''
+          "bus #{bus_name}\n#{CAN::Timing::Format.bitrate(wire.bitrate)}#{load}"
+        end
 
         # For each task, the compositions whose child it is.
         def composition_owners(plan)
@@ -104,13 +122,16 @@ module Syskit
 
       # Writes the graph of one plan.
       class Writer
-        def initialize(plan, io, links: nil)
+        def initialize(plan, io, links: nil, all_ports: false)
           @plan = plan
           @io = io
           @links = links
           @out = Dot.quote(plan.profile.to_s, +'digraph ') << " {\n"
           @layout = Layout.new(plan)
           @ports = {} # task name => port name => record field
+          @connected = connected_ports unless all_ports
+          @filters = can_filters
+          @labelled = {}
         end
 
         def write
@@ -157,20 +178,56 @@ module Syskit
           Dot.quote(label, @out << indent << '  label=') << '; ' << style << ";\n"
         end
 
+        # Task name => names of its connected ports.
+        def connected_ports
+          found = Hash.new { |h, k| h[k] = {} }
+          @plan.connections.each do |c|
+            found[c.from.task][c.from.port] = true
+            found[c.to.task][c.to.port] = true
+          end
+          found
+        end
+
+        # Task name => the CAN filters of its devices ("id 0x181/0x7FF").
+        def can_filters
+          @plan.devices.each_with_object(Hash.new { |h, k| h[k] = [] }) do |d, found|
+            id, mask = d.attributes['can_id']
+            found[d.task] << "id #{Output.hex(id)}/#{Output.hex(mask || id)}" if id.is_a?(Integer)
+          end
+        end
+
         # A task as a record: {inputs | name, model | outputs}. Its ports'
         # record fields are kept for the edges.
         def node(task, note, indent)
-          inputs, outputs = task.ports.partition { |p| p.direction == 'input' }
+          shown = shown_ports(task)
+          inputs, outputs = shown.partition { |p| p.direction == 'input' }
           fields = @ports[task.name] = {}
           Dot.quote(task.name, @out << indent) << ' [label="{'
           port_fields(inputs, 'i', fields) << '|' unless inputs.empty?
-          Dot.record(task.model, Dot.record(task.name, @out) << NEWLINE)
-          Dot.record(note, @out << NEWLINE) if note
-          unless outputs.empty?
-            @out << '|'
-            port_fields(outputs, 'o', fields)
-          end
+          title(task, notes(task, note, task.ports.size - shown.size))
+          port_fields(outputs, 'o', fields, '|') unless outputs.empty?
           Output.flush(style(task) << "];\n", @io)
+        end
+
+        # The middle of the record: name, model and notes.
+        def title(task, notes)
+          Dot.record(task.model, Dot.record(task.name, @out) << NEWLINE)
+          notes.each { |line| Dot.record(line, @out << NEWLINE) }
+        end
+
+        def shown_ports(task)
+          return task.ports unless @connected
+
+          connected = @connected[task.name]
+          task.ports.select { |port| connected[port.name] }
+        end
+
+        # Lines under a task's name: its deployment when shared, its CAN
+        # filters, the ports left out.
+        def notes(task, note, hidden)
+          lines = [note, *@filters[task.name]]
+          lines << "+#{Naming.count(hidden, 'port')} not connected" if hidden.positive?
+          lines.compact
         end
 
         # A bus driver is drawn apart from device drivers.
@@ -180,9 +237,9 @@ module Syskit
           url ? Dot.quote(task.model, Dot.quote(url, @out << ', URL=') << ', tooltip=') : @out
         end
 
-        # {<i0> name|<i1> other}
-        def port_fields(list, prefix, fields)
-          @out << '{'
+        # {<i0> name|<i1> other}, after +separator+.
+        def port_fields(list, prefix, fields, separator = '')
+          @out << separator << '{'
           list.each_with_index do |port, i|
             field = "#{prefix}#{i}"
             fields[port.name] = field
@@ -191,11 +248,19 @@ module Syskit
           @out << '}'
         end
 
-        # From the output port's field to the input port's, labelled with the policy.
+        # From the output port's field to the input port's, labelled with
+        # the policy (once per input port and policy). Into a bus driver,
+        # the edge enters the port from below, not around the bus's box.
         def edge(connection)
+          to = connection.to
           endpoint(connection.from, @out << '  ') << ' -> '
-          endpoint(connection.to, @out) << ' [label="'
-          Output.policy(connection.policy, @out) << "\"];\n"
+          endpoint(to, @out)
+          @out << ':s' if @layout.bus_tasks[to.task] && @ports.dig(to.task, to.port)
+          key = [to.task, to.port, connection.policy]
+          return @out << ";\n" if @labelled[key]
+
+          @labelled[key] = true
+          Output.policy(connection.policy, @out << ' [label="') << "\"];\n"
         end
 
         def endpoint(endpoint, out)
@@ -208,8 +273,8 @@ module Syskit
       module_function
 
       # Writes the graph to +io+; returns +io+.
-      def write(plan, io, links: nil)
-        Writer.new(plan, io, links: links).write
+      def write(plan, io, links: nil, all_ports: false)
+        Writer.new(plan, io, links: links, all_ports: all_ports).write
       end
 
       SPECIAL = /[\\"\n]/

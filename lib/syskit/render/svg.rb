@@ -13,8 +13,8 @@ module Syskit
       module_function
 
       # Writes the SVG of +plan+ to +io+ (+links+: see Dot); returns +io+.
-      def write(plan, io, dot: dot_command, links: nil)
-        io.write(draw(Dot.write(plan, StringIO.new(+''), links: links).string, dot: dot))
+      def write(plan, io, dot: dot_command, links: nil, all_ports: false)
+        io.write(draw(Dot.write(plan, StringIO.new(+''), links: links, all_ports: all_ports).string, dot: dot))
         io
       end
 

@@ -33,7 +33,20 @@ module Syskit
       end
 
       def warnings
-        overlaps.map { |overlap| warning(overlap) }
+        unmatchable.map { |dev, filter| unmatchable_warning(dev, filter) } +
+          overlaps.map { |overlap| warning(overlap) }
+      end
+
+      # The devices, and their filters, that no frame can reach: the id has
+      # bits outside the mask. can_id stores such a filter as given (the
+      # seed's own test sets one), so this check is where a user hears of it.
+      def unmatchable
+        @robot.devices.grep(Robot::ComBus).flat_map do |bus|
+          bus.each_attached_device.filter_map do |dev|
+            filter = filter_of_reader(dev)
+            [dev, filter] if filter && !filter.matchable?
+          end
+        end
       end
 
       # The overlapping groups of every bus, in the order of the devices
@@ -50,9 +63,9 @@ module Syskit
         order = {}.compare_by_identity
         bus.each_attached_device do |dev|
           order[dev] = order.size
-          next unless dev.bus_to_client? && dev.respond_to?(:can_id) && (can_id = dev.can_id)
+          # A filter no frame passes overlaps nothing.
+          next unless (filter = filter_of_reader(dev)) && filter.matchable?
 
-          filter = CAN::Filter.new(*can_id)
           by_kind[filter.extended?] << [dev, filter]
         end
         groups = by_kind.each_value.flat_map { |filtered| overlapping_groups(filtered) }
@@ -106,6 +119,25 @@ module Syskit
           matches = index[key]
           groups << [matches.map(&:first), devices.map(&:first)] if matches
         end
+      end
+
+      # The filter of a device that reads the bus (write-only devices
+      # receive nothing), when it has one.
+      def filter_of_reader(dev)
+        return unless dev.bus_to_client? && dev.respond_to?(:can_id) && (can_id = dev.can_id)
+
+        CAN::Filter.new(*can_id)
+      end
+
+      def unmatchable_warning(dev, filter)
+        Warning.new(
+          format('%<dev>s on %<bus>s has a filter that can never match (%<filter>s): the id has bits outside ' \
+                 'the mask (id & mask = 0x%<both>X), so no frame reaches it',
+                 dev: dev, bus: dev.bus, filter: filter, both: filter.id & filter.mask),
+          location: dev.dsl_attribute_location(:can_id),
+          hint: format('a frame reaches the device when frame_id & mask == id: set every bit of the id in the ' \
+                       'mask, e.g. can_id(0x%<id>X, 0x%<mask>X)', id: filter.id, mask: filter.id | filter.mask)
+        )
       end
 
       def warning(overlap)

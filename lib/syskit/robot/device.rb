@@ -183,7 +183,15 @@ module Syskit
                   (args.size == 1 ? args.first : args)
                 end
         dsl_attributes[attr] = value
+        (@dsl_attribute_locations ||= {})[attr] = Location.of_caller
         self
+      end
+
+      # Where the attribute +attr+ was last set (the user's +.can_id(...)+
+      # line), for the checks that judge its value; else where the device
+      # is declared.
+      def dsl_attribute_location(attr)
+        @dsl_attribute_locations&.[](attr) || declared_at
       end
 
       # The value of an attribute called without arguments. In the robot

@@ -122,8 +122,12 @@ module Syskit
         name || "anonymous #{self.class.kind}"
       end
       alias inspect to_s
-      # The name shown to users (Syskit's name for it on every model).
-      alias short_name to_s
+
+      # The name shown to users: #to_s, as Syskit's models have it, so that
+      # a model class that shows its models otherwise is shown so everywhere.
+      def short_name
+        to_s
+      end
 
       def kind
         self.class.kind

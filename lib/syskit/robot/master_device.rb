@@ -133,13 +133,9 @@ module Syskit
                            SlaveDevice.new(self, slave_srv.name, location: declared_at, implicit: true))
           end
         end
-        known.each_value do |slave|
-          next if find_slave(slave.name)
-
-          # A slave of the driver known at declaration that the final one
-          # does not have goes; one asked for is an error (SlaveDevice#resolve).
-          slave.implicit? ? forget_slave(slave) : register_slave(slave)
-        end
+        # Slaves asked for that the driver does not have are errors
+        # (SlaveDevice#resolve); the driver's own are all registered above.
+        known.each_value { |slave| register_slave(slave) unless slave.implicit? || find_slave(slave.name) }
       end
 
       private
@@ -181,10 +177,6 @@ module Syskit
         define_singleton_method("#{slave.name}_dev") { slave }
         robot.profile&.slave_registered(slave)
         slave
-      end
-
-      def forget_slave(slave)
-        singleton_class.send(:remove_method, "#{slave.name}_dev")
       end
 
       # Binds a slave asked for with #slave to the driver known at

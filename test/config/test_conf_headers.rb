@@ -70,9 +70,8 @@ module Syskit
       error, root = conf_error("--- name:default merge:yes\nrate: 10\n")
       assert_reported error, /merge:yes on a section header: merge is true or false/, at: "#{CONF}:1", root: root
       error, root = conf_error("--- name:default order:1\nrate: 10\n")
-      assert_reported error, /'order:1' on a section header is not one of its options/, at: "#{CONF}:1",
-                                                                                           hint: /chain:other/,
-                                                                                           root: root
+      assert_reported error, /'order:1' on a section header is not one of its options/,
+                      at: "#{CONF}:1", hint: /chain:other/, root: root
     end
 
     def test_a_chain_naming_a_section_not_declared_before

@@ -2,6 +2,7 @@
 
 require 'syskit/port'
 require 'syskit/models/provided_ports'
+require 'syskit/models/model_hierarchy'
 
 module Syskit
   # The plain model objects the DSL records declarations into.
@@ -12,10 +13,9 @@ module Syskit
     # Models are modules so that assigning one to a constant names it, as Ruby
     # does for any module (+Device = DeviceModel.new+ is then called Device).
     class DataServiceModel < Module
+      include ModelHierarchy
+
       attr_reader :ports, :parents, :declared_at
-      # MetaRuby's mark of the root of a hierarchy of models, which custom
-      # model classes of Rock's bundles set; recorded.
-      attr_accessor :root
       attr_accessor :doc
 
       # The word used for this kind of model in messages.
@@ -39,9 +39,15 @@ module Syskit
           return redeclare(existing, "#{namespace}::#{name}", model_class, location, **options, &block)
         end
 
-        model = model_class.new(location: location)
-        namespace.const_set(name, model)
-        model.send(:declare, root, options, block)
+        model = model_class.build(location: location, name: namespace.name ? "#{namespace}::#{name}" : name)
+        begin
+          model.send(:declare, root, options, block)
+        ensure
+          # As MetaRuby does, the constant names the model once its block
+          # has run: a name in the block means what it meant before. It is
+          # set when the block fails too, so that what follows finds it.
+          namespace.const_set(name, model) unless namespace.const_defined?(name, false)
+        end
       end
 
       # A model declared again: the gem's bundled common models give way to
@@ -92,13 +98,6 @@ module Syskit
         instance_eval(&block) if block
         finalize_declaration
         self
-      end
-
-      # A new model of this one's class that provides this one, as Syskit's
-      # +Device.new_submodel(name: 'Camera') { output_port ... }+: for
-      # models made in Ruby rather than with a statement (tests, stubs).
-      def new_submodel(name: nil, **options, &block)
-        self.class.new(location: Location.of_caller, name: name).send(:declare, self, options, block)
       end
 
       # Options of the declaration statement, applied once the model is named.
@@ -220,6 +219,7 @@ module Syskit
       # declaration block.
       def declare(root, options, block)
         apply_options(**options)
+        made_from(root)
         provides(root) unless equal?(root)
         instance_eval(&block) if block
         finalize_declaration
@@ -234,7 +234,7 @@ module Syskit
                                      location: location, hint: 'give each port its own name')
         end
 
-        port = Port.new(name, direction, Models.resolve_type(type, location))
+        port = Port.new(name, direction, Models.resolve_type(type, location), declared_type: type)
         ports[name] = port
         PortModifiers.new(port)
       end

@@ -17,7 +17,9 @@ module Syskit
       # (empty when the spec does not declare it).
       Operation = Struct.new(:name, :arguments, :argument_names)
       # A port of a task; dynamic ports are created at configure time.
-      Port = Struct.new(:name, :direction, :type, :dynamic)
+      # +declared_type+: the typedef name the port was declared with, when
+      # it is not +type+ (nil otherwise).
+      Port = Struct.new(:name, :direction, :type, :dynamic, :declared_type)
       # One end of a connection.
       Endpoint = Struct.new(:task, :port)
       # A connection and its policy ({'type' => 'buffer', 'size' => n} or {'type' => 'data'}).
@@ -185,7 +187,8 @@ module Syskit
       DIRECTIONS = { input: 'input', output: 'output' }.freeze
 
       def self.port_entry(port)
-        Port.new(port.name, DIRECTIONS.fetch(port.direction), port.type.name, port.dynamic?).freeze
+        Port.new(port.name, DIRECTIONS.fetch(port.direction), port.type.name, port.dynamic?,
+                 port.declared_type).freeze
       end
 
       def self.connection_entry(conn)
@@ -296,7 +299,8 @@ module Syskit
       end
 
       def port_hash(port)
-        { 'name' => port.name, 'direction' => port.direction, 'type' => port.type, 'dynamic' => port.dynamic }
+        hash = { 'name' => port.name, 'direction' => port.direction, 'type' => port.type, 'dynamic' => port.dynamic }
+        port.declared_type ? hash.merge('declared_type' => port.declared_type) : hash
       end
 
       def device_hash(device)

@@ -6,14 +6,17 @@ module Syskit
     # and their configuration through the network generator with stub
     # deployments (one deployed task per task, named after its device).
     module Stubs
-      # A device of +model+; its driver is +driver+, the described task model
-      # when it drives +model+, else a stub driver.
-      def syskit_stub_device(model, as: nil, driver: nil)
-        driver ||= described_driver_for(model) || StubModels.device_driver(model)
+      # A device of +model+; its driver is +driver+ (or +using:+, as
+      # Syskit's tests write it), the described task model when it drives
+      # +model+, else a stub driver. The device's own settings are given as
+      # in Syskit: +doc:+, +period:+, +burst:+, +sample_size:+.
+      def syskit_stub_device(model, as: nil, driver: nil, using: nil, **settings)
+        location = Location.of_caller
+        driver ||= using || described_driver_for(model) || StubModels.device_driver(model)
         device = syskit_stub_robot.add_device(Robot::Device, model, as || syskit_stub_name('dev'),
-                                              using: driver, options: {}, location: Location.of_caller)
+                                              using: driver, options: {}, location: location)
         device.driver_model = driver
-        device
+        apply_stub_settings(device, settings, location)
       end
 
       # A bus of +model+; its driver is +driver+, the described task model
@@ -74,7 +77,23 @@ module Syskit
         @syskit_stub_result&.plan
       end
 
+      # What syskit_stub_device sets on the device, as Syskit's does.
+      STUB_SETTINGS = %i[doc period burst sample_size].freeze
+
       private
+
+      def apply_stub_settings(device, settings, location)
+        unknown = settings.keys - STUB_SETTINGS
+        unless unknown.empty?
+          raise DeclarationError.new(
+            "syskit_stub_device: unknown option(s) #{unknown.map { |k| "#{k}:" }.join(', ')}" \
+            "#{Naming.did_you_mean(unknown.first, %i[as driver using] + STUB_SETTINGS)}",
+            location: location, hint: "it takes as:, driver: (or using:) and the device's #{STUB_SETTINGS.join(':, ')}:"
+          )
+        end
+        settings.each { |name, value| device.public_send(name, value) }
+        device
+      end
 
       def syskit_stub_robot
         @syskit_stub_robot ||= Robot::Definition.new(nil)
@@ -122,9 +141,7 @@ module Syskit
       module_function
 
       def device_model(base)
-        model = base.class.new(name: "stub #{base.name || 'device'}")
-        model.provides(base)
-        model
+        base.new_submodel(name: "stub #{base.name || 'device'}")
       end
 
       # A driver for +model+, with the ports of the model.

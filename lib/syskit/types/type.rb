@@ -118,6 +118,25 @@ module Syskit
       end
     end
 
+    # A floating-point field whose value may be unknown, as Rock writes it:
+    # NaN (base::unknown<double>()), which it is when nothing sets it. A
+    # plan cannot hold NaN: it shows null there.
+    class MaybeUnknownFloat < FloatType
+      def zero
+        Float::NAN
+      end
+
+      def from_ruby(value)
+        return Float::NAN if value.nil? || (value.is_a?(Float) && value.nan?)
+
+        super
+      end
+
+      def to_plain(value)
+        value.nan? ? nil : value
+      end
+    end
+
     # bool
     class BoolType < Type
       def zero
@@ -239,9 +258,20 @@ module Syskit
         when Array then value.map { |v| from_ruby(v) }
         when String then text(value)
         when Symbol then text(value).to_sym
-        when Integer, true, false, nil then value
+        # A value of Rock's Ruby bindings this gem does not model
+        # (Eigen::Vector3.new(1, 2, 3) for a /base/Vector3d) is kept as it is.
+        when Integer, true, false, nil, Compat::NotModelledValue then value
         when Numeric then finite(value)
         else mismatch(value, 'plain data (hash, array, string, number)')
+        end
+      end
+
+      def to_plain(value)
+        case value
+        when Hash then value.to_h { |k, v| [to_plain(k), to_plain(v)] }
+        when Array then value.map { |v| to_plain(v) }
+        when Compat::NotModelledValue then value.to_s
+        else value
         end
       end
     end

@@ -21,6 +21,9 @@ module Syskit
 
       # A Ruby library of Rock's runtime that is not installed here is not
       # modelled: requiring it is a warning, and the file goes on loading.
+      # A file another bundle's file of the same name shadows is loaded
+      # (see DSL.require_shadowed); common_models' old name is mapped (see
+      # Compat::OldCommonModels).
       def require(name)
         super || DSL.require_shadowed(name)
       rescue LoadError

@@ -26,6 +26,7 @@ module Syskit
                                      location: location, hint: "give this one another name with as: 'other_name'")
         end
 
+        TaskModel.declarations_changed
         (@dynamic_services ||= {})[as.to_s] = DynamicService.new(self, as.to_s, model, block, location)
       end
 

@@ -130,7 +130,8 @@ module Syskit
 
         drivers = device.using ? [device.using] : loaded_drivers(device.model)
         driver = drivers.first if drivers.size == 1
-        driver unless driver.nil? || driver.driver_services_for(device.model).empty?
+        # Most drivers serve no slaves: nothing to bind then.
+        driver if driver&.serves_slaves? && !driver.driver_services_for(device.model).empty?
       end
 
       def loaded_drivers(model)

@@ -6,28 +6,24 @@ module Syskit
   # Messages about real Rock files that used to point the wrong way
   # (issue 23), and how files of several bundles find each other.
   class TestRockFileMessages < Minitest::Test
+    # sonar.rb fails before it defines Sonar.
+    SONAR = <<~RUBY
+      module MyApp
+        module Services
+          data_service_type 'Ping' do
+            output_port 'ping', '/dobule'
+          end
+          data_service_type 'Sonar'
+        end
+      end
+    RUBY
+
     # echo.rb, loaded after sonar.rb failed, requires it: the require
     # does nothing, and Sonar is not there.
     def test_a_constant_of_a_required_file_that_failed_to_load
-      root = my_app(nil, 'models/services/sonar.rb' => <<~RUBY, 'models/tools/echo.rb' => <<~RUBY)
-        module MyApp
-          module Services
-            data_service_type 'Ping' do
-              output_port 'ping', '/dobule'
-            end
-            data_service_type 'Sonar'
-          end
-        end
-      RUBY
-        require 'models/services/sonar'
-        module MyApp
-          module Devices
-            device_type 'Echo' do
-              provides Services::Sonar
-            end
-          end
-        end
-      RUBY
+      echo = "require 'models/services/sonar'\nmodule MyApp\n  module Devices\n    device_type 'Echo' do\n" \
+             "      provides Services::Sonar\n    end\n  end\nend\n"
+      root = my_app(nil, 'models/services/sonar.rb' => SONAR, 'models/tools/echo.rb' => echo)
       errors = load_app(root, problems: true).errors
       sonar = errors.find { |e| e.location.path.end_with?('sonar.rb') }
       assert_reported sonar, %r{unknown type /dobule}, at: 'models/services/sonar.rb:4', root: root

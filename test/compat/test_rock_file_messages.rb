@@ -21,8 +21,8 @@ module Syskit
     # echo.rb, loaded after sonar.rb failed, requires it: the require
     # does nothing, and Sonar is not there.
     def test_a_constant_of_a_required_file_that_failed_to_load
-      echo = "require 'models/services/sonar'\nmodule MyApp\n  module Devices\n    device_type 'Echo' do\n" \
-             "      provides Services::Sonar\n    end\n  end\nend\n"
+      echo = "require 'models/services/sonar'\nmodule MyApp\n  module Devices\n    device_type 'Echo' do\n      " \
+             "provides Services::Sonar\n    end\n  end\nend\n"
       root = my_app(nil, 'models/services/sonar.rb' => SONAR, 'models/tools/echo.rb' => echo)
       errors = load_app(root, problems: true).errors
       sonar = errors.find { |e| e.location.path.end_with?('sonar.rb') }

@@ -180,6 +180,12 @@ module Syskit
       end
       alias fulfills? fullfills?
 
+      # Whether this model provides +model+, directly or not (Syskit's
+      # +provides?+: a model does not provide itself).
+      def provides?(model)
+        !equal?(model) && fullfills?(model)
+      end
+
       # This model and every model it provides, in the order Syskit lists
       # them (Ruby's ancestors when models include what they provide): the
       # model, what it provided last first, the roots (Device, DataService)

@@ -122,9 +122,12 @@ module Syskit
       end
 
       # The filter of a device that reads the bus (write-only devices
-      # receive nothing), when it has one.
+      # receive nothing), when it has one: an id and a mask. What a bus
+      # model's own can_id stores may be anything else (its filter block
+      # decides): that is not a CAN filter these checks can judge.
       def filter_of_reader(dev)
         return unless dev.bus_to_client? && dev.respond_to?(:can_id) && (can_id = dev.can_id)
+        return unless can_id.is_a?(Array) && can_id.size == 2 && can_id.all?(Integer)
 
         CAN::Filter.new(*can_id)
       end

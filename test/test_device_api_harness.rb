@@ -13,7 +13,7 @@ module Syskit
       app = fixture('device_api')
       out, err, status = Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'test', '--app', app)
       assert status.success?, "#{out}\n#{err}"
-      assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors/, out)
+      assert_match(/3 runs, \d+ assertions, 0 failures, 0 errors/, out)
     end
   end
 end

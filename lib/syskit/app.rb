@@ -212,15 +212,17 @@ module Syskit
       @typekits.import(name, location: location)
     end
 
-    # The configuration file of +task_model+ (config/orogen/<lib>::<Task>.yml),
-    # nil when there is none.
+    # The configuration of +task_model+ (config/orogen/<lib>::<Task>.yml),
+    # nil when there is none. As in Rock, the files of the bundles and of
+    # the app are all read, the app's last: its sections replace the
+    # bundles' of the same name (or merge into them, with merge:true).
     def conf_file(task_model)
       @conf_files ||= {}
       return @conf_files[task_model.name] if @conf_files.key?(task_model.name)
 
       file = "#{task_model.name}.yml"
-      path = bundle_roots.map { |r| File.join(r, 'config', 'orogen', file) }.find { |p| File.file?(p) }
-      @conf_files[task_model.name] = path ? Config::ConfFile.new(path) : nil
+      paths = bundle_roots.map { |r| File.join(r, 'config', 'orogen', file) }.select { |p| File.file?(p) }
+      @conf_files[task_model.name] = paths.reverse.reduce(nil) { |base, path| Config::ConfFile.new(path, base: base) }
     end
 
     # Whether +path+ is a file of the app or of one of its bundles.

@@ -15,10 +15,13 @@ module Syskit
     METHOD_NAME = /\A[a-z_][A-Za-z0-9_]*\z/
     # Names of C++ identifiers (task contexts, enum values, struct names).
     IDENTIFIER = /\A[A-Za-z_][A-Za-z0-9_]*\z/
+    # Names of ports: oroGen accepts any \w+ (+'3d_points'+).
+    PORT_NAME = /\A[A-Za-z0-9_]+\z/
     # What the patterns above accept, said to users.
     RULES = {
       METHOD_NAME => 'a lower-case letter or _ first, then letters, digits and _',
-      IDENTIFIER => 'a letter or _ first, then letters, digits and _'
+      IDENTIFIER => 'a letter or _ first, then letters, digits and _',
+      PORT_NAME => 'letters, digits and _'
     }.freeze
 
     module_function

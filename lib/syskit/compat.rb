@@ -2,12 +2,15 @@
 
 require 'syskit/compat/ignored'
 require 'syskit/compat/delayed_argument'
+require 'syskit/compat/not_modelled_value'
 require 'syskit/compat/roby'
 require 'syskit/compat/core_extensions'
 require 'syskit/compat/task_statements'
 require 'syskit/compat/conf'
 require 'syskit/compat/gazebo'
 require 'syskit/compat/base_float'
+require 'syskit/compat/utilrb'
+require 'syskit/compat/old_common_models'
 
 module Syskit
   # Compatibility with real Rock files, in one place: the names Rock code
@@ -37,7 +40,7 @@ module Syskit
 
     # The top-level constants an active app installs besides OroGen and Types.
     def self.constants
-      { Robot: Config::RobotDSL, Roby: Roby, Conf: ConfStruct.new, Typelib: Typelib, Eigen: Eigen, Base: BaseFloat }
+      { Robot: Config::RobotDSL, Roby: Roby, Conf: ConfStruct.new, Typelib: Typelib, Eigen: Eigen, Orocos: Orocos }
     end
 
     # Records that a model of kind +kind+ (a composition, ...) was defined,
@@ -92,22 +95,25 @@ module Syskit
     # What a not-modelled body gets for a constant nothing defines, or for
     # a statement it makes: any constant or call on it is accepted too, and
     # a class made from it is not modelled either.
-    IgnoredNamespace = Class.new
+    class IgnoredNamespace < NotModelledValue; end
     IgnoredNamespace.extend(NotModelledModel)
     IgnoredNamespace.instance_variable_set(:@not_modelled_kind, 'model made from a statement that is not modelled')
     IgnoredNamespace.define_singleton_method(:to_s) { '(not modelled)' }
 
     # oroGen's own classes, which specs sometimes call at their top level
     # (+OroGen::Spec::Deployment.register_global_initializer(:x)+): any call
-    # is accepted with a "not modelled" warning naming it.
+    # is accepted with a "not modelled" warning naming it. On a class of
+    # values (Eigen's), the call makes a value (+Eigen::Vector3.UnitZ+).
     module NotModelledCalls
       private
 
-      def method_missing(name, *_args, **_options, &)
+      def method_missing(name, *args, **options, &)
         return super if Ignored::CONVERSIONS.include?(name)
 
         Syskit.app&.not_modelled("#{self}.#{name}", Location.of_caller)
-        Ignored.instance
+        return Ignored.instance unless self <= NotModelledValue
+
+        NotModelledValue.of(self, name, options.empty? ? args : [*args, options])
       end
 
       def respond_to_missing?(name, _include_private = false)
@@ -116,11 +122,12 @@ module Syskit
     end
 
     # A module of classes that take any call with a warning (see
-    # NotModelledCalls), named as Rock code writes them.
-    def self.not_modelled_namespace(shown_name, class_names)
+    # NotModelledCalls), named as Rock code writes them; with +values:+,
+    # classes of values made with constructor arguments (NotModelledValue).
+    def self.not_modelled_namespace(shown_name, class_names, values: false)
       namespace = Module.new
       class_names.each do |name|
-        klass = Class.new.extend(NotModelledCalls)
+        klass = (values ? Class.new(NotModelledValue) : Class.new).extend(NotModelledCalls)
         full_name = "#{shown_name}::#{name}"
         klass.define_singleton_method(:to_s) { full_name }
         namespace.const_set(name, klass)
@@ -135,7 +142,7 @@ module Syskit
 
     # Declares a class of a model kind this gem does not model.
     def self.not_modelled_class(namespace, name, kind)
-      klass = Class.new
+      klass = Class.new(NotModelledValue)
       klass.extend(NotModelledModel)
       klass.instance_variable_set(:@not_modelled_kind, kind)
       namespace.const_set(name, klass)
@@ -168,6 +175,8 @@ module Syskit
     Syskit.const_set(:NetworkGeneration, Module.new)
     Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
+    # What runs task contexts in Syskit (a Roby task).
+    not_modelled_class(Syskit, :Deployment, 'deployment task')
     not_modelled_class(Roby, :Task, 'Roby task')
     # Roby's task library (Roby::Tasks::Simple, ...).
     Roby.const_set(:Tasks, Module.new)
@@ -175,7 +184,8 @@ module Syskit
       not_modelled_class(Roby::Tasks, name, 'Roby task')
     end
     # Rock's Ruby bindings of Eigen (Eigen::Vector3.new(1, 2, 3)).
-    Eigen = not_modelled_namespace('Eigen', %i[Vector3 Quaternion Isometry3 AngleAxis MatrixX VectorX Affine3])
+    Eigen = not_modelled_namespace('Eigen', %i[Vector3 Quaternion Isometry3 AngleAxis MatrixX VectorX Affine3],
+                                   values: true)
     Roby.const_set(:Schedulers, Module.new)
     not_modelled_class(Roby::Schedulers, :Temporal, 'Roby scheduler')
     Roby.const_set(:Actions, Module.new)
@@ -184,6 +194,9 @@ module Syskit
     not_modelled_class(Roby::Interface, :CommandLibrary, 'Roby command library')
   end
 end
+
+# Uses NotModelledCalls and IgnoredNamespace above.
+require 'syskit/compat/orocos'
 
 Syskit::TaskContext.extend(Syskit::Compat::TaskStatements)
 Syskit::Composition.extend(Syskit::Compat::TaskStatements)

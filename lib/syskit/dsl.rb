@@ -21,11 +21,18 @@ module Syskit
 
       # A Ruby library of Rock's runtime that is not installed here is not
       # modelled: requiring it is a warning, and the file goes on loading.
+      # A file another bundle's file of the same name shadows is loaded
+      # (see DSL.require_shadowed); common_models' old name is mapped (see
+      # Compat::OldCommonModels).
       def require(name)
-        super
+        super || DSL.require_shadowed(name)
       rescue LoadError
-        return false if Compat.provided_library?(name)
-        raise unless Syskit.app && Compat.runtime_library?(name)
+        return Compat.require_provided(name) if Compat.provided_library?(name)
+        raise unless Syskit.app
+
+        old = Compat::OldCommonModels
+        return old.require_instead(name, Location.of_caller) if old.require_path?(name)
+        raise unless Compat.runtime_library?(name)
 
         Syskit.app.not_modelled("the Ruby library '#{name}' (part of Rock's runtime)", Location.of_caller)
         false
@@ -37,9 +44,19 @@ module Syskit
     module ModuleStatements
       include TopLevelStatements
 
-      # +data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+
-      def data_service_type(name, &)
-        Models::DataServiceModel.define(self, name, location: Location.of_caller, root: Syskit::DataService, &)
+      # +data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+;
+      # +parent:+ gives a service model whose class (a
+      # Syskit::Models::DataServiceModel subclass) and API to use.
+      def data_service_type(name, parent: Syskit::DataService, &block)
+        location = Location.of_caller
+        unless parent.is_a?(Models::DataServiceModel) && !parent.is_a?(Models::DeviceModel)
+          raise DeclarationError.new("parent: expects a data service model, got #{parent.inspect}",
+                                     location: location,
+                                     hint: 'pass a model declared with data_service_type, or an instance of a ' \
+                                           'Syskit::Models::DataServiceModel subclass')
+        end
+
+        Models::DataServiceModel.define(self, name, location: location, root: parent, model_class: parent.class, &block)
       end
 
       # +device_type 'F9' do provides ... end+; +parent:+ gives a device model
@@ -91,6 +108,22 @@ module Syskit
         raise DeclarationError.new("#{self}::#{name} is already defined and is not a profile",
                                    location: location, hint: 'give the profile another name')
       end
+    end
+
+    # Ruby's require takes +name+ as loaded when any directory of the load
+    # path has a loaded file under that name: with several bundles on the
+    # load path, rock_auv's 'models/services/controller' counts as loaded
+    # once the rock bundle's models/services/controller.rb is. The file the
+    # load path finds first is what the user means: it is loaded then.
+    def self.require_shadowed(name)
+      app = Syskit.app
+      return false unless app && !File.absolute_path?(name.to_s)
+
+      _, path = $LOAD_PATH.resolve_feature_path(name.to_s)
+      return false unless path && app.environment_file?(path)
+      return false if $LOADED_FEATURES.include?(path) || $LOADED_FEATURES.include?(File.realpath(path))
+
+      Kernel.require(path)
     end
 
     def self.app!

@@ -67,9 +67,9 @@ module Syskit
     end
   end
 
-  # An invalid value given to a device attribute (a CAN filter that can
-  # never match): a Syskit error that is also an ArgumentError, as Rock's
-  # tests expect (+assert_raises(ArgumentError) { dev.can_id(0xf, 0xe) }+).
+  # An invalid value given to a device attribute (a CAN id beyond 29
+  # bits): a Syskit error that is also an ArgumentError, as Rock's
+  # tests expect (+assert_raises(ArgumentError) { dev.can_id(...) }+).
   class InvalidArgument < ArgumentError
     include Reported
 

@@ -39,11 +39,15 @@ module Syskit
 
     attr_reader :name, :direction, :type
 
-    def initialize(name, direction, type, dynamic: false)
+    # +declared_type+: the type name as the declaration wrote it, when it is
+    # a typedef of +type+ (/base/commands/Joints for /base/samples/Joints).
+    def initialize(name, direction, type, dynamic: false, declared_type: nil)
       @name = name
       @direction = direction
       @type = type
       @dynamic = dynamic
+      declared = declared_type && Types::Registry.normalize(declared_type) unless declared_type.is_a?(Types::Type)
+      @declared_type = declared unless declared == type.name
     end
 
     def dynamic?
@@ -61,8 +65,18 @@ module Syskit
       type.name
     end
 
+    # The typedef name the port was declared with, when it is not the
+    # type's own name (Typelib shows only the latter); nil otherwise.
+    attr_reader :declared_type
+
+    # The type as users read it: the declared name too, when it differs
+    # (/base/commands/Joints (= /base/samples/Joints)).
+    def type_description
+      declared_type ? "#{declared_type} (= #{type.name})" : type.name
+    end
+
     def to_s
-      "#{direction} port '#{name}' (#{type.name})"
+      "#{direction} port '#{name}' (#{type_description})"
     end
   end
 
@@ -192,7 +206,7 @@ module Syskit
 
     # Accepted and recorded by oroGen, meaningless for planning.
     %i[needs_data_connection keep_last_written_value default_policy
-       triggered_on_update max_sizes task_trigger trigger_port triggered_once_per_update].each do |name|
+       triggered_on triggered_on_update max_sizes task_trigger trigger_port triggered_once_per_update].each do |name|
       define_method(name) { |*_args, **_kwargs| self }
     end
   end

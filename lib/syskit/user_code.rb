@@ -105,15 +105,27 @@ module Syskit
     end
 
     # For a constant of the app's models that its file was not required
-    # for: the require to add, which a spelling suggestion would hide.
+    # for: the require to add, which a spelling suggestion would hide. When
+    # that file failed to load, that error is the one to fix; when it is
+    # loaded, requiring it again changes nothing, and the spelling
+    # suggestion (MC200 for Mc200) is the hint.
     def require_hint(exception, location)
       return unless exception.instance_of?(NameError) && exception.name && location&.lineno.to_i.positive?
 
+      app = Syskit.app
       constant = constant_at(location, exception.name.to_s)
-      path = constant && Syskit.app&.file_defining(constant)
-      return unless path && File.expand_path("#{path}.rb", Syskit.app.root) != location.path
+      path = constant && app&.file_defining(constant)
+      return unless path && File.expand_path("#{path}.rb", app.root) != location.path
 
-      "#{constant} is defined in #{path}.rb, which this file does not require: add require '#{path}' at its top"
+      defining_file_hint(app, constant, path)
+    end
+
+    def defining_file_hint(app, constant, path)
+      if (failure = app.load_failure(path))
+        "#{constant} is defined in #{path}.rb, which failed to load (#{failure.to_s(app.root)}): fix that error first"
+      elsif !app.loaded_file?(path)
+        "#{constant} is defined in #{path}.rb, which this file does not require: add require '#{path}' at its top"
+      end
     end
 
     # The constant path written at +location+ that names +name+
@@ -133,6 +145,8 @@ module Syskit
       return not_a_task_model(receiver) if made_by_a_class_statement?(receiver)
 
       message = original_message(exception).sub(/ for #<[^>]*>\z/, '')
+      return [message, Compat::OldCommonModels.constant_hint] if old_common_models?(exception)
+
       [message, suggestion(exception, receiver) || missing_hint(exception)]
     end
 
@@ -185,6 +199,10 @@ module Syskit
 
     def corrections_hint(corrections)
       "did you mean #{corrections.map { |c| "'#{c}'" }.join(' or ')}?" unless corrections.nil? || corrections.empty?
+    end
+
+    def old_common_models?(exception)
+      exception.instance_of?(NameError) && exception.name == :Rock && !Object.const_defined?(:Rock)
     end
 
     def missing_hint(exception)

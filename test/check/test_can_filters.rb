@@ -86,6 +86,35 @@ module Syskit
         assert_equal(['models/profiles/base.rb', 12], warnings[0].location.to_a.then { |p, l| [p[/models.*/], l] })
       end
 
+      # A bus model of the app's own may store anything in can_id (its
+      # filter block decides): the checks judge only an id and a mask.
+      def test_a_can_id_that_is_not_an_id_and_a_mask_is_left_alone
+        bus = <<~RUBY
+          module MyApp
+            module Devices
+              com_bus_type 'Loose', message_type: '/canbus/Message' do
+                extend_attached_device_configuration do
+                  dsl_attribute(:can_id) { |*args| args }
+                end
+              end
+            end
+          end
+        RUBY
+        # No driver drives this bus: what the check reads is the robot.
+        app = load_app(my_app(<<~ROBOT, 'models/devices/loose.rb' => bus), problems: true)
+          com_bus Devices::Loose, as: 'bus0'
+          through 'bus0' do
+            device(Devices::TemperatureSensor, as: 'a').can_id(0x10, 1e400)
+            device(Devices::TemperatureSensor, as: 'b').can_id(0x10, 0x7ff, 3)
+            device(Devices::TemperatureSensor, as: 'c').can_id(0x1, 0xf)
+            device(Devices::TemperatureSensor, as: 'd').can_id(0x1, 0xf)
+          end
+        ROBOT
+        warnings = CanFilters.new(app.profiles.values.first.robot).warnings
+        assert_equal 1, warnings.size
+        assert_match(/device 'c' .* and device 'd' .* have overlapping filters/, warnings.first.message)
+      end
+
       def test_a_device_overlapping_devices_of_another_mask_is_one_warning
         robot = robot_of(bus_of(["device(Devices::TemperatureSensor, as: 'a').can_id(0x120, 0x7f0)",
                                  "device(Devices::TemperatureSensor, as: 'b').can_id(0x100, 0x700)",

@@ -38,7 +38,7 @@ module Syskit
       def test_a_frame_that_can_miss_its_deadline_is_an_error_at_its_declaration
         miss, load = timing_problems(PAPER)
         assert_equal [TimingError, at(4)], reported(miss)
-        assert_equal "frame 003 of c on bus 'can0' can miss its deadline: worst-case response time 3.5 ms, " \
+        assert_equal "frame 0x003 of c on bus 'can0' can miss its deadline: worst-case response time 3.5 ms, " \
                      'deadline 3.25 ms', miss.message
         assert_match(/syskit bus timing MyApp::Profiles::Base --bus can0 shows every frame/, miss.hint)
         assert_equal [Warning, at(0)], reported(load)
@@ -57,7 +57,7 @@ module Syskit
         RUBY
         assert_equal 1, problems.size, problems.map(&:message).inspect
         assert_equal [TimingError, at(0)], reported(problems.first)
-        assert_match(%r{bus 'can0' is loaded 101.0 % at 135 kbit/s: 2 of its frames \(from 002 down\) have no bounded},
+        assert_match(%r{bus 'can0' is loaded 101.0 % at 135 kbit/s: 2 of its frames \(from 0x002 down\) have no},
                      problems.first.message)
         assert_match(/raise the bitrate/, problems.first.hint)
       end
@@ -73,7 +73,7 @@ module Syskit
         RUBY
         assert_equal 1, problems.size, problems.map(&:message).inspect
         assert_equal [TimingError, at(3)], reported(problems.first)
-        assert_match(/frame 181 is declared by left and right on bus 'can0': two senders of one identifier break CAN arbitration \(the first is declared at .*base.rb:#{FIRST + 2}\)/, # rubocop:disable Layout/LineLength
+        assert_match(/frame 0x181 is declared by left and right on bus 'can0': two senders of one identifier break CAN arbitration \(the first is declared at .*base.rb:#{FIRST + 2}\)/, # rubocop:disable Layout/LineLength
                      problems.first.message)
       end
 

@@ -35,6 +35,23 @@ module Syskit
       refute Base.unknown?(1.0)
       assert Base.infinity?(Base.infinity)
       assert_empty app.problems.grep(NotModelled)
+      app.unload
+      refute Object.const_defined?(:Base, false), 'Base goes with the app'
+    end
+
+    def test_base_float_reopens_a_base_module_the_app_defines
+      files = { 'models/a_base.rb' => "module Base\n  OLD = 1\nend\n",
+                'models/values.rb' => "require 'base/float'\nmodule Rig\n  VALUES = [Base.unset].freeze\nend\n" }
+      load_app(rig_app(files))
+      assert Rig::VALUES.first.nan?
+      assert_equal 1, Base::OLD
+    end
+
+    def test_base_is_defined_by_requiring_base_float_only
+      # A profile named Base that fails to load must not resolve to Rock's
+      # ::Base in a test that names it.
+      load_app(rig_app({}))
+      refute Object.const_defined?(:Base, false)
     end
   end
 end

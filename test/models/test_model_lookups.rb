@@ -57,6 +57,20 @@ module Syskit
       assert_equal 'anonymous device', Syskit::Device.new_submodel.short_name
     end
 
+    # As Syskit's: short_name is to_s, whatever shows the model otherwise
+    # (a custom model class, a model given a to_s of its own).
+    def test_short_name_follows_to_s
+      srv = Syskit::DataService.new_submodel
+      srv.define_singleton_method(:to_s) { 'my_name' }
+      assert_equal 'my_name', srv.short_name
+      labelled = Class.new(Models::DeviceModel) { def to_s = "labelled #{name}" }
+      assert_equal 'labelled Probe', labelled.new(name: 'Probe').short_name
+      task = OroGen.imu.Task
+      assert_equal 'imu::Task', task.short_name
+      task.define_singleton_method(:to_s) { 'the IMU driver' }
+      assert_equal 'the IMU driver', task.short_name
+    end
+
     def test_new_submodel_provides_its_model_and_evaluates_the_block
       camera = MyApp::Devices::Camera.new_submodel(name: 'Thermal') { output_port 'image', '/double' }
       assert_instance_of Models::DeviceModel, camera

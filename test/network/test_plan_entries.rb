@@ -17,8 +17,8 @@ module Syskit
 
       def test_an_unknown_field_is_an_error_that_lists_the_fields
         error = assert_raises(ArgumentError) { Plan::Port.with(name: 'out', kind: 'output') }
-        assert_equal 'Syskit::Network::Plan::Port has no kind; its fields are name, direction, type, dynamic',
-                     error.message
+        assert_equal 'Syskit::Network::Plan::Port has no kind; its fields are name, direction, type, dynamic, ' \
+                     'declared_type', error.message
       end
     end
   end

@@ -105,7 +105,7 @@ module Syskit
           data_service_type('Frames') { output_port 'frame', ro_ptr('/base/samples/frame/Frame') }
         end
       RUBY
-      assert_predicate app.types.find('/base/samples/RigidBodyState'), :opaque?
+      assert_same app.types.find('/base/samples/RigidBodyState'), MyApp::Poses.ports['poses'].type.element
       assert_equal '/RTT/extras/ReadOnlyPointer</base/samples/frame/Frame>', MyApp::Frames.ports['frame'].type.name
     end
 

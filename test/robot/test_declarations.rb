@@ -109,18 +109,35 @@ module Syskit
       assert_empty app.problems.grep(NetworkError)
     end
 
-    def test_can_id_that_can_never_match
+    # SPEC 1: can_id stores what it is given (the seed's own test sets
+    # can_id(10, 20)); a filter no frame can pass is a check warning at
+    # the line that sets it.
+    def test_can_id_that_can_never_match_is_stored_and_a_check_warning
       robot = <<~RUBY
         com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
         through 'can0' do
-          device(Devices::TemperatureSensor, as: 't')
+          device(Devices::TemperatureSensor, as: 't').prefer_deployed_tasks('t')
             .can_id(0x1234, 0x00ff)
+          device(Devices::TemperatureSensor, as: 'u').can_id(0x34, 0xff).prefer_deployed_tasks('u')
         end
       RUBY
-      error, root = problem(robot)
-      assert_reported error, Regexp.new('can_id\(4660, 255\) on device \'t\': this filter can never match: ' \
-                                        'id 0x1234 has bits outside mask 0xFF'),
-                      at: 'models/profiles/base.rb:12', hint: /can_id takes \(id, mask = \.\.\.\)/, root: root
+      root = my_app(robot, 'config/robots/default.rb' => <<~RUBY)
+        using_task_library 'temp'
+        Syskit.conf.use_deployment 'test_canbus'
+        Syskit.conf.use_deployment OroGen.temp.Task => 't'
+        Syskit.conf.use_deployment OroGen.temp.Task => 'u'
+      RUBY
+      load_app(root)
+      assert_equal [0x1234, 0xff], MyApp::Profiles::Base.t_dev.device.can_id
+      @loaded_apps.pop.unload
+      out, = run_cli('check', '--app', root)
+      assert_match(Regexp.new("^models/profiles/base.rb:12: warning: device 't' on bus 'can0' has a filter that can " \
+                              'never match \(id 0x1234 mask 0xFF\): the id has bits outside the mask ' \
+                              '\(id & mask = 0x34\), so no frame reaches it\n  hint: .*e.g. can_id\(0x1234, 0x12FF\)$'),
+                   out)
+      # It receives no frame, so it overlaps no other device.
+      refute_match(/overlapping/, out)
+      assert_match(/0 error\(s\), 1 warning\(s\)/, out)
     end
 
     def test_can_id_beyond_29_bits

@@ -42,6 +42,10 @@ module Syskit
           dynamic_service MyApp::Devices::Camera, as: 'export' do
             driver_for MyApp::Devices::Camera, 'image' => "\#{options.fetch(:prefix, name)}_export"
           end
+          dynamic_service MyApp::Devices::Camera, as: 'mirror' do
+            provides MyApp::Devices::Camera, as: name, slave_of: options.fetch(:of, 'stereo'),
+                                             'image' => "\#{name}_export"
+          end
 
           def configure
             super
@@ -175,6 +179,42 @@ module Syskit
       dynamic = task.ports.select(&:dynamic).map { |p| [p.name, p.direction, p.type] }
       assert_equal [%w[rear_export output /double], %w[roof_export output /double]], dynamic
       assert_equal 2, task.properties['exported']
+    end
+
+    # Syskit's form: provides M, as: name, slave_of: 'driver' in the block.
+    def test_a_dynamic_service_block_names_the_service_its_instance_is_a_slave_of
+      load_robot("device(Devices::Stereo, as: 'cam').slave('mirror', as: 'rear')\n")
+      task = Network::Generator.plan_profile(@app, MyApp::Profiles::Base.syskit_profile).tasks.first
+      rear = task.find_device_attached_to('stereo').slave('rear')
+      assert_equal 'stereo.rear', rear.service.full_name
+      assert_same rear, task.find_device_attached_to(rear.service)
+      assert_equal({ 'image' => 'rear_export' }, rear.service.port_mappings)
+    end
+
+    def test_slave_of_a_service_the_task_does_not_have_in_a_dynamic_service_block
+      error = load_robot("device(Devices::Stereo, as: 'cam').slave('mirror', as: 'rear', of: 'stereoo')\n")
+      assert_reported error, /slave_of: 'stereoo' in dynamic service 'mirror' names no service of stereo::Task \(did /,
+                      at: 'models/orogen/stereo.rb:11', hint: /its services: stereo, stereo.clock, stereo.left/,
+                      root: @root
+      assert_match(/did you mean 'stereo'\?/, error.message)
+    end
+
+    # As in Syskit, a device's slaves exist, bound to the driver's slave
+    # services, from the device's declaration on: in the robot block,
+    # before anything is generated.
+    def test_slaves_are_bound_as_the_device_is_declared
+      assert_nil load_robot(<<~RUBY)
+        cam = device(Devices::Stereo, as: 'cam')
+        cam.left_dev.period(0.05)
+        clock = cam.slave('clock')
+        clock.doc("\#{clock.service.full_name}: \#{clock.each_fullfilled_model.map(&:to_s).join(', ')}")
+        device(Devices::Stereo, as: 'other', using: OroGen.stereo.Task).right_dev.doc('chained')
+      RUBY
+      robot = MyApp::Profiles::Base.syskit_profile.robot
+      assert_equal 0.05, robot.find_device('cam.left').period
+      assert_equal 'stereo.clock: MyApp::Devices::Clock, Syskit::DataService', robot.find_device('cam.clock').doc
+      assert_equal 'chained', robot.find_device('other.right').doc
+      assert_equal %w[left right clock], robot.find_device('other').each_slave.map(&:name)
     end
 
     def test_a_dynamic_service_the_driver_does_not_have

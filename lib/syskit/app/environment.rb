@@ -66,6 +66,7 @@ module Syskit
         constants.each_key { |c| Object.send(:remove_const, c) if Object.const_defined?(c, false) }
         $LOADED_FEATURES.reject! { |f| owned_file?(f) }
         (@first + @last).each { |dir| $LOAD_PATH.delete(dir) }
+        Models::DataServiceModel.forget_submodels_of_roots
         Syskit.app = nil
         @active = false
       end

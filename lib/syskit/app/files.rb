@@ -93,6 +93,7 @@ module Syskit
         UserCode.guard(path: path, root: root) do
           TOPLEVEL_BINDING.eval(modules.empty? ? source : "#{prefix} #{source}#{suffix}", path, 1)
         rescue Exception => e # rubocop:disable Lint/RescueException -- re-raised, to the guard
+          record_failure(path, e)
           mark_loaded(e)
           raise
         end
@@ -101,14 +102,41 @@ module Syskit
       # Ruby forgets a required file that raised, so a later require would
       # evaluate it again and report what follows from its first half
       # ("already defined"): the app's files the error went through stay
-      # loaded.
+      # loaded, and remember that they failed.
       def mark_loaded(exception)
         (exception.backtrace_locations || []).each do |loc|
           file = loc.absolute_path || loc.path
           next unless loc.label == '<top (required)>' && environment_file?(file) && File.file?(file)
 
+          record_failure(file, exception)
           names_of(file).each { |name| $LOADED_FEATURES << name unless $LOADED_FEATURES.include?(name) }
         end
+      end
+
+      def record_failure(file, exception)
+        (@load_failures ||= {})[File.realpath(file)] ||= Location.of_exception(exception)
+      end
+
+      public
+
+      # Where the error was that stopped the file +require_path+ (of the app
+      # or a bundle: 'models/compositions/control/generator') from loading,
+      # or nil when it did not fail.
+      def load_failure(require_path)
+        return unless @load_failures
+
+        bundle_files(require_path).lazy.filter_map { |file| @load_failures[File.realpath(file)] }.first
+      end
+
+      # Whether the file +require_path+ of the app or a bundle is loaded.
+      def loaded_file?(require_path)
+        bundle_files(require_path).any? { |file| names_of(file).any? { |name| $LOADED_FEATURES.include?(name) } }
+      end
+
+      private
+
+      def bundle_files(require_path)
+        bundle_roots.map { |root| File.join(root, "#{require_path}.rb") }.select { |file| File.file?(file) }
       end
 
       # The names Ruby's require may know +file+ by: its real path and its

@@ -88,7 +88,7 @@ module Syskit
         TimingError.new(
           "#{bus} is loaded #{CAN::Timing::Format.percent(result.utilization)} at " \
           "#{CAN::Timing::Format.bitrate(bus.bitrate)}: #{unbounded.size} of its frames (from " \
-          "#{unbounded.first.frame.hex_id} down) have no bounded response time",
+          "0x#{unbounded.first.frame.hex_id} down) have no bounded response time",
           location: bus.bitrate_location,
           hint: 'a CAN bus carries less than 100 %: raise the bitrate, lengthen periods or move frames to another bus'
         )

@@ -13,20 +13,28 @@ module Syskit
     #
     # A file without a header starts with the 'default' section. Sections are
     # read with safe YAML only (no Ruby objects, no aliases).
+    #
+    # A header holds option:value words, as Rock's loader reads them:
+    # +name:x+, +merge:true+ (the section is merged into the one of the same
+    # name that a bundle's file declares, instead of replacing it) and
+    # +chain:a,b+ (the sections a and b, declared before, merged into this
+    # one, their values winning, as in Rock). Anything else on a header
+    # line, a comment included, is refused as Rock's loader refuses it.
     class ConfFile
-      # A section header, with an optional comment after it. A line that
-      # starts like a header but is not one is refused, never taken as data.
-      HEADER = /\A---\s*name:\s*(\S*)\s*(?:#.*)?\Z/
-      HEADER_LIKE = /\A---\s*name\b/
+      # A section header: any line that starts with ---.
+      HEADER = /\A---/
+      HEADER_OPTIONS = %w[name merge chain].freeze
 
-      # One section: its values and the line of its header.
-      Section = Struct.new(:name, :settings, :line, :text)
+      # One section: its values, the file and line of its header, its text.
+      Section = Struct.new(:name, :settings, :line, :text, :path)
 
       attr_reader :path, :sections
 
-      def initialize(path)
+      # +base+: the file of the same task in a bundle this app uses, whose
+      # sections this file's replace (or merge into, with merge:true).
+      def initialize(path, base: nil)
         @path = path
-        @sections = {}
+        @sections = base ? base.sections.dup : {}
         parse(UserFile.read(path))
       end
 
@@ -57,7 +65,7 @@ module Syskit
         return Location.new(path, 1) unless section
 
         offset = section.text.lines.index { |l| l.match?(/^#{Regexp.escape(key.to_s)}\s*:/) }
-        Location.new(path, section.line + 1 + offset.to_i)
+        Location.new(section.path, section.line + 1 + offset.to_i)
       end
 
       # The section among +names+ whose value of +key+ is the one applied.
@@ -74,43 +82,93 @@ module Syskit
       private
 
       def parse(text)
-        current = ['default', 1, []]
+        current = [{ 'name' => 'default' }, 1, []]
         chunks = []
         text.each_line.with_index(1) do |line, lineno|
-          if (m = line.match(HEADER))
+          if line.match?(HEADER)
             chunks << current
-            current = [header_name(m[1], lineno), lineno, []]
-          elsif line.match?(HEADER_LIKE)
-            raise bad_header(line, lineno)
+            current = [header_options(line, lineno), lineno, []]
           else
             current[2] << line
           end
         end
         chunks << current
         chunks.shift if chunks.first[2].all? { |l| l.strip.empty? || l.strip.start_with?('#') } && chunks.size > 1
-        chunks.each { |name, line, lines| add_section(name, line, lines.join) }
+        # As in Rock, the first section is 'default' when its header has no name.
+        chunks.first[0]['name'] ||= 'default'
+        declared = {}
+        chunks.each { |options, line, lines| add_section(options, line, lines.join, declared) }
       end
 
-      def header_name(name, lineno)
-        return name unless name.empty?
+      # The options of a header line: name:x merge:true chain:a,b.
+      def header_options(line, lineno)
+        options = {}
+        line.chomp.delete_prefix('---').split(/\s+/).reject(&:empty?).each do |word|
+          key, value = word.match(/\A(\w+):(\S*)\z/)&.captures
+          raise bad_header_word(word, lineno) unless key && HEADER_OPTIONS.include?(key)
 
-        raise ConfigurationError.new('this section header has no name',
-                                     location: Location.new(path, lineno), hint: 'write --- name:section_name')
+          options[key] = value
+        end
+        options
       end
 
-      def bad_header(line, lineno)
-        ConfigurationError.new("'#{line.strip}' is not a section header",
-                               location: Location.new(path, lineno),
-                               hint: 'a section starts with --- name:section_name (a comment may follow after #)')
+      def bad_header_word(word, lineno)
+        hint = if word.start_with?('#')
+                 'Rock\'s loader takes no comment on a header line: put it on the line above'
+               else
+                 'a header holds name:section_name, and optionally merge:true and chain:other,sections'
+               end
+        ConfigurationError.new("'#{word}' on a section header is not one of its options (name:, merge:, chain:)",
+                               location: Location.new(path, lineno), hint: hint)
       end
 
-      def add_section(name, line, text)
-        if (other = sections[name])
-          raise ConfigurationError.new("section '#{name}' is declared twice (first at line #{other.line})",
-                                       location: Location.new(path, line), hint: 'merge the two sections')
+      def add_section(options, line, text, declared)
+        location = Location.new(path, line)
+        name = header_name(options['name'], location)
+        if (other = declared[name])
+          raise ConfigurationError.new("section '#{name}' is declared twice (first at line #{other})",
+                                       location: location, hint: 'merge the two sections')
         end
 
-        sections[name] = Section.new(name, load_yaml(text, line), line, text)
+        declared[name] = line
+        settings = ConfFile.deep_merge(load_yaml(text, line), chained(options['chain'], location))
+        settings = ConfFile.deep_merge(sections[name].settings, settings) if merge?(options['merge'], location) &&
+                                                                             sections[name]
+        sections[name] = Section.new(name, settings, line, text, path)
+      end
+
+      def header_name(name, location)
+        return name unless name.nil? || name.empty?
+
+        raise ConfigurationError.new('this section header has no name',
+                                     location: location, hint: 'write --- name:section_name')
+      end
+
+      def merge?(value, location)
+        return false if value.nil? || value == 'false'
+        return true if value == 'true'
+
+        raise ConfigurationError.new("merge:#{value} on a section header: merge is true or false",
+                                     location: location, hint: 'write merge:true, or leave merge out')
+      end
+
+      # The sections a chain: option names, merged in order (declared before
+      # this header, in this file or in a bundle's).
+      def chained(value, location)
+        return {} if value.nil?
+
+        value.split(',').reduce({}) do |merged, name|
+          section = sections[name]
+          unless section
+            raise ConfigurationError.new(
+              "chain:#{value} names the section '#{name}', which is not declared before this header" \
+              "#{Naming.did_you_mean(name, section_names)}",
+              location: location, hint: "declare '--- name:#{name}' above this section"
+            )
+          end
+
+          ConfFile.deep_merge(merged, section.settings)
+        end
       end
 
       def load_yaml(text, header_line)

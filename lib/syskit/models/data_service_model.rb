@@ -2,6 +2,7 @@
 
 require 'syskit/port'
 require 'syskit/models/provided_ports'
+require 'syskit/models/model_hierarchy'
 
 module Syskit
   # The plain model objects the DSL records declarations into.
@@ -12,10 +13,9 @@ module Syskit
     # Models are modules so that assigning one to a constant names it, as Ruby
     # does for any module (+Device = DeviceModel.new+ is then called Device).
     class DataServiceModel < Module
+      include ModelHierarchy
+
       attr_reader :ports, :parents, :declared_at
-      # MetaRuby's mark of the root of a hierarchy of models, which custom
-      # model classes of Rock's bundles set; recorded.
-      attr_accessor :root
       attr_accessor :doc
 
       # The word used for this kind of model in messages.
@@ -39,10 +39,16 @@ module Syskit
           return redeclare(existing, "#{namespace}::#{name}", model_class, location, **options, &block)
         end
 
-        model = model_class.new(location: location)
-        namespace.const_set(name, model)
+        model = model_class.build(location: location, name: namespace.name ? "#{namespace}::#{name}" : name)
         Models.register_model(model)
-        model.send(:declare, root, options, block)
+        begin
+          model.send(:declare, root, options, block)
+        ensure
+          # As MetaRuby does, the constant names the model once its block
+          # has run: a name in the block means what it meant before. It is
+          # set when the block fails too, so that what follows finds it.
+          namespace.const_set(name, model) unless namespace.const_defined?(name, false)
+        end
       end
 
       # A model declared again: the gem's bundled common models give way to
@@ -95,13 +101,6 @@ module Syskit
         self
       end
 
-      # A new model of this one's class that provides this one, as Syskit's
-      # +Device.new_submodel(name: 'Camera') { output_port ... }+: for
-      # models made in Ruby rather than with a statement (tests, stubs).
-      def new_submodel(name: nil, **options, &block)
-        self.class.new(location: Location.of_caller, name: name).send(:declare, self, options, block)
-      end
-
       # Options of the declaration statement, applied once the model is named.
       def apply_options(**options)
         return if options.empty?
@@ -123,8 +122,12 @@ module Syskit
         name || "anonymous #{self.class.kind}"
       end
       alias inspect to_s
-      # The name shown to users (Syskit's name for it on every model).
-      alias short_name to_s
+
+      # The name shown to users: #to_s, as Syskit's models have it, so that
+      # a model class that shows its models otherwise is shown so everywhere.
+      def short_name
+        to_s
+      end
 
       def kind
         self.class.kind
@@ -190,8 +193,6 @@ module Syskit
         fullfilled_models.include?(model)
       end
       alias fulfills? fullfills?
-      # Syskit's name on services: whether it is or provides +model+.
-      alias provides? fullfills?
 
       # Adds the port +port+ and its reader (+pose_port+, as Syskit's models
       # have), unless a method of that name exists.
@@ -200,6 +201,12 @@ module Syskit
         reader = "#{port.name}_port"
         define_singleton_method(reader) { find_port(port.name) } unless respond_to?(reader)
         port
+      end
+
+      # Whether this model provides +model+, directly or not (Syskit's
+      # +provides?+: a model does not provide itself).
+      def provides?(model)
+        !equal?(model) && fullfills?(model)
       end
 
       # This model and every model it provides, in the order Syskit lists
@@ -241,6 +248,7 @@ module Syskit
       # declaration block.
       def declare(root, options, block)
         apply_options(**options)
+        made_from(root)
         provides(root) unless equal?(root)
         instance_eval(&block) if block
         finalize_declaration
@@ -255,7 +263,7 @@ module Syskit
                                      location: location, hint: 'give each port its own name')
         end
 
-        port = add_port_entry(Port.new(name, direction, Models.resolve_type(type, location)))
+        port = add_port_entry(Port.new(name, direction, Models.resolve_type(type, location), declared_type: type))
         PortModifiers.new(port)
       end
 

@@ -37,6 +37,12 @@ module Syskit
         cached(:slave_services) { services.values.reject(&:master?).freeze }
       end
 
+      # Whether the devices this task drives may have slave devices: it has
+      # slave services, or dynamic services to make them from.
+      def serves_slaves?
+        cached(:serves_slaves) { !slave_services.empty? || !dynamic_service_names.empty? }
+      end
+
       # Those of {#driver_services} that can drive a device of +device_model+:
       # the service's device model must be it or provide it.
       def driver_services_for(device_model)

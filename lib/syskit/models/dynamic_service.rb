@@ -68,12 +68,16 @@ module Syskit
         end
 
         # Provides +model+ (the dynamic service's model or one providing it)
-        # as this instance, its ports mapped by +mappings+.
-        def provides(model, mappings = {}, as: nil, **more)
+        # as this instance, its ports mapped by +mappings+. +slave_of:+
+        # names the service of the task it is a slave of, as Syskit writes
+        # it (+provides Link, as: name, slave_of: 'driver'+): the instance
+        # is then known as +driver.name+.
+        def provides(model, mappings = {}, as: nil, slave_of: nil, **more)
           location = Location.of_caller
           check(model, as, location)
+          master = master_service(slave_of, location) if slave_of
           mapper = PortMapper.new(component_model, model, mappings.merge(more), location, dynamic: true)
-          @service = BoundService.new(component_model, name, model, mapper.map, location)
+          @service = BoundService.new(component_model, name, model, mapper.map, location, master: master)
           @created_ports = mapper.created
           @service
         end
@@ -85,6 +89,19 @@ module Syskit
         end
 
         private
+
+        def master_service(slave_of, location)
+          full_name = slave_of.respond_to?(:full_name) ? slave_of.full_name : slave_of.to_s
+          found = component_model.find_service(full_name)
+          return found if found
+
+          known = component_model.services.keys.sort
+          raise DeclarationError.new(
+            "slave_of: '#{full_name}' in dynamic service '#{@dynamic.name}' names no service of " \
+            "#{component_model.name}#{Naming.did_you_mean(full_name, known)}",
+            location: location, hint: known.empty? ? 'leave slave_of: out' : "its services: #{known.join(', ')}"
+          )
+        end
 
         def check(model, as, location)
           if @service

@@ -7,8 +7,12 @@ module Syskit
     # +dynamic_service+ on task models (see DynamicService).
     module DynamicServices
       # Declares a dynamic service of +model+ named +as+; the block declares
-      # each instance (see DynamicService).
-      def dynamic_service(model, as: nil, &block)
+      # each instance (see DynamicService). Syskit's +dynamic:+,
+      # +remove_when_unused:+ and +addition_requires_reconfiguration:+ say
+      # when a running component is reconfigured: accepted, no effect on a
+      # plan.
+      def dynamic_service(model, as: nil, dynamic: false, remove_when_unused: true, # rubocop:disable Lint/UnusedMethodArgument
+                          addition_requires_reconfiguration: true, &block) # rubocop:disable Lint/UnusedMethodArgument
         location = Location.of_caller
         unless model.is_a?(DataServiceModel) && as && block
           raise DeclarationError.new(
@@ -22,6 +26,7 @@ module Syskit
                                      location: location, hint: "give this one another name with as: 'other_name'")
         end
 
+        ComponentModel.declarations_changed
         (@dynamic_services ||= {})[as.to_s] = DynamicService.new(self, as.to_s, model, block, location)
       end
 

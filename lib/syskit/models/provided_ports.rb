@@ -33,7 +33,9 @@ module Syskit
           end
           [port.name, name]
         end
-        added.each { |port| @model.add_port_entry(Port.new(port.name, port.direction, port.type)) }
+        added.each do |port|
+          @model.add_port_entry(Port.new(port.name, port.direction, port.type, declared_type: port.declared_type))
+        end
         mapping
       end
 

@@ -8,25 +8,47 @@ module Syskit
       # Declares a task argument, readable in configure as a method of the
       # task: +argument :port, default: '/dev/ttyS0'+. Profiles set
       # arguments through compositions, which are not modelled: every
-      # task has its arguments' defaults.
-      def argument(name, default: nil, doc: nil) # rubocop:disable Lint/UnusedMethodArgument -- Syskit's signature
+      # task has its arguments' defaults. An argument declared without a
+      # default is required, as in Syskit: reading it unset is an error
+      # that says how to set it.
+      def argument(name, default: NO_DEFAULT, doc: nil) # rubocop:disable Lint/UnusedMethodArgument -- Syskit's signature
+        location = Location.of_caller
         name = name.to_sym
         if name.end_with?('_dev') || !name.match?(/\A[a-z_]\w*\z/)
           raise DeclarationError.new("'#{name}' is not a valid argument name",
-                                     location: Location.of_caller,
-                                     hint: 'arguments are lower-case names not ending in _dev')
+                                     location: location, hint: 'arguments are lower-case names not ending in _dev')
         end
 
-        (@argument_defaults ||= {})[name] = default
-        define_method(name) { arguments.fetch(name) { self.class.argument_defaults[name] } }
+        (@argument_declarations ||= {})[name] = [default, location]
+        define_method(name) { arguments.fetch(name) { self.class.argument_default(name, Location.of_caller) } }
         name
       end
 
-      # Default values of the arguments declared with {#argument}, inherited ones included.
-      def argument_defaults
-        inherited = superclass.respond_to?(:argument_defaults) ? superclass.argument_defaults : {}
-        inherited.merge(@argument_defaults || {})
+      # What +argument+ is when it is not set: its default, or an error
+      # at +location+ (where configure reads it) when it has none.
+      def argument_default(name, location)
+        default, declared_at = argument_declarations.fetch(name)
+        return default unless default.equal?(NO_DEFAULT)
+
+        raise ConfigureMethodError.new(
+          "argument '#{name}' of #{self.name} is not set (declared at #{declared_at})",
+          location: location, hint: "pass it with with_arguments(#{name}: ...), or give it a default"
+        )
       end
+
+      # Default values of the arguments declared with {#argument}, inherited
+      # ones included (nil for a required argument).
+      def argument_defaults
+        argument_declarations.transform_values { |default, _| default.equal?(NO_DEFAULT) ? nil : default }
+      end
+
+      def argument_declarations
+        inherited = superclass.respond_to?(:argument_declarations) ? superclass.argument_declarations : {}
+        inherited.merge(@argument_declarations || {})
+      end
+
+      # The default of an argument declared without one.
+      NO_DEFAULT = Object.new.freeze
     end
   end
 end

@@ -33,6 +33,11 @@ module Syskit
         name
       end
 
+      # The name shown to users: #to_s, as Syskit's models have it.
+      def short_name
+        to_s
+      end
+
       def inspect
         name
       end

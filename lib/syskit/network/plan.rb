@@ -19,7 +19,9 @@ module Syskit
       # (empty when the spec does not declare it).
       Operation = Struct.new(:name, :arguments, :argument_names)
       # A port of a task; dynamic ports are created at configure time.
-      Port = Struct.new(:name, :direction, :type, :dynamic)
+      # +declared_type+: the typedef name the port was declared with, when
+      # it is not +type+ (nil otherwise).
+      Port = Struct.new(:name, :direction, :type, :dynamic, :declared_type)
       # One end of a connection.
       Endpoint = Struct.new(:task, :port)
       # A connection and its policy ({'type' => 'buffer', 'size' => n} or {'type' => 'data'}).
@@ -152,7 +154,8 @@ module Syskit
       end
 
       def port_hash(port)
-        { 'name' => port.name, 'direction' => port.direction, 'type' => port.type, 'dynamic' => port.dynamic }
+        hash = { 'name' => port.name, 'direction' => port.direction, 'type' => port.type, 'dynamic' => port.dynamic }
+        port.declared_type ? hash.merge('declared_type' => port.declared_type) : hash
       end
 
       def device_hash(device)

@@ -162,7 +162,8 @@ module Syskit
         DIRECTIONS = { input: 'input', output: 'output' }.freeze
 
         def port_entry(port)
-          Port.new(port.name, DIRECTIONS.fetch(port.direction), port.type.name, port.dynamic?).freeze
+          Port.new(port.name, DIRECTIONS.fetch(port.direction), port.type.name, port.dynamic?,
+                   port.declared_type).freeze
         end
 
         def connection_entry(conn)

@@ -9,9 +9,7 @@ module Syskit
       module_function
 
       def device_model(base)
-        model = base.class.new(name: "stub #{base.name || 'device'}")
-        model.provides(base)
-        model
+        base.new_submodel(name: "stub #{base.name || 'device'}")
       end
 
       # A driver for +model+, with the ports of the model.

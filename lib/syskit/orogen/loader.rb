@@ -69,6 +69,19 @@ module Syskit
         @libraries.each_value { |lib| lib.tasks.each_value(&block) }
       end
 
+      # The drivers of each device model among the task models loaded so
+      # far, for what needs them while files are still being loaded (the
+      # slaves of a device, bound as it is declared). Made again once a
+      # library is loaded or a task model gains a service; the app settles
+      # every device's driver with an index of its own once all is loaded.
+      def current_driver_index
+        key = [@libraries.size, Models::ComponentModel.declarations_version]
+        return @driver_index if @driver_index_key == key
+
+        @driver_index_key = key
+        @driver_index = Robot::DriverIndex.new(self)
+      end
+
       def register_deployment(library, deployment)
         if (existing = @deployments[deployment.name])
           raise SpecError.new("deployment '#{deployment.name}' is already declared at #{existing.declared_at}",

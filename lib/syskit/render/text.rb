@@ -171,7 +171,9 @@ module Syskit
       end
 
       def port_text(port, out)
-        out << port.name << '  ' << port.direction << ' ' << port.type
+        out << port.name << '  ' << port.direction << ' '
+        out << port.declared_type << ' (= ' << port.type << ')' if port.declared_type
+        out << port.type unless port.declared_type
         port.dynamic ? out << ' (dynamic)' : out
       end
 

@@ -93,6 +93,8 @@ module Syskit
         @devices[name] = device
         attach(device, bus, location: location, **options) if bus
         profile&.define_device_action(device)
+        driver = declared_driver(device)
+        device.bind_slaves_early(driver) if driver
         device
       end
 
@@ -137,6 +139,24 @@ module Syskit
       end
 
       private
+
+      # The driver of +device+ as far as it is known while the device is
+      # declared: +using:+, else the one driver of its model loaded so far.
+      # Its slaves are bound to it right away, as Syskit does; the app
+      # settles the driver once everything is loaded (DriverIndex).
+      def declared_driver(device)
+        return unless device.model_resolved?
+
+        drivers = device.using ? [device.using] : loaded_drivers(device.model)
+        driver = drivers.first if drivers.size == 1
+        # Most drivers serve no slaves: nothing to bind then.
+        driver if driver&.serves_slaves? && !driver.driver_services_for(device.model).empty?
+      end
+
+      def loaded_drivers(model)
+        app = Syskit.app
+        app ? app.orogen.current_driver_index.drivers_for(model) : []
+      end
 
       # The class for a device of +model+ on +bus+: one that already includes
       # the configuration modules they add, when they are known now.

@@ -183,7 +183,19 @@ module Syskit
                   (args.size == 1 ? args.first : args)
                 end
         dsl_attributes[attr] = value
+        # The frame that called the attribute's method: kept as Ruby gives
+        # it (a 10,000-device robot sets 10,000 can_ids), made a Location
+        # only when a check reports on the value.
+        (@dsl_attribute_frames ||= {})[attr] = caller_locations(2, 1).first
         self
+      end
+
+      # Where the attribute +attr+ was last set (the user's +.can_id(...)+
+      # line), for the checks that judge its value; else where the device
+      # is declared.
+      def dsl_attribute_location(attr)
+        frame = @dsl_attribute_frames&.[](attr)
+        frame && Location.user_frame?(frame) ? Location.from(frame) : declared_at
       end
 
       # The value of an attribute called without arguments. In the robot

@@ -35,13 +35,36 @@ module Syskit
       # slave_of: 'stereo'+), registered when the driver is known. With
       # +as:+, +name+ is a dynamic service of the driver and the slave
       # +as+ is made from it, with +options+ for its block.
+      #
+      # When the driver is known as the device is declared, the slave is
+      # bound to its service right away (see #bind_slaves_early).
       def slave(name, as: nil, **options)
         location = Location.of_caller
         if as
-          dynamic_slave(name.to_s, as.to_s, options, location)
+          early_bind(dynamic_slave(name.to_s, as.to_s, options, location))
+        elsif (existing = find_slave(name))
+          existing.claim(location)
         else
-          find_slave(name) || register_slave(SlaveDevice.new(self, check_slave_name(name.to_s, location),
-                                                             location: location))
+          early_bind(register_slave(SlaveDevice.new(self, check_slave_name(name.to_s, location),
+                                                    location: location)))
+        end
+      end
+
+      # Registers the slave services of +driver+, the driver known as the
+      # device is declared, as this device's slaves, bound to their
+      # services: as in Syskit, they exist from the declaration on
+      # (+device(Stereo, as: 'cam').left_dev+, +cam.slave('left').service+).
+      # #resolve_slaves settles them on the driver chosen once all is loaded.
+      def bind_slaves_early(driver)
+        return if @slaves_resolved
+
+        @early_driver = driver
+        driver.driver_services_for(model).each do |srv|
+          driver.each_slave_data_service(srv) do |slave_srv|
+            slave = find_slave(slave_srv.name) ||
+                    register_slave(SlaveDevice.new(self, slave_srv.name, location: declared_at, implicit: true))
+            slave.bind_early(driver)
+          end
         end
       end
 
@@ -99,17 +122,20 @@ module Syskit
         return if @slaves_resolved || !driver_resolved?
 
         @slaves_resolved = true
-        asked = slaves
+        known = slaves
         # Most drivers have no slave services, and most devices no slaves.
-        return if asked.empty? && driver_model.slave_services.empty?
+        return if known.empty? && driver_model.slave_services.empty?
 
         @slaves = nil
         driver_model.driver_services_for(model).each do |srv|
           driver_model.each_slave_data_service(srv) do |slave_srv|
-            register_slave(asked[slave_srv.name] || SlaveDevice.new(self, slave_srv.name, location: declared_at))
+            register_slave(known[slave_srv.name] ||
+                           SlaveDevice.new(self, slave_srv.name, location: declared_at, implicit: true))
           end
         end
-        asked.each_value { |slave| register_slave(slave) unless find_slave(slave.name) }
+        # Slaves asked for that the driver does not have are errors
+        # (SlaveDevice#resolve); the driver's own are all registered above.
+        known.each_value { |slave| register_slave(slave) unless slave.implicit? || find_slave(slave.name) }
       end
 
       private
@@ -150,6 +176,13 @@ module Syskit
         (@slaves ||= {})[slave.name] = slave
         define_singleton_method("#{slave.name}_dev") { slave }
         robot.profile&.slave_registered(slave)
+        slave
+      end
+
+      # Binds a slave asked for with #slave to the driver known at
+      # declaration, when there is one and the app is still loading.
+      def early_bind(slave)
+        slave.bind_early(@early_driver) if @early_driver && !@slaves_resolved
         slave
       end
     end

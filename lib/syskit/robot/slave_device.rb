@@ -17,8 +17,9 @@ module Syskit
 
       # Not Device#initialize: a slave has no model of its own until its
       # master's driver is known.
-      def initialize(master, name, location:, dynamic: nil, options: {}) # rubocop:disable Lint/MissingSuper
+      def initialize(master, name, location:, dynamic: nil, options: {}, implicit: false) # rubocop:disable Lint/MissingSuper
         @robot = master.robot
+        @implicit = implicit
         @master_device = master
         @name = name
         @declared_at = location
@@ -37,16 +38,41 @@ module Syskit
       # The ports a dynamic service creates on the driver for this slave.
       attr_reader :created_ports
 
-      # Binds the slave to its service on the master's driver (or makes it
-      # from the dynamic service); raises when the driver has none.
-      def resolve
-        return if @service
+      # Whether the slave was registered from a slave service of the driver
+      # rather than asked for with +slave(name)+.
+      def implicit?
+        @implicit
+      end
 
-        driver = master_device.driver_model
+      # Asked for with +slave(name)+ at +location+: from then on a driver
+      # without this slave is an error there.
+      def claim(location)
+        if @implicit
+          @implicit = false
+          @declared_at = location
+        end
+        self
+      end
+
+      # Binds the slave to its service on +driver+, the master's (or makes
+      # it from the dynamic service); raises when the driver has none.
+      def resolve(driver = master_device.driver_model)
+        return if @service && @bound_driver.equal?(driver)
+
         service, ports = dynamic_service_name ? instantiate(driver) : [static_service(driver), NO_PORTS]
+        @bound_driver = driver
         @service = service
         @created_ports = ports.freeze
         configure_with(service.model.device_configuration_modules) if service.model.is_a?(Models::DeviceModel)
+      end
+
+      # Binds the slave to +driver+, the driver known as its master is
+      # declared, when that driver serves it; otherwise it stays unbound
+      # until the app is loaded, where #resolve says what is wrong.
+      def bind_early(driver)
+        resolve(driver)
+      rescue Syskit::Error
+        nil
       end
 
       def model

@@ -6,14 +6,17 @@ module Syskit
     # and their configuration through the network generator with stub
     # deployments (one deployed task per task, named after its device).
     module Stubs
-      # A device of +model+; its driver is +driver+, the described task model
-      # when it drives +model+, else a stub driver.
-      def syskit_stub_device(model, as: nil, driver: nil)
-        driver ||= described_driver_for(model) || StubModels.device_driver(model)
+      # A device of +model+; its driver is +driver+ (or +using:+, as
+      # Syskit's tests write it), the described task model when it drives
+      # +model+, else a stub driver. The device's own settings are given as
+      # in Syskit: +doc:+, +period:+, +burst:+, +sample_size:+.
+      def syskit_stub_device(model, as: nil, driver: nil, using: nil, **settings)
+        location = Location.of_caller
+        driver ||= using || described_driver_for(model) || StubModels.device_driver(model)
         device = syskit_stub_robot.add_device(Robot::Device, model, as || syskit_stub_name('dev'),
-                                              using: driver, options: {}, location: Location.of_caller)
+                                              using: driver, options: {}, location: location)
         device.driver_model = driver
-        device
+        apply_stub_settings(device, settings, location)
       end
 
       # A bus of +model+; its driver is +driver+, the described task model
@@ -98,6 +101,9 @@ module Syskit
         @syskit_stub_result&.plan
       end
 
+      # What syskit_stub_device sets on the device, as Syskit's does.
+      STUB_SETTINGS = %i[doc period burst sample_size].freeze
+
       private
 
       # The described model (+describe Compositions::X do+).
@@ -106,6 +112,19 @@ module Syskit
         return desc if desc.is_a?(Class) && desc < Component
 
         flunk "syskit_stub_and_deploy needs a model, or `describe Model do ... end`, not #{desc.inspect}"
+      end
+
+      def apply_stub_settings(device, settings, location)
+        unknown = settings.keys - STUB_SETTINGS
+        unless unknown.empty?
+          raise DeclarationError.new(
+            "syskit_stub_device: unknown option(s) #{unknown.map { |k| "#{k}:" }.join(', ')}" \
+            "#{Naming.did_you_mean(unknown.first, %i[as driver using] + STUB_SETTINGS)}",
+            location: location, hint: "it takes as:, driver: (or using:) and the device's #{STUB_SETTINGS.join(':, ')}:"
+          )
+        end
+        settings.each { |name, value| device.public_send(name, value) }
+        device
       end
 
       def syskit_stub_robot

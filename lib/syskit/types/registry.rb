@@ -70,6 +70,7 @@ module Syskit
 
         canonical = Registry.normalize(name)
         return register(OpaqueType.new(canonical)) if opaque_ok || opaque_namespace?(canonical)
+        return register(OpaqueType.new(canonical)) if @voucher&.call(canonical, location)
 
         raise unknown_type_error(canonical, location)
       end
@@ -78,6 +79,11 @@ module Syskit
       # types is named before the typekit was imported (see TypekitSearch):
       # a block given the typekit's name, true when it imported one.
       attr_writer :describer
+
+      # Whether a type of no known namespace is accepted as opaque all the
+      # same (see TypekitSearch#vouch): a block given its name and where
+      # it is named.
+      attr_writer :voucher
 
       # Registers +type+ under its name, or under +name+ for a typedef.
       def register(type, name = type.name)

@@ -114,6 +114,21 @@ module Syskit
       end
     end
 
+    # A floating-point field whose value may be unknown, as Rock writes it:
+    # NaN (base::unknown<double>()), which it is when nothing sets it (and
+    # which a plan shows as NaN).
+    class MaybeUnknownFloat < FloatType
+      def zero
+        Float::NAN
+      end
+
+      def from_ruby(value)
+        return Float::NAN if value.nil? || (value.is_a?(Float) && value.nan?)
+
+        super
+      end
+    end
+
     # bool
     class BoolType < Type
       def zero
@@ -217,7 +232,7 @@ module Syskit
 
     # A type declared in a C/C++ header the gem cannot read: any plain value
     # (hash, array, string, number, boolean) is accepted, as long as a plan
-    # can hold it (finite numbers, UTF-8 text, at any depth).
+    # can hold it (numbers, UTF-8 text, at any depth).
     class OpaqueType < Type
       def opaque?
         true
@@ -235,9 +250,20 @@ module Syskit
         when Array then value.map { |v| from_ruby(v) }
         when String then text(value)
         when Symbol then text(value).to_sym
-        when Integer, true, false, nil then value
+        # A value of Rock's Ruby bindings this gem does not model
+        # (Eigen::Vector3.new(1, 2, 3) for a /base/Vector3d) is kept as it is.
+        when Integer, true, false, nil, Compat::NotModelledValue then value
         when Numeric then float(value)
         else mismatch(value, 'plain data (hash, array, string, number)')
+        end
+      end
+
+      def to_plain(value)
+        case value
+        when Hash then value.to_h { |k, v| [to_plain(k), to_plain(v)] }
+        when Array then value.map { |v| to_plain(v) }
+        when Compat::NotModelledValue then value.to_s
+        else value
         end
       end
     end

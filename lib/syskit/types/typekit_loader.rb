@@ -16,7 +16,7 @@ module Syskit
     class TypekitLoader
       # The statements of a typekit file.
       class DSL
-        STATEMENTS = %w[struct enum opaque alias_type import_types_from accept_unknown_types].freeze
+        STATEMENTS = %w[struct enum opaque alias_type import_types_from accept_unknown_types specialize_model].freeze
         # A type name, relative to the typekit (Device) or absolute (/my_bus/Device).
         TYPE_NAME = %r{\A/?[A-Za-z_]\w*(?:/[A-Za-z_]\w*)*\z}
 
@@ -61,6 +61,18 @@ module Syskit
           @loader.registry.opaque_typekit(@loader.name)
         end
 
+        # Methods of a type itself, as Typelib's +specialize_model+ gives
+        # them (Rock's +Types.base.JointState.Speed(2.0)+): the block's
+        # +def+s become methods of the type, which may call +new+.
+        def specialize_model(name = nil, &block)
+          name = type_name(name, 'specialize_model', "specialize_model 'JointState' do def Speed(v) ... end end")
+          Arguments.block(block, statement: "specialize_model '#{name}'", error_class: TypeError,
+                                 example: "specialize_model '#{name}' do def Speed(v) new(speed: v) end end")
+          type = @loader.registry.resolve(@loader.full_name(name), location: Location.of_caller)
+          type.singleton_class.class_eval(&block)
+          type
+        end
+
         def explain_missing(name)
           ["unknown statement '#{name}' in a typekit file#{Naming.did_you_mean(name, STATEMENTS)}",
            "typekit files declare #{STATEMENTS.join(', ')}"]
@@ -83,7 +95,10 @@ module Syskit
           @fields = {}
         end
 
-        def field(name = nil, type = nil)
+        # +unknown: true+: the field may be NaN, Rock's "unknown" for a
+        # floating-point value (base::unknown), which it is when not set;
+        # plans show it as null.
+        def field(name = nil, type = nil, unknown: false)
           location = Location.of_caller
           name = Arguments.name(name, statement: 'field', what: 'a field name', example: "field 'id', '/uint32_t'",
                                       error_class: TypeError)
@@ -94,7 +109,17 @@ module Syskit
 
           type = Arguments.given(type, statement: "field '#{name}'", what: 'a type', error_class: TypeError,
                                        example: "field '#{name}', '/uint32_t'")
-          @fields[name] = @loader.registry.resolve(type, location: location)
+          resolved = @loader.registry.resolve(type, location: location)
+          @fields[name] = unknown ? unknown_field(name, resolved, location) : resolved
+        end
+
+        private
+
+        def unknown_field(name, type, location)
+          return MaybeUnknownFloat.new(type.name) if type.is_a?(FloatType)
+
+          raise TypeError.new("field '#{name}': unknown: true is for floating-point fields, #{type} is not one",
+                              location: location, hint: "leave unknown: out, or make the field '/double'")
         end
       end
 

@@ -17,7 +17,29 @@ module Syskit
         @dirs = dirs
         @imported = {}
         @opaque = {}
+        @vouched = {}
         registry.describer = ->(name) { describe(name) }
+        registry.voucher = ->(type_name, location) { vouch(type_name, location) }
+      end
+
+      # Whether a typekit imported without a description may define
+      # +type_name+, of another namespace: real typekits define types outside
+      # their own (auv_control's /base/LinearAngular6DPIDSettings). True,
+      # with one warning per namespace, when some undescribed typekit is
+      # imported and no description covers the type's namespace.
+      def vouch(type_name, location)
+        namespace = type_name.delete_prefix('/').split(%r{[/<]}).first
+        return false if @opaque.empty? || Registry::BUILTIN_TYPEKITS.include?(namespace) || find(namespace)
+        return true if @vouched.key?(namespace)
+
+        @vouched[namespace] = location
+        Syskit.app&.problems&.push(Warning.new(
+          "#{type_name} is taken as opaque: no typekit describes /#{namespace}/, and #{vouchers} " \
+          'imported without a description, may define it',
+          location: location,
+          hint: "describe it in models/typekits/#{namespace}.rb, or import the typekit that defines it"
+        ))
+        true
       end
 
       # Imports the description of typekit +name+ when there is one that is
@@ -53,6 +75,12 @@ module Syskit
       # Typekits imported without a description, and where each was first
       # imported.
       attr_reader :opaque
+
+      # The undescribed typekits, as a message names them.
+      def vouchers
+        names = @opaque.keys.sort
+        names.size == 1 ? "the typekit #{names.first}," : "the typekits #{names.join(', ')},"
+      end
 
       # The description of typekit +name+, nil when there is none.
       def find(name)

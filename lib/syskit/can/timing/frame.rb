@@ -97,7 +97,7 @@ module Syskit
         end
 
         def to_s
-          "frame #{hex_id}"
+          "frame 0x#{hex_id}"
         end
       end
 

@@ -105,6 +105,14 @@ module Syskit
         define_method(statement) { |*_args, **_options, &_block| nil }
       end
 
+      # A port type wrapped by an oroGen plugin (+spatio_temporal(T)+ of
+      # envire's plugin, the type with a time and a frame): not modelled,
+      # with a warning; the port has the inner type.
+      def spatio_temporal(type)
+        Syskit.app&.not_modelled("spatio_temporal (envire's oroGen plugin) in #{dsl_context}", Location.of_caller)
+        type
+      end
+
       # oroGen plugins, which add properties and ports of their own (e.g.
       # transformer_max_latency) that this gem does not model.
       %i[transformer stream_aligner].each do |plugin|
@@ -117,9 +125,11 @@ module Syskit
       private
 
       # +statement+: the DSL word, when it is not +what+ (input_port for a port).
-      def declare(table, raw_name, what, statement = what)
-        declared_name = Arguments.name(raw_name, statement: statement, what: "a #{what} name (a C++ identifier)",
-                                                 example: EXAMPLES.fetch(statement), error_class: SpecError)
+      def declare(table, raw_name, what, statement = what, pattern: Arguments::IDENTIFIER)
+        kind = pattern == Arguments::IDENTIFIER ? 'a C++ identifier' : 'letters, digits and _'
+        declared_name = Arguments.name(raw_name, statement: statement, what: "a #{what} name (#{kind})",
+                                                 example: EXAMPLES.fetch(statement), pattern: pattern,
+                                                 error_class: SpecError)
         if table.key?(declared_name)
           raise SpecError.new("#{@spec.name} declares the #{what} '#{declared_name}' twice",
                               location: Location.of_caller, hint: 'remove one of the declarations')
@@ -160,8 +170,9 @@ module Syskit
         end
 
         what = "#{direction}_port"
-        port = declare(@spec.ports, port_name, 'port', what) do |n|
-          Port.new(n, direction, @loader.resolve_type(argument_type(type, what, n), Location.of_caller))
+        port = declare(@spec.ports, port_name, 'port', what, pattern: Arguments::PORT_NAME) do |n|
+          Port.new(n, direction, @loader.resolve_type(argument_type(type, what, n), Location.of_caller),
+                   declared_type: type)
         end
         PortModifiers.new(port)
       end

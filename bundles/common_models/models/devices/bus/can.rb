@@ -5,11 +5,12 @@ module CommonModels
 
       # Controller Area Network. Devices attached to a CAN bus declare the
       # frames they receive with can_id(id, mask): a frame goes to a device
-      # when (frame_id & mask) == id.
+      # when (frame_id & mask) == id. The pair is stored as given; a filter
+      # no frame can pass is a `syskit check` warning.
       com_bus_type 'CAN', message_type: '/canbus/Message' do
         extend_attached_device_configuration do
           dsl_attribute :can_id do |id, mask = id|
-            Syskit::CAN.check_filter(id, mask).to_a
+            Syskit::CAN.filter_value(id, mask)
           end
         end
       end

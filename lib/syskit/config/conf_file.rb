@@ -19,7 +19,8 @@ module Syskit
       HEADER = /\A---\s*name:\s*(\S*)\s*(?:#.*)?\Z/
       HEADER_LIKE = /\A---\s*name\b/
 
-      # One section: its values and the line of its header.
+      # One section: its values and the line of its header (0 for a
+      # 'default' section without one: its text starts at line 1).
       Section = Struct.new(:name, :settings, :line, :text)
 
       attr_reader :path, :sections
@@ -74,7 +75,7 @@ module Syskit
       private
 
       def parse(text)
-        current = ['default', 1, []]
+        current = ['default', 0, []]
         chunks = []
         text.each_line.with_index(1) do |line, lineno|
           if (m = line.match(HEADER))
@@ -106,7 +107,8 @@ module Syskit
 
       def add_section(name, line, text)
         if (other = sections[name])
-          raise ConfigurationError.new("section '#{name}' is declared twice (first at line #{other.line})",
+          first = other.line.zero? ? 'at the top of the file' : "at line #{other.line}"
+          raise ConfigurationError.new("section '#{name}' is declared twice (first #{first})",
                                        location: Location.new(path, line), hint: 'merge the two sections')
         end
 
@@ -114,10 +116,11 @@ module Syskit
       end
 
       def load_yaml(text, header_line)
-        # Blank lines keep Psych's line numbers those of the file.
-        # Symbols are Rock's way of writing enum values (deviceType: :SOCKET).
-        values = Psych.safe_load(("\n" * header_line) + text, filename: path, aliases: false,
-                                                              permitted_classes: [Symbol]) || {}
+        # Each section is parsed alone and its lines counted from its
+        # header (a prefix of blank lines made parsing a file quadratic in
+        # its sections). Symbols are Rock's way of writing enum values
+        # (deviceType: :SOCKET).
+        values = Psych.safe_load(text, filename: path, aliases: false, permitted_classes: [Symbol]) || {}
         unless values.is_a?(Hash)
           raise ConfigurationError.new('a configuration section must map property names to values',
                                        location: Location.new(path, header_line + 1),
@@ -140,7 +143,8 @@ module Syskit
                                      hint: 'configuration values are property values: a few levels of nesting')
       rescue Psych::SyntaxError => e
         raise ConfigurationError.new("invalid YAML: #{e.problem}",
-                                     location: Location.new(path, e.line), hint: 'fix the YAML syntax at this line')
+                                     location: Location.new(path, header_line + e.line),
+                                     hint: 'fix the YAML syntax at this line')
       end
 
       # Psych only says a class was refused: the error points at the first
@@ -188,7 +192,7 @@ module Syskit
       # The first line of a section's +text+ matching +marker+.
       def line_of(marker, text, header_line)
         offset = text.lines.index { |l| l.match?(marker) }
-        Location.new(path, offset ? header_line + 1 + offset : header_line)
+        Location.new(path, offset ? header_line + 1 + offset : [header_line, 1].max)
       end
 
       def unknown_section(name, location)

@@ -51,6 +51,17 @@ module Syskit
         assert_equal [3, 6], [file.location_of('rate', ['default']).lineno, file.location_of('rate', %w[b]).lineno]
       end
 
+      def test_a_date_names_the_property_it_is_given_to
+        error = assert_raises(ConfigurationError) { ConfFile.new(conf("--- name:a\nrate: 1\nsince: 2024-01-31\n")) }
+        assert_equal "property 'since': 2024-01-31 is read by YAML as a date, which is not a property value",
+                     error.message
+        assert_equal [3, "quote it to make it a string: since: '2024-01-31'"], [error.location.lineno, error.hint]
+        error = assert_raises(ConfigurationError) { ConfFile.new(conf("limits:\n  from: 2024-01-31 08:00:00\n")) }
+        assert_equal "property 'limits' (from): 2024-01-31 08:00:00 is read by YAML as a time, which is not a " \
+                     'property value', error.message
+        assert_equal 2, error.location.lineno
+      end
+
       def test_a_default_section_without_header_declared_again
         error = assert_raises(ConfigurationError) { ConfFile.new(conf("rate: 1\n--- name:default\nrate: 2\n")) }
         assert_equal "section 'default' is declared twice (first at the top of the file)", error.message

@@ -18,6 +18,8 @@ module Syskit
       # starts like a header but is not one is refused, never taken as data.
       HEADER = /\A---\s*name:\s*(\S*)\s*(?:#.*)?\Z/
       HEADER_LIKE = /\A---\s*name\b/
+      # What YAML reads as a date or a time (a value, a list item).
+      DATE = /(?:\A\s*|:\s*|-\s+|[\[,]\s*)(\d{4}-\d\d?-\d\d?(?:[Tt ]\S+)?)/
 
       # One section: its values and the line of its header (0 for a
       # 'default' section without one: its text starts at line 1).
@@ -151,13 +153,7 @@ module Syskit
       # tag of the section and names it when the line shows it. Dates and
       # times are read as such by YAML: they are refused as values.
       def tag_error(error, text, header_line)
-        if error.message.match?(/Date|Time/)
-          return ConfigurationError.new(
-            "a date or time is not a property value (#{error.message})",
-            location: line_of(/:\s*\d{4}-\d\d-\d\d/, text, header_line),
-            hint: "quote it to make it a string: '2024-01-31'"
-          )
-        end
+        return date_error(error, text, header_line) if error.message.match?(/Date|Time/)
 
         location = line_of(/!/, text, header_line)
         tag = UserFile.lines(path)[location.lineno - 1].to_s[/!\S+/]
@@ -165,6 +161,23 @@ module Syskit
                                "(#{error.message})",
                                location: location,
                                hint: 'configuration files hold plain data: no tags, no Ruby objects')
+      end
+
+      # A date or time, named with the property it is given to.
+      def date_error(error, text, header_line)
+        location = line_of(DATE, text, header_line)
+        offset = location.lineno - header_line - 1
+        lines = text.lines
+        written = lines[offset].to_s
+        key = written[/\A\s*(?:-\s+)?([^\s:#][^:#]*?)\s*:/, 1]
+        property = lines[0..offset].reverse.map { |l| l[/\A([^\s:#-][^:#]*?)\s*:/, 1] }.compact.first
+        value = written[DATE, 1] || 'it'
+        what = error.message.include?('Date') ? 'a date' : 'a time'
+        where = property && "property '#{property}'#{" (#{key})" if key && key != property}: "
+        ConfigurationError.new(
+          "#{where}#{value} is read by YAML as #{what}, which is not a property value",
+          location: location, hint: "quote it to make it a string: #{key || property || 'key'}: '#{value}'"
+        )
       end
 
       # Top-level keys name properties: anything else (5000:, ~:, [a]:) is

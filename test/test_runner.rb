@@ -62,6 +62,22 @@ module Syskit
         end
     end
 
+    # Values minitest would stop on with a backtrace, or an option taken
+    # for a pattern, are refused before the tests start.
+    def test_minitest_option_values_are_checked
+      { %w[-n] => "-n needs a pattern\n  hint: e.g. syskit test -n /configure/ runs the tests whose name matches",
+        %w[-e --app .] => "-e needs a pattern before '--app'\n  hint: e.g. syskit test -e /configure/ leaves out",
+        %w[-s abc] => "-s takes the seed of a run, an integer, not 'abc'\n  hint: e.g. syskit test -s 42: minitest " \
+                      "prints each run's seed",
+        %w[--seed=x] => "--seed takes the seed of a run, an integer, not 'x'\n  hint: ",
+        %w[--seed] => "--seed takes the seed of a run, an integer\n  hint: " }.each do |args, message|
+        out, err, status = syskit_test(*args, chdir: ROVER)
+        assert_equal [1, ''], [status.exitstatus, out], args.join(' ')
+        assert err.start_with?(message), "#{args.join(' ')}: #{err}"
+        refute_match BACKTRACE, err
+      end
+    end
+
     def test_a_file_that_cannot_load_fails_on_its_own_and_the_others_run
       composition = "module Plain; class Follow < Syskit::Composition; end; end\n"
       app = write_app({ 'config/syskit.yml' => "name: Plain\n", 'models/compositions/follow.rb' => composition,

@@ -112,12 +112,13 @@ module Syskit
       end
 
       # Loads a test file; what it raises while being loaded (a syntax
-      # error, a typo at its top level, a library that is not installed) is
-      # reported at its line, on stderr and as a failing test of its own,
-      # and the other files' tests run.
+      # error, a typo at its top level, a library that is not installed, an
+      # exit that would leave the next files unloaded) is reported at its
+      # line, on stderr and as a failing test of its own, and the other
+      # files' tests run.
       def self.load_test_file(path)
         require path
-      rescue Syskit::Error, ScriptError, StandardError => e
+      rescue Syskit::Error, ScriptError, StandardError, SystemExit => e
         error = UserCode.translate(e, path: path, root: Test.app.root)
         # The app's own problems come first: they are often the cause.
         Test.app.errors.each { |problem| warn problem.report(Dir.pwd) } unless @app_problems_shown

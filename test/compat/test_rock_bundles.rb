@@ -182,6 +182,29 @@ module Syskit
       assert_includes load_app(for_robot).bundle_roots, other
     end
 
+    # register_app calls are found by Ruby's parser: comments and strings
+    # that mention one are not calls (a regexp over the text took them).
+    def test_register_app_in_comments_and_strings_is_not_a_call
+      robot = <<~RUBY
+        # Roby.app.register_app '../gone_bundle'
+        HELP = "write Roby.app.register_app('../some_bundle') to add one"
+        =begin
+        Roby.app.register_app '../older_bundle'
+        =end
+        Roby.app.register_app File.join(__dir__, '..', '..', '..', 'computed_bundle')
+      RUBY
+      root = my_app(nil, 'config/robots/default.rb' => robot)
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal 0, status, out
+      assert_equal [
+        'config/robots/default.rb:6: warning: Roby.app.register_app with a path computed in Ruby: syskit reads ' \
+        'bundles before robot configurations run, so this bundle is not searched',
+        "  hint: write the path as a string relative to the app (register_app '../other_bundle'), or name the " \
+        'bundle in config/syskit.yml: bundles: [other_bundle]',
+        'MyApp: 0 error(s), 1 warning(s)'
+      ], out.lines.map(&:chomp)
+    end
+
     def test_what_rock_model_files_call_loads_with_warnings
       root = my_app(nil, 'models/orogen/imu.rb' => <<~RUBY, 'models/compositions/stack.rb' => <<~RUBY2)
         class OroGen::Imu::Task

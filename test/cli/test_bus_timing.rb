@@ -94,6 +94,15 @@ module Syskit
                    out)
     end
 
+    # As plan and replay: a robot that does not exist is refused, not
+    # ignored (the traffic is the profile's, whatever the robot).
+    def test_an_unknown_robot_is_refused
+      out, err, status = timing('Live::Base', '--bus', 'can1', '--robot', 'nosuch', '--app', EXAMPLE)
+      assert_equal [1, ''], [status, out]
+      assert_equal "config/robots/nosuch.rb: no configuration for robot 'nosuch'\n  hint: create " \
+                   "config/robots/nosuch.rb with Syskit.conf.use_deployment statements\n", err
+    end
+
     def test_an_overloaded_bus
       root = my_app(<<~RUBY)
         com_bus(CommonModels::Devices::Bus::CAN, as: 'can0').bitrate(135_000)

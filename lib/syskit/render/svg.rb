@@ -17,13 +17,20 @@ module Syskit
         svg, err, status = Open3.capture3(dot, '-Tsvg', stdin_data: Dot.render(plan), binmode: true)
         unless status.success?
           said = err.lines.first.to_s.strip
-          raise Error.new("graphviz's dot could not draw the plan (exit status #{status.exitstatus})" \
-                          "#{": #{said}" unless said.empty?}",
+          raise Error.new("graphviz's dot could not draw the plan (#{ended(status)})#{": #{said}" unless said.empty?}",
                           hint: 'write the graph with --format dot and run dot -Tsvg on it to see what graphviz says')
         end
 
         io.write(svg)
         io
+      end
+
+      # How dot ended: its exit status, or the signal that killed it (out
+      # of memory, a time limit, kill).
+      def ended(status)
+        return "exit status #{status.exitstatus}" unless status.signaled?
+
+        "killed by signal SIG#{Signal.signame(status.termsig)}"
       end
 
       # The dot executable on PATH, or an error saying how to get one.

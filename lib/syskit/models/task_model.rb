@@ -6,6 +6,7 @@ require 'syskit/models/task_arguments'
 require 'syskit/models/driver_services'
 require 'syskit/models/task_requirements'
 require 'syskit/models/dynamic_services'
+require 'syskit/models/not_a_model'
 
 module Syskit
   module Models
@@ -134,11 +135,11 @@ module Syskit
       def driver_for(model, mappings = {}, as: nil, slave_of: nil, **more)
         location = Location.of_caller
         unless model.is_a?(DeviceModel)
-          raise DeclarationError.new(
-            "driver_for expects a device or bus model, got #{model.inspect}",
-            location: location,
-            hint: ("#{model} is a data service: use provides #{model}, as: 'name'" if model.is_a?(DataServiceModel))
-          )
+          hint = if model.is_a?(DataServiceModel) then "#{model} is a data service: use provides #{model}, as: 'name'"
+                 else NotAModel.hint('driver_for', model, location)
+                 end
+          raise DeclarationError.new("driver_for expects a device or bus model, got #{model.inspect}",
+                                     location: location, hint: hint)
         end
 
         as ||= Naming.underscore(model.name.to_s.split('::').last)
@@ -155,7 +156,7 @@ module Syskit
 
         unless model.is_a?(DataServiceModel)
           raise DeclarationError.new("provides expects a data service model, got #{model.inspect}",
-                                     location: location)
+                                     location: location, hint: NotAModel.hint('provides', model, location))
         end
         unless as
           raise DeclarationError.new("provides #{model} needs a service name",

@@ -84,6 +84,24 @@ module Syskit
       assert_equal 4, plan['tasks'].size
     end
 
+    # A robot file that requires itself deployed everything twice ("used
+    # twice"); a second robot requiring a shared file got nothing, Ruby
+    # having loaded it once already for the first.
+    def test_robot_files_requiring_themselves_and_each_other
+      deploy = "Syskit.conf.use_deployment OroGen.imu.Task => 'imu'\n"
+      root = my_app("device(Devices::IMU, as: 'imu')\n",
+                    'config/robots/default.rb' => "require_relative 'default'\n#{deploy}",
+                    'config/robots/field.rb' => "require_relative './default'\n",
+                    'config/robots/sim.rb' => "require 'config/robots/default'\nrequire_relative 'sim'\n")
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal [0, "MyApp: 0 error(s), 0 warning(s)\n"], [status, out]
+      %w[field sim].each do |robot|
+        out, err, status = run_cli('plan', '--app', root, '--robot', robot, '--format', 'json')
+        assert_equal 0, status, err
+        assert_equal ['imu'], JSON.parse(out)['tasks'].map { |t| t['name'] }, robot
+      end
+    end
+
     def test_robot_logs_go_to_stderr_at_the_level_syskit_log_sets
       _, err, = run_cli('plan', '--app', ROVER)
       refute_match(/Robot INFO/, err)

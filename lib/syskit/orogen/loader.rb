@@ -14,6 +14,8 @@ module Syskit
       def initialize(app)
         @app = app
         @libraries = {}
+        # Libraries whose .orogen file is being evaluated, outermost first.
+        @loading = []
         @deployments = {}
         @namespace = RootNamespace.new(self)
         available_library_names.each { |name| @namespace.add_unloaded(name) }
@@ -49,14 +51,25 @@ module Syskit
 
         library = TaskLibrary.new(name, path)
         @libraries[name] = library
+        @loading.push(name)
         begin
           SpecLoader.new(@app, library).load
         rescue Exception # rubocop:disable Lint/RescueException -- undo, then re-raise as is
           @libraries.delete(name)
           raise
+        ensure
+          @loading.pop
         end
         @namespace.add([name], library.namespace)
         library
+      end
+
+      # The libraries being loaded from +name+ on, when +name+ is still
+      # loading (its file waits for a library it loads): the chain that
+      # leads back to it; nil otherwise.
+      def loading_chain(name)
+        index = @loading.index(name)
+        index && @loading[index..]
       end
 
       def find_task_model(full_name)

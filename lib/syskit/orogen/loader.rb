@@ -3,6 +3,7 @@
 require 'syskit/orogen/task_library'
 require 'syskit/orogen/spec_loader'
 require 'syskit/orogen/root_namespace'
+require 'syskit/source_calls'
 
 module Syskit
   module Orogen
@@ -124,10 +125,12 @@ module Syskit
 
       private
 
-      # Library name => deployment names, read from the .orogen files' text.
+      # Library name => deployment names, the deployment and
+      # simple_deployment statements of the .orogen files (see SourceCalls).
       def declared_deployments
         @declared_deployments ||= available_library_names.to_h do |lib|
-          [lib, UserFile.read(spec_path(lib)).scan(/^\s*deployment\s*\(?\s*["']([^"']+)["']/).flatten]
+          calls = SourceCalls.find(UserFile.read(spec_path(lib)), %w[deployment simple_deployment])
+          [lib, calls.filter_map(&:argument)]
         end
       end
     end

@@ -131,6 +131,12 @@ module Syskit
       assert_equal ["models/orogen/sonar.orogen:4: unknown task model 'Taks'",
                     '  hint: the task models known here are sonar::Task', 'MyApp: 1 error(s), 0 warning(s)'],
                    out.lines.map(&:chomp)
+      # Asked for by the robot configuration too, the library's error is
+      # still one error (plan printed it three times).
+      File.write(File.join(root, 'config', 'robots', 'default.rb'), "using_task_library 'sonar'\n#{robot}")
+      _, err, status = run_cli('plan', '--app', root)
+      assert_equal [1, "models/orogen/sonar.orogen:4: unknown task model 'Taks'\n  hint: the task models known here " \
+                       "are sonar::Task\n"], [status, err]
     end
 
     def test_an_unknown_statement_is_still_a_located_error

@@ -232,6 +232,21 @@ module Syskit
       assert_equal({ 'can1' => 2 }, report['source']['other_interfaces'])
     end
 
+    # A log's bytes are not always UTF-8 (a Latin-1 interface name, a
+    # damaged line): JSON and the text report write them \xNN.
+    def test_bytes_that_are_not_utf8_are_written_as_escapes
+      File.binwrite(@log, "(1.000000) can\xE9 125#00\n(2.000000) can0 125#00\n(3.0\xFF) can0 125#00\n".b)
+      source = replay_json['source']
+      assert_equal ['can\\xE9', { 'can0' => 1 }], source.values_at('interface', 'other_interfaces')
+      assert_equal '(3.0\\xFF) can0 125#00', source['malformed']['lines'].first['text']
+      out, = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--bus', 'can0')
+      assert_match(/^log .*, interface can\\xE9: 1 frame in 0.000 s$/, out)
+      assert out.valid_encoding?
+      _, err, status = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--interface', "can\xE9".b)
+      assert_equal [1, "the argument 'can\\xE9' is not UTF-8 text\n  hint: arguments are names and paths written " \
+                       "in UTF-8; rename a file whose name is not\n"], [status, err]
+    end
+
     def test_without_bus_uses_the_only_bus_of_the_plan
       out, err, status = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--format', 'json')
       assert_equal 0, status, err

@@ -36,7 +36,8 @@ module Syskit
       # interface of the first frame.
       def initialize(path, interface: nil)
         @path = path
-        @interface = interface
+        # Compared with the log's bytes.
+        @interface = interface&.b
         @other_interfaces = Hash.new(0)
         @malformed = []
         @malformed_count = 0

@@ -2,6 +2,7 @@
 
 require 'syskit/bus/errors'
 require 'syskit/bus/candump_log'
+require 'syskit/printable'
 require 'syskit/bus/traffic'
 require 'syskit/bus/report'
 require 'syskit/bus/progress'
@@ -57,16 +58,19 @@ module Syskit
 
       private
 
+      # Interface names and lines come from the log's bytes: made printable.
       def source_info
-        others = log.other_interfaces.sort.to_h
+        others = log.other_interfaces.sort.to_h.transform_keys { |name| Printable.text(name) }
+        interface = log.interface && Printable.text(log.interface)
         @source.merge(
-          'log' => @path, 'interface' => log.interface, 'other_interfaces' => others, 'lines' => log.lines,
+          'log' => @path, 'interface' => interface, 'other_interfaces' => others, 'lines' => log.lines,
           'malformed' => { 'count' => log.malformed_count, 'lines' => log.malformed.map { |m| malformed_hash(m) } }
         )
       end
 
       def malformed_hash(malformed)
-        { 'line' => malformed.lineno, 'message' => malformed.message, 'text' => malformed.text }
+        { 'line' => malformed.lineno, 'message' => Printable.text(malformed.message),
+          'text' => Printable.text(malformed.text) }
       end
 
       def strict_error

@@ -247,6 +247,26 @@ module Syskit
                        "in UTF-8; rename a file whose name is not\n"], [status, err]
     end
 
+    # Two logs merged into one: gaps and periods between lines in log
+    # order are not the frames' (the longest gap was 0, nothing late).
+    def test_a_log_not_in_time_order_says_where
+      File.write(@log, "(10.000000) can0 125#00\n(10.100000) can0 125#00\n(9.950000) can0 125#00\n" \
+                       "(10.050000) can0 125#00\n(9.990000) can0 125#00\n")
+      assert_equal({ 'line' => 3, 'time' => 9.95, 'previous_time' => 10.1, 'lines' => 2 },
+                   replay_json['source']['backwards'])
+      out, = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--bus', 'can0')
+      assert_includes out, "\n  not in time order: line 3 is 0.150 s before the line before it (2 lines back in " \
+                           "time): gaps, periods and late frames are measured in log order, sort the log by time\n"
+      _, err, status = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--bus', 'can0', '--strict')
+      assert_equal [1, 'can0.log:3: the log is not in time order: this line is 0.150 s before the line before it ' \
+                       "(2 lines back in time)\n"], [status, err.lines.first]
+      assert_nil replay_json(log: write_ordered_log)['source']['backwards']
+    end
+
+    def write_ordered_log
+      File.join(@app, 'ordered.log').tap { |path| File.write(path, "(1.000000) can0 125#00\n(1.000000) can0 125#00\n") }
+    end
+
     def test_without_bus_uses_the_only_bus_of_the_plan
       out, err, status = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--format', 'json')
       assert_equal 0, status, err

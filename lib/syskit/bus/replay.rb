@@ -50,6 +50,7 @@ module Syskit
           end
         end
         raise strict_error if strict && log.malformed_count.positive?
+        raise order_error if strict && log.backwards
 
         Report.new(@dispatcher, traffic, source: source_info, declared_bus: @declared_bus)
       rescue SystemCallError, IOError => e
@@ -64,6 +65,7 @@ module Syskit
         interface = log.interface && Printable.text(log.interface)
         @source.merge(
           'log' => @path, 'interface' => interface, 'other_interfaces' => others, 'lines' => log.lines,
+          'backwards' => backwards_hash(log.backwards),
           'malformed' => { 'count' => log.malformed_count, 'lines' => log.malformed.map { |m| malformed_hash(m) } }
         )
       end
@@ -71,6 +73,24 @@ module Syskit
       def malformed_hash(malformed)
         { 'line' => malformed.lineno, 'message' => Printable.text(malformed.message),
           'text' => Printable.text(malformed.text) }
+      end
+
+      # Times in seconds since the epoch, as the report's other times.
+      def backwards_hash(backwards)
+        backwards && { 'line' => backwards.lineno, 'time' => Report.seconds(backwards.time),
+                       'previous_time' => Report.seconds(backwards.previous_time), 'lines' => backwards.lines }
+      end
+
+      def order_error
+        first = log.backwards
+        LogError.new(
+          format('the log is not in time order: this line is %<seconds>.3f s before the line before it (%<lines>s ' \
+                 'back in time)', seconds: (first.previous_time - first.time) / 1e6,
+                                  lines: Naming.count(first.lines, 'line')),
+          location: Location.new(@path, first.lineno),
+          hint: 'gaps and periods are measured between lines in log order: sort the log by time, or replay the ' \
+                'logs merged into it one by one'
+        )
       end
 
       def strict_error

@@ -16,6 +16,14 @@ module Syskit
                    File.read(File.join(GEM_ROOT, '.ci', 'run')).lines.last.strip
     end
 
+    def test_the_error_corpus_count_is_the_number_of_cases
+      said = README[%r{under `test/fixtures/broken/` \(one broken app per case, (\d+)\s}, 1]
+      refute_nil said, "the README no longer gives the corpus's size"
+      cases = Dir.children(File.join(GEM_ROOT, 'test', 'fixtures', 'broken'))
+                 .count { |c| File.directory?(File.join(GEM_ROOT, 'test', 'fixtures', 'broken', c)) }
+      assert_equal cases, Integer(said)
+    end
+
     # The tour's snippets headed by a file of the example app are excerpts
     # of that file: each line, in order (comments after code aside).
     def test_the_tour_snippets_are_excerpts_of_the_example_app

@@ -62,6 +62,43 @@ module Syskit
         end
     end
 
+    # Values minitest would stop on with a backtrace, or an option taken
+    # for a pattern, are refused before the tests start.
+    def test_minitest_option_values_are_checked
+      { %w[-n] => "-n needs a pattern\n  hint: e.g. syskit test -n /configure/ runs the tests whose name matches",
+        %w[-e --app .] => "-e needs a pattern before '--app'\n  hint: e.g. syskit test -e /configure/ leaves out",
+        %w[-s abc] => "-s takes the seed of a run, an integer, not 'abc'\n  hint: e.g. syskit test -s 42: minitest " \
+                      "prints each run's seed",
+        %w[--seed=x] => "--seed takes the seed of a run, an integer, not 'x'\n  hint: ",
+        %w[--seed] => "--seed takes the seed of a run, an integer\n  hint: " }.each do |args, message|
+        out, err, status = syskit_test(*args, chdir: ROVER)
+        assert_equal [1, ''], [status.exitstatus, out], args.join(' ')
+        assert err.start_with?(message), "#{args.join(' ')}: #{err}"
+        refute_match BACKTRACE, err
+      end
+    end
+
+    # exit in a test ended the run before minitest's report: the exit
+    # status said a test failed, but not which nor why.
+    def test_a_test_that_exits_fails_and_the_other_failures_are_reported
+      app = write_app({ 'config/syskit.yml' => "name: Plain\n",
+                        'test/test_exit.rb' => <<~RUBY,
+                          describe 'a run' do
+                            it('compares') { assert_equal 1, 2, 'odd' }
+                            it('leaves') { exit 0 }
+                          end
+                        RUBY
+                        'test/test_top.rb' => "exit 0\n" })
+      out, err, status = syskit_test(chdir: app)
+      assert_equal 1, status.exitstatus
+      assert_match(%r{^a run#test_0001_compares \[test/test_exit.rb:2\]:\nodd.\nExpected: 1\n  Actual: 2$}, out)
+      assert_includes out, "a run#test_0002_leaves [test/test_exit.rb:3]:\nthe test calls exit (status 0), which " \
+                           'would end the run and hide the report of every test: use assertions, skip or return instead'
+      # At a file's top level, the files after it would not be loaded.
+      assert_match(%r{^test/test_top.rb:1: the code calls exit \(status 0\)\n  hint: }, err)
+      assert_match(/^3 runs, \d+ assertions, 3 failures, 0 errors, 0 skips$/, out)
+    end
+
     def test_a_file_that_cannot_load_fails_on_its_own_and_the_others_run
       composition = "module Plain; class Follow < Syskit::Composition; end; end\n"
       app = write_app({ 'config/syskit.yml' => "name: Plain\n", 'models/compositions/follow.rb' => composition,

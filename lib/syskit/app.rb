@@ -3,7 +3,9 @@
 require 'psych'
 require 'syskit/app/files'
 require 'syskit/app/environment'
+require 'syskit/app/registered_apps'
 require 'syskit/app/bundles'
+require 'syskit/app/settings_yaml'
 require 'syskit/app/settings'
 require 'syskit/app/everything'
 require 'syskit/types/typekit_search'
@@ -272,12 +274,20 @@ module Syskit
       names.select { |r| robot_config_names.include?(r) }.each { |robot| collect_problems { robot_config(robot) } }
     end
 
+    # A problem met again (a task library that failed to load, asked for
+    # by a profile and by a robot configuration) is kept once.
     def collect_problems
       yield
     rescue Syskit::ErrorList => e
-      @problems.concat(e.errors)
+      e.errors.each { |error| add_problem(error) }
     rescue Syskit::Error => e
-      @problems << e
+      add_problem(e)
+    end
+
+    def add_problem(problem)
+      @problem_keys ||= @problems.to_h { |p| [p.identity, true] }
+      @problems << problem unless @problem_keys.key?(problem.identity)
+      @problem_keys[problem.identity] = true
     end
 
     # The CAN bus model of the first common_models bundle: the seed uses

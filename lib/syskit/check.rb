@@ -25,7 +25,7 @@ module Syskit
       @problems << opaque_typekits_note unless app.opaque_typekits.empty?
       failed_files = app.errors.filter_map { |p| p.location&.path }.uniq
       app.profiles.values.sort_by(&:name).each { |profile| check_profile(profile, failed_files) }
-      @problems = @problems.uniq { |p| [p.class, p.message, p.location.to_a] }
+      @problems = @problems.uniq(&:identity)
       self
     end
 

@@ -2,6 +2,7 @@
 
 require 'thor'
 require 'syskit'
+require 'syskit/printable'
 require 'syskit/check'
 require 'syskit/render/text'
 require 'syskit/render/json'
@@ -35,6 +36,10 @@ module Syskit
     # syskit prints them (see Shell).
     def self.start(given_args = ARGV, config = {})
       config[:shell] ||= Shell.new
+      # Thor stops with a backtrace on an argument that is not UTF-8.
+      bad = given_args.find { |arg| !Printable.utf8?(arg) }
+      return CommandLine.not_text(bad) if bad
+
       super(CommandLine.normalize(given_args), config)
     end
 

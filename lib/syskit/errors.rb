@@ -22,6 +22,12 @@ module Syskit
       }
     end
 
+    # What makes two reports of a problem the same one (check and load
+    # keep it once).
+    def identity
+      [self.class, message, location.to_a]
+    end
+
     # Copy of this error whose message says first where it happened
     # ("in gps::Task's configure: ...").
     def in_context(context)

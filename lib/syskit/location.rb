@@ -57,6 +57,17 @@ module Syskit
       inside ? path[(root.size + 1)..] : path
     end
 
+    # The text of the line, for messages that quote what was written
+    # (read only when an error is reported); nil when it cannot be read.
+    def source_line
+      return unless lineno&.positive?
+
+      File.foreach(path).with_index(1) { |line, i| return line if i == lineno }
+      nil
+    rescue SystemCallError, IOError, ArgumentError
+      nil
+    end
+
     # "file:line"; only the path for a location without a line (a
     # directory, a file as a whole).
     def to_s(root = Syskit.app&.root)

@@ -48,6 +48,23 @@ module Syskit
       end
     end
 
+    # A test that calls +exit+ (or +abort+) would end the whole run before
+    # minitest reports: the failures found so far would be lost, whatever
+    # the exit status. It fails instead, at the line that exits.
+    module ExitIsAFailure
+      def capture_exceptions
+        super do
+          yield
+        rescue SystemExit => e
+          what = e.message == 'exit' ? "exit (status #{e.status})" : "abort (#{e.message})"
+          failure = Minitest::Assertion.new("the test calls #{what}, which would end the run and hide the report " \
+                                            'of every test: use assertions, skip or return instead')
+          failure.set_backtrace(e.backtrace)
+          raise failure
+        end
+      end
+    end
+
     class << self
       # The app under test: SYSKIT_APP, else the app containing the current
       # directory. Loaded once, with every task library of the app.
@@ -94,3 +111,4 @@ end
 Syskit::Test.app
 Minitest::Spec.register_spec_type(Syskit::Test::Spec) { |_desc| true }
 Minitest.backtrace_filter = Syskit::Test::BacktraceFilter.new
+Minitest::Test.prepend(Syskit::Test::ExitIsAFailure)

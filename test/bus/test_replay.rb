@@ -232,6 +232,41 @@ module Syskit
       assert_equal({ 'can1' => 2 }, report['source']['other_interfaces'])
     end
 
+    # A log's bytes are not always UTF-8 (a Latin-1 interface name, a
+    # damaged line): JSON and the text report write them \xNN.
+    def test_bytes_that_are_not_utf8_are_written_as_escapes
+      File.binwrite(@log, "(1.000000) can\xE9 125#00\n(2.000000) can0 125#00\n(3.0\xFF) can0 125#00\n".b)
+      source = replay_json['source']
+      assert_equal ['can\\xE9', { 'can0' => 1 }], source.values_at('interface', 'other_interfaces')
+      assert_equal '(3.0\\xFF) can0 125#00', source['malformed']['lines'].first['text']
+      out, = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--bus', 'can0')
+      assert_match(/^log .*, interface can\\xE9: 1 frame in 0.000 s$/, out)
+      assert out.valid_encoding?
+      _, err, status = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--interface', "can\xE9".b)
+      assert_equal [1, "the argument 'can\\xE9' is not UTF-8 text\n  hint: arguments are names and paths written " \
+                       "in UTF-8; rename a file whose name is not\n"], [status, err]
+    end
+
+    # Two logs merged into one: gaps and periods between lines in log
+    # order are not the frames' (the longest gap was 0, nothing late).
+    def test_a_log_not_in_time_order_says_where
+      File.write(@log, "(10.000000) can0 125#00\n(10.100000) can0 125#00\n(9.950000) can0 125#00\n" \
+                       "(10.050000) can0 125#00\n(9.990000) can0 125#00\n")
+      assert_equal({ 'line' => 3, 'time' => 9.95, 'previous_time' => 10.1, 'lines' => 2 },
+                   replay_json['source']['backwards'])
+      out, = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--bus', 'can0')
+      assert_includes out, "\n  not in time order: line 3 is 0.150 s before the line before it (2 lines back in " \
+                           "time): gaps, periods and late frames are measured in log order, sort the log by time\n"
+      _, err, status = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--bus', 'can0', '--strict')
+      assert_equal [1, 'can0.log:3: the log is not in time order: this line is 0.150 s before the line before it ' \
+                       "(2 lines back in time)\n"], [status, err.lines.first]
+      assert_nil replay_json(log: write_ordered_log)['source']['backwards']
+    end
+
+    def write_ordered_log
+      File.join(@app, 'ordered.log').tap { |path| File.write(path, "(1.000000) can0 125#00\n(1.000000) can0 125#00\n") }
+    end
+
     def test_without_bus_uses_the_only_bus_of_the_plan
       out, err, status = run_cli('bus', 'replay', 'Base', @log, '--app', @app, '--format', 'json')
       assert_equal 0, status, err

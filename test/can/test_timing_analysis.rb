@@ -95,10 +95,61 @@ module Syskit
         assert_equal 345 * US, results[0x200].response_time
         # 0x100: its jitter, blocked by 0x200 (135 us), then 55 us.
         assert_equal 340 * US, results[0x100].response_time
-        assert_equal 2, results[0x100].instances
+        # Two instances are queued in its busy period, but with nothing
+        # above it the first responds latest: only it is examined.
+        assert_equal 1, results[0x100].instances
         # Without jitter: one instance of 0x100, then 0x200.
         without = by_id(analyse(1_000_000, frame(0x100, bytes: 0, period: 200 * US), frame(0x200, period: MS)))
         assert_equal 190 * US, without[0x200].response_time
+      end
+
+      # The paper's example with the deadline at the period: the second
+      # instance is still the worst, and it meets its deadline.
+      def test_a_later_instance_that_meets_its_deadline
+        c = analyse(135_000, frame(1, period: 2.5r * MS), frame(2, period: 3.5r * MS), frame(3, period: 3.5r * MS))
+            .frames.last
+        assert_equal [3.5r * MS, 1, 2, false], [c.response_time, c.worst_instance, c.instances, c.stopped_at_miss]
+        assert c.schedulable?
+      end
+
+      # 100,000 s of jitter on a 1 ms frame queues 10^8 instances in its
+      # busy period: a jitter only adds instances that respond no later, so
+      # the work (instances examined) does not grow with it.
+      def test_a_large_jitter_costs_no_more_instances
+        results = [0, 100_000].map do |jitter|
+          analyse(500_000, frame(0x100, period: 2 * MS), frame(0x200, period: MS, jitter: jitter)).frames.last
+        end
+        assert_equal [1, 1], results.map(&:instances)
+        assert_equal 100_000 + (540 * US), results.last.response_time # its jitter, 0x100, then itself
+        refute results.last.schedulable?
+        refute results.last.stopped_at_miss, 'no instance after the first can respond later'
+      end
+
+      def test_a_large_jitter_with_a_later_deadline_is_analysed_exactly
+        a, b, c = analyse(135_000, frame(1, period: 2.5r * MS), frame(2, period: 3.5r * MS),
+                          frame(3, period: 3.5r * MS, jitter: 100_000, deadline: 200_000)).frames
+        assert_equal [2 * MS, 3 * MS], [a.response_time, b.response_time]
+        # As without jitter, the second instance is the worst: 100,000 s
+        # later. 5 instances of 3.5 ms make the 17.5 ms the periods repeat in.
+        assert_equal [100_000 + (3.5r * MS), 1, 5], [c.response_time, c.worst_instance, c.instances]
+        assert c.schedulable?
+      end
+
+      def test_a_higher_frame_with_a_large_jitter_makes_the_lower_ones_miss
+        results = analyse(135_000, frame(1, period: 2.5r * MS, jitter: 100_000), frame(2, period: 3.5r * MS),
+                          frame(3, period: 3.5r * MS)).frames
+        assert_equal [1, 1, 1], results.map(&:instances)
+        assert(results.none?(&:schedulable?))
+      end
+
+      # The first instance that misses ends the analysis of the frame: it
+      # misses, and its response is a lower bound of the worst.
+      def test_the_first_late_instance_ends_the_analysis_of_a_frame
+        c = analyse(135_000, frame(1, period: 2.5r * MS), frame(2, period: 3.5r * MS),
+                    frame(3, period: 3.5r * MS, jitter: 0.75r * MS)).frames.last
+        assert_equal [3.75r * MS, 0, 1, true], [c.response_time, c.worst_instance, c.instances, c.stopped_at_miss]
+        refute c.schedulable?
+        assert_equal true, c.to_h['stopped_at_miss']
       end
 
       def test_an_overloaded_bus_is_reported_not_iterated

@@ -34,7 +34,7 @@ module Syskit
       assert_equal ['can0', 250_000, 0.03114, true], doc.values_at('bus', 'bitrate', 'utilization', 'schedulable')
       sync = doc['frames'][1]
       assert_equal %w[id extended bytes device period deadline jitter transmission_time blocking response_time slack
-                      schedulable], sync.keys
+                      schedulable stopped_at_miss], sync.keys
       # 55 bits of 4 us; blocked by the 8-byte NMEA 2000 frame; after the
       # temperature frame, whose extended id has base id 0.
       assert_equal [0x80, 0.00022, 0.00064, 0.00136], sync.values_at('id', 'transmission_time', 'blocking',
@@ -60,6 +60,47 @@ module Syskit
       json, = timing('Base', '--app', root, '--format', 'json')
       missed = JSON.parse(json)['frames'].last
       assert_equal [false, nil, -0.00025], missed.values_at('schedulable', 'response_time', 'slack')
+    end
+
+    # A jitter of 100,000 s on a 1 ms frame (a typo for 100 us) used to
+    # keep the analysis going for minutes; it is now one instance.
+    def test_a_jitter_past_the_deadline
+      root = my_app(<<~RUBY)
+        com_bus(CommonModels::Devices::Bus::CAN, as: 'can0').bitrate(500_000)
+        through 'can0' do
+          device(Devices::TemperatureSensor, as: 'a').can_id(1).frame(1, bytes: 8, period: 0.001, jitter: 100_000)
+        end
+      RUBY
+      out, _, status = timing('Base', '--app', root)
+      assert_equal 1, status
+      assert_match(/^001 +a +8 +1.000 +1.000 +100000000.000 +0.270 +0.000 +100000000.270 +-99999999.270 +MISS$/, out)
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal 1, status
+      assert_includes out, "models/profiles/base.rb:11: frame 0x001 of a on bus 'can0' can miss its deadline: " \
+                           "worst-case response time 100000000.27 ms, deadline 1 ms\n  hint: its jitter alone " \
+                           '(100000000 ms, plus its own transmission) is past its deadline'
+    end
+
+    # The analysis of a frame stops at its first late instance: a later
+    # one could take longer, so its times are bounds.
+    def test_a_miss_found_before_the_latest_instance
+      root = my_app(PAPER.sub('deadline: 0.00325', 'jitter: 0.00075'))
+      out, _, status = timing('Base', '--app', root)
+      assert_equal 1, status
+      assert_equal %w[003 c 8 3.500 3.500 0.750 1.000 0.000 >=3.750 <=-0.250 MISS], out.lines[6].split
+      assert_match(/^>= a response time past the deadline is that of the frame's first late instance/, out)
+      out, = run_cli('check', '--app', root)
+      assert_match(/frame 0x003 of c on bus 'can0' can miss its deadline: worst-case response time at least 3.75 ms/,
+                   out)
+    end
+
+    # As plan and replay: a robot that does not exist is refused, not
+    # ignored (the traffic is the profile's, whatever the robot).
+    def test_an_unknown_robot_is_refused
+      out, err, status = timing('Live::Base', '--bus', 'can1', '--robot', 'nosuch', '--app', EXAMPLE)
+      assert_equal [1, ''], [status, out]
+      assert_equal "config/robots/nosuch.rb: no configuration for robot 'nosuch'\n  hint: create " \
+                   "config/robots/nosuch.rb with Syskit.conf.use_deployment statements\n", err
     end
 
     def test_an_overloaded_bus

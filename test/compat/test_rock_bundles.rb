@@ -80,6 +80,24 @@ module Syskit
       assert_equal 4, plan['tasks'].size
     end
 
+    # A robot file that requires itself deployed everything twice ("used
+    # twice"); a second robot requiring a shared file got nothing, Ruby
+    # having loaded it once already for the first.
+    def test_robot_files_requiring_themselves_and_each_other
+      deploy = "Syskit.conf.use_deployment OroGen.imu.Task => 'imu'\n"
+      root = my_app("device(Devices::IMU, as: 'imu')\n",
+                    'config/robots/default.rb' => "require_relative 'default'\n#{deploy}",
+                    'config/robots/field.rb' => "require_relative './default'\n",
+                    'config/robots/sim.rb' => "require 'config/robots/default'\nrequire_relative 'sim'\n")
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal [0, "MyApp: 0 error(s), 0 warning(s)\n"], [status, out]
+      %w[field sim].each do |robot|
+        out, err, status = run_cli('plan', '--app', root, '--robot', robot, '--format', 'json')
+        assert_equal 0, status, err
+        assert_equal ['imu'], JSON.parse(out)['tasks'].map { |t| t['name'] }, robot
+      end
+    end
+
     def test_robot_logs_go_to_stderr_at_the_level_syskit_log_sets
       _, err, = run_cli('plan', '--app', ROVER)
       refute_match(/Robot INFO/, err)
@@ -176,6 +194,29 @@ module Syskit
       for_robot = my_app(nil, 'config/robots/default.rb' => "Robot.init do\n  Roby.app.register_app '#{other}'\nend\n",
                               'models/devices/x.rb' => "require 'models/services/pose'\n")
       assert_includes load_app(for_robot).bundle_roots, other
+    end
+
+    # register_app calls are found by Ruby's parser: comments and strings
+    # that mention one are not calls (a regexp over the text took them).
+    def test_register_app_in_comments_and_strings_is_not_a_call
+      robot = <<~RUBY
+        # Roby.app.register_app '../gone_bundle'
+        HELP = "write Roby.app.register_app('../some_bundle') to add one"
+        =begin
+        Roby.app.register_app '../older_bundle'
+        =end
+        Roby.app.register_app File.join(__dir__, '..', '..', '..', 'computed_bundle')
+      RUBY
+      root = my_app(nil, 'config/robots/default.rb' => robot)
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal 0, status, out
+      assert_equal [
+        'config/robots/default.rb:6: warning: Roby.app.register_app with a path computed in Ruby: syskit reads ' \
+        'bundles before robot configurations run, so this bundle is not searched',
+        "  hint: write the path as a string relative to the app (register_app '../other_bundle'), or name the " \
+        'bundle in config/syskit.yml: bundles: [other_bundle]',
+        'MyApp: 0 error(s), 1 warning(s)'
+      ], out.lines.map(&:chomp)
     end
 
     def test_what_rock_model_files_call_loads_with_warnings

@@ -290,6 +290,31 @@ module Syskit
       assert_empty Dir.children(out_of_app)
     end
 
+    # An app named after a constant that exists (Kernel, Conf...) would
+    # define its modules inside it; generators refuse what check refuses.
+    def test_an_app_name_that_is_taken_or_not_a_constant_is_refused
+      out_of_app = tmpdir
+      assert_match(/\Athe app name 'Kernel' \(from 'kernel'\) is taken: Kernel is a constant Ruby .* already defines/,
+                   refused('app', 'kernel', chdir: out_of_app))
+      assert_match(/\Athe app name 'Roby' \(from 'roby'\) is taken: Roby is a name Rock files use/,
+                   refused('app', 'roby', chdir: out_of_app))
+      assert_empty Dir.children(out_of_app)
+      app, = new_app
+      { "name: Conf\n" => "config/syskit.yml:1: the app name 'Conf' is taken: Conf is a name Rock files use",
+        "name: 'my rover'\n" => 'config/syskit.yml:1: the app name "my rover" is not a Ruby constant name',
+        "acronyms: GPS\n" => 'config/syskit.yml:1: acronyms must be a list of names' }.each do |settings, message|
+        File.write(File.join(app, 'config', 'syskit.yml'), settings)
+        before = files_of(app)
+        assert refused('profile', 'nav/base', chdir: app).start_with?(message), settings
+        assert_equal before, files_of(app)
+      end
+      # A directory named after a constant, without a name setting.
+      kernel = File.join(tmpdir, 'kernel')
+      FileUtils.mkdir_p(File.join(kernel, 'models'))
+      assert_match(%r{\Aconfig/syskit.yml:1: the app name 'Kernel' \(from its directory's name\) is taken},
+                   refused('dev', 'imu', chdir: kernel))
+    end
+
     def test_existing_files_are_never_overwritten_without_force
       app, = new_app
       gen('dev', 'gps/ublox/f9', chdir: app)

@@ -116,6 +116,29 @@ module Syskit
       assert_equal '/std/vector</double>', app.types.find('/std/vector</double').name, "oroGen accepts a missing '>'"
     end
 
+    # A robot that deploys a simple_deployment finds its library as it
+    # finds a deployment block's (it was "no deployment named"); when the
+    # library does not load, its error is the only one.
+    def test_a_simple_deployment_is_found_before_its_library_is_loaded
+      robot = "Syskit.conf.use_deployment 'sonar_test'\n"
+      root = my_app(nil, 'models/orogen/sonar.orogen' => SONAR_SPEC, 'config/robots/default.rb' => robot)
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal 0, status, out
+      File.write(File.join(root, 'models', 'orogen', 'sonar.orogen'),
+                 "name 'sonar'\ntask_context 'Task' do\nend\nsimple_deployment 'sonar_test', 'Taks'\n")
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal 1, status
+      assert_equal ["models/orogen/sonar.orogen:4: unknown task model 'Taks'",
+                    '  hint: the task models known here are sonar::Task', 'MyApp: 1 error(s), 0 warning(s)'],
+                   out.lines.map(&:chomp)
+      # Asked for by the robot configuration too, the library's error is
+      # still one error (plan printed it three times).
+      File.write(File.join(root, 'config', 'robots', 'default.rb'), "using_task_library 'sonar'\n#{robot}")
+      _, err, status = run_cli('plan', '--app', root)
+      assert_equal [1, "models/orogen/sonar.orogen:4: unknown task model 'Taks'\n  hint: the task models known here " \
+                       "are sonar::Task\n"], [status, err]
+    end
+
     def test_an_unknown_statement_is_still_a_located_error
       root = my_app(nil, 'models/orogen/sonar.orogen' => "name 'sonar'\ntask_context 'Task' do\n  sampling 10\nend\n")
       app = load_app(root)

@@ -223,6 +223,22 @@ module Syskit
       assert_match(/\Agraphviz's dot could not draw the plan \(exit status 2\): ls: /, error.message)
     end
 
+    # A dot killed by a signal (out of memory, a time limit) has no exit
+    # status: the message said "exit status )".
+    def test_svg_when_dot_is_killed_names_the_signal
+      bin = Dir.mktmpdir('syskit-dot')
+      (@tmpdirs ||= []) << bin
+      File.write(File.join(bin, 'dot'), "#!/bin/sh\nkill -KILL $$\n")
+      File.chmod(0o755, File.join(bin, 'dot'))
+      path = "#{bin}#{File::PATH_SEPARATOR}#{ENV.fetch('PATH', '')}"
+      out, err, status = ENV.stub(:fetch, ->(key, *default) { key == 'PATH' ? path : ENV.to_h.fetch(key, *default) }) do
+        run_cli('plan', '--app', EXAMPLE, '--format', 'svg')
+      end
+      assert_equal [1, ''], [status, out]
+      assert_equal "graphviz's dot could not draw the plan (killed by signal SIGKILL)\n  hint: write the graph with " \
+                   "--format dot and run dot -Tsvg on it to see what graphviz says\n", err
+    end
+
     def test_svg_without_graphviz_says_what_to_install
       error = assert_raises(Syskit::Error) do
         ENV.stub(:fetch, ->(key, *default) { key == 'PATH' ? '/nonexistent' : ENV.to_h.fetch(key, *default) }) do

@@ -21,9 +21,6 @@ module Syskit
     # bundles' own dependencies follow them.
     class BundleSearch
       ENV_VARS = %w[SYSKIT_BUNDLE_PATH ROCK_BUNDLE_PATH].freeze
-      # Roby.app.register_app 'path' in robot configurations, read from their
-      # text (they run after the models they make loadable).
-      REGISTER_APP = /\bregister_app[\s(]+(['"])([^'"]+)\1/
 
       def initialize(env = ENV)
         @dirs = ENV_VARS.flat_map { |var| env.fetch(var, '').split(File::PATH_SEPARATOR) }
@@ -55,7 +52,7 @@ module Syskit
       private
 
       def each_dependency(bundle, config, errors)
-        declared(bundle.root, config).each do |entry, location|
+        declared(bundle.root, config, errors).each do |entry, location|
           dependency = find(entry, bundle.root, location)
           yield dependency if dependency
         rescue FileLoadError => e
@@ -67,61 +64,84 @@ module Syskit
 
       # [name or path, location] pairs a bundle declares. +config+ is the
       # app's config/syskit.yml, already read.
-      def declared(root, config)
-        from_syskit = list_at(config && config['bundles'], File.join(root, CONFIG_FILE), 'bundles')
+      def declared(root, config, errors)
+        from_syskit = config&.yaml ? list_at(config['bundles'], config.yaml, 'bundles') : []
         rock_config = File.join(root, 'config', 'app.yml')
         rock = File.file?(rock_config) ? rock_dependencies(rock_config) : []
-        (from_syskit + rock + registered_apps(root)).uniq(&:first)
+        (from_syskit + rock + registered_apps(root, errors)).uniq(&:first)
       end
 
-      def registered_apps(root)
-        Dir[File.join(root, 'config', 'robots', '*.rb')].select { |p| File.file?(p) }.flat_map do |path|
-          UserFile.lines(path).each_with_index.filter_map do |line, i|
-            m = line.match(REGISTER_APP)
-            [m[2], Location.new(path, i + 1)] if m && !line.lstrip.start_with?('#')
-          end
+      # Roby.app.register_app 'path' in robot configurations; a path
+      # computed in Ruby is a warning (see RegisteredApps).
+      def registered_apps(root, errors)
+        Dir[File.join(root, 'config', 'robots', '*.rb')].select { |p| File.file?(p) }.sort.flat_map do |path|
+          calls, warnings = RegisteredApps.of(path)
+          errors.concat(warnings)
+          calls
         end
       end
 
       def rock_dependencies(path)
-        data = Psych.safe_load(UserFile.read(path), filename: path) || {}
-        bundle = data.is_a?(Hash) ? data['bundle'] : nil
-        list_at(bundle.is_a?(Hash) ? bundle['dependencies'] : nil, path, 'dependencies')
-      rescue Psych::Exception => e
-        raise FileLoadError.new("cannot read config/app.yml: #{e.message}", location: Location.new(path, 1))
+        yaml = SettingsYaml.new(path)
+        bundle = yaml.data.is_a?(Hash) ? yaml.data['bundle'] : nil
+        list_at(bundle.is_a?(Hash) ? bundle['dependencies'] : nil, yaml, 'bundle', 'dependencies')
       end
 
-      # The entries of a list setting, each with the line it is written on.
-      def list_at(value, path, key)
+      # The entries of a list setting at +keys+ of +yaml+, each with the
+      # line it is written on.
+      def list_at(value, yaml, *keys)
         return [] if value.nil?
 
+        key_location = Location.new(yaml.path, yaml.key_line(*keys))
         unless value.is_a?(Array) && value.all? { |v| v.is_a?(String) && !v.empty? }
-          raise FileLoadError.new("#{key} must be a list of bundle names or paths",
-                                  location: Location.new(path, line_of(path, key)),
-                                  hint: "write #{key}: [common_models, ../my_other_bundle]")
+          raise FileLoadError.new("#{keys.last} must be a list of bundle names or paths",
+                                  location: key_location,
+                                  hint: "write #{keys.last}: [common_models, ../my_other_bundle]")
         end
 
-        value.map { |entry| [entry, Location.new(path, line_of(path, entry))] }
-      end
-
-      def line_of(path, text)
-        (UserFile.lines(path).index { |l| l.include?(text) } || 0) + 1
+        lines = yaml.item_lines(*keys)
+        value.each_with_index.map { |entry, i| [entry, lines[i] ? Location.new(yaml.path, lines[i]) : key_location] }
       end
 
       # A path (with a /) relative to the bundle that names it, or a name
       # looked up in the bundle path.
       def find(entry, from, location)
+        check_entry(entry, location)
         if entry.include?('/')
           root = File.expand_path(entry, from)
           return Bundle.new(File.basename(root), root) if bundle?(root)
+
+          raise not_a_bundle(entry, root, location) if File.directory?(root)
         else
-          root = candidates(entry).find { |dir| bundle?(dir) }
+          found = candidates(entry).select { |dir| File.directory?(dir) }
+          root = found.find { |dir| bundle?(dir) }
           return Bundle.new(entry, root) if root
           # Rock's common_models: the gem's own small one stands for it.
           return if entry == BUNDLED.name
+          raise not_a_bundle(entry, found.first, location) if found.any?
         end
 
         raise missing(entry, location)
+      end
+
+      # Names and paths are text: a control character (a NUL byte that
+      # YAML's "\0" writes) names no file.
+      def check_entry(entry, location)
+        return unless entry.match?(/[[:cntrl:]]/) || entry.strip.empty?
+
+        raise FileLoadError.new(
+          "#{entry.inspect} is not a bundle name or path#{' (it holds a control character)' unless entry.strip.empty?}",
+          location: location, hint: 'write the name of a bundle (common_models) or a path to it (../my_bundle)'
+        )
+      end
+
+      def not_a_bundle(entry, dir, location)
+        FileLoadError.new(
+          "'#{entry}' is #{dir}, a directory that is not a bundle: it has neither models/ nor config/",
+          location: location,
+          hint: 'name the bundle itself (the directory holding its models/ and config/), not its parent or a ' \
+                'directory inside it'
+        )
       end
 
       def candidates(name)

@@ -18,10 +18,13 @@ module Syskit
         @active
       end
 
+      # The namespaces an active app installs, besides Compat.constants.
+      INSTALLED = %i[OroGen Types].freeze
+
       # The top-level constants an active app installs, by name. Each is
       # replaced while the app is active and removed on {#deactivate}.
       def constants
-        { OroGen: @app.orogen.namespace, Types: @app.types.namespace }.merge(Compat.constants)
+        INSTALLED.zip([@app.orogen.namespace, @app.types.namespace]).to_h.merge(Compat.constants)
       end
 
       # Directories on $LOAD_PATH while the app is active: 'models/devices/x'

@@ -49,7 +49,8 @@ module Syskit
       # config/orogen/lib::Task.yml must name a task model: a typo in its
       # name would leave it unused without a word. A library that is on no
       # search path may be a component this machine does not have: a
-      # warning.
+      # warning. Every section is checked against the task model, used by
+      # a profile or not (see Config::SectionValues).
       def check_conf_file(path)
         model_name = File.basename(path, '.yml')
         location = Location.new(path, 1)
@@ -63,11 +64,20 @@ module Syskit
         end
 
         using_task_library(library, location: location)
-        return Config::ConfFile.new(path) if orogen.find_task_model(model_name)
+        task_model = orogen.find_task_model(model_name)
+        return check_sections(path, task_model) if task_model
 
         names = orogen.library(library).tasks.keys.sort
         raise conf_file_error("#{library} has no task model '#{model_name}'#{Naming.did_you_mean(model_name, names)}",
                               location)
+      end
+
+      # The file is the one the generator reads for +task_model+ (parsed
+      # once) unless a bundle's comes first.
+      def check_sections(path, task_model)
+        file = conf_file(task_model)
+        file = Config::ConfFile.new(path) unless file&.path == path
+        ErrorList.raise_if_any(Config::SectionValues.problems(file, task_model))
       end
 
       def conf_file_error(message, location)

@@ -12,7 +12,8 @@ module Syskit
     class Settings
       KEYS = %w[name acronyms bundles].freeze
 
-      attr_reader :path, :data, :name, :acronyms, :problems
+      # +yaml+: the SettingsYaml of the file, nil without one.
+      attr_reader :path, :data, :name, :acronyms, :problems, :yaml
 
       # The settings of the app at +root+; +name+ overrides the file's. A
       # setting that cannot be read is a problem (see #problems) and takes
@@ -24,10 +25,31 @@ module Syskit
         @data = collecting({}) { read }
         @acronyms = collecting([]) { list('acronyms') }
         @name = name || collecting(nil) { given_name } || Naming.camelize(File.basename(root), @acronyms)
-        return if Naming.constant_name?(@name)
+        problem = if !Naming.constant_name?(@name) then directory_name_error(root)
+                  elsif Settings.taken_name?(@name) then taken_name_error
+                  end
+        return unless problem
 
-        @problems << directory_name_error(root)
+        @problems << problem
         @name = 'UnnamedApp'
+      end
+
+      # Whether an app cannot be named +name+: its files are evaluated in
+      # its module, which must be its own, not Ruby's Kernel nor the
+      # OroGen, Roby or Conf an active app installs (its modules would be
+      # nested in them, or fail later: "Conf is not a module").
+      def self.taken_name?(name)
+        !taken_by(name).nil?
+      end
+
+      # Who has +name+ already, for messages; nil when it is free.
+      def self.taken_by(name)
+        top = name.to_s.split('::').first.to_sym
+        if Environment::INSTALLED.include?(top) || Compat.constants.key?(top)
+          'a name Rock files use, which syskit defines while an app is loaded'
+        elsif top == :Syskit then "syskit's own module"
+        elsif Object.const_defined?(top, false) then 'a constant Ruby (or a library syskit loads) already defines'
+        end
       end
 
       def [](key)
@@ -46,15 +68,14 @@ module Syskit
       def read
         return {} unless File.file?(path)
 
-        data = Psych.safe_load(UserFile.read(path), filename: path) || {}
+        @yaml = SettingsYaml.new(path)
+        data = @yaml.data
         raise shape_error('config/syskit.yml must map settings to values', 1) unless data.is_a?(Hash)
 
         unknown = data.keys - KEYS
         raise shape_error("unknown setting '#{unknown.first}'", line_of(unknown.first.to_s)) unless unknown.empty?
 
         data
-      rescue Psych::Exception => e
-        raise FileLoadError.new("cannot read #{CONFIG_FILE}: #{e.message}", location: Location.new(path, 1))
       end
 
       def given_name
@@ -64,6 +85,17 @@ module Syskit
 
         raise shape_error("the app name #{value.inspect} is not a Ruby constant name", line_of('name'),
                           hint: 'write name: AwesomeRobot (a letter first, then letters, digits and _)')
+      end
+
+      def taken_name_error
+        given = data['name'] == @name
+        where = given ? "the app name '#{@name}'" : "the app name '#{@name}' (from its directory's name)"
+        FileLoadError.new(
+          "#{where} is taken: #{@name} is #{Settings.taken_by(@name)}; the app's modules would be defined " \
+          'inside it',
+          location: Location.new(path, given ? line_of('name') : 1),
+          hint: "give the app a name of its own in config/syskit.yml, e.g. name: #{@name}Robot"
+        )
       end
 
       def list(key)
@@ -88,7 +120,7 @@ module Syskit
       end
 
       def line_of(key)
-        (UserFile.lines(path).index { |l| l.start_with?("#{key}:", "'#{key}'", "\"#{key}\"") } || 0) + 1
+        @yaml ? @yaml.key_line(key) : 1
       end
     end
   end

@@ -15,6 +15,9 @@ module Syskit
     class CandumpLog
       # A line that is not a candump frame.
       Malformed = Struct.new(:lineno, :message, :text)
+      # The first line whose time is before the line read before it (a log
+      # merged from several, a clock set back), and how many such lines.
+      Backwards = Struct.new(:lineno, :time, :previous_time, :lines)
       # How many malformed lines are kept for the report.
       KEEP_MALFORMED = 5
       # A line as candump writes it, checked whole without captures (no
@@ -30,17 +33,21 @@ module Syskit
       FD_MARK = 35 # '#'
       RTR_MARK = 82 # 'R'
 
-      attr_reader :path, :interface, :other_interfaces, :malformed, :malformed_count, :lines
+      # +backwards+: a Backwards when the log is not in time order, else nil.
+      attr_reader :path, :interface, :other_interfaces, :malformed, :malformed_count, :lines, :backwards
 
       # +interface+: the log interface whose frames are read; nil for the
       # interface of the first frame.
       def initialize(path, interface: nil)
         @path = path
-        @interface = interface
+        # Compared with the log's bytes.
+        @interface = interface&.b
         @other_interfaces = Hash.new(0)
         @malformed = []
         @malformed_count = 0
         @lines = 0
+        @previous_time = nil
+        @backwards = nil
       end
 
       # Counts every frame of the selected interface read from +io+ into
@@ -118,11 +125,10 @@ module Syskit
         return true unless selected_at?(line, close + 2, id_start - 1)
 
         time = (line.byteslice(1, close - 8).to_i * 1_000_000) + line.byteslice(close - 6, 6).to_i
-        if extended && id & Frame::ERR_FLAG != 0
-          traffic.count_error(time)
-          return true
+        in_order(time)
+        if extended && id & Frame::ERR_FLAG != 0 then traffic.count_error(time)
+        else traffic.count(extended ? id | Frame::EFF_FLAG : id, time, fd, mark == RTR_MARK, bytes)
         end
-        traffic.count(extended ? id | Frame::EFF_FLAG : id, time, fd, mark == RTR_MARK, bytes)
         true
       end
 
@@ -139,7 +145,21 @@ module Syskit
 
       def count_parsed(line, traffic)
         frame, iface = parse(line)
-        traffic.add(frame) if frame && selected?(iface)
+        return unless frame && selected?(iface)
+
+        in_order(frame.time)
+        traffic.add(frame)
+      end
+
+      # Notes a frame time earlier than the one before it: gaps and periods
+      # are measured in log order, which is then not time order.
+      def in_order(time)
+        previous = @previous_time
+        @previous_time = time
+        return if previous.nil? || time >= previous
+
+        @backwards ||= Backwards.new(@lines, time, previous, 0)
+        @backwards.lines += 1
       end
 
       # Data bytes of a CAN FD line: from after ##F to the end of the frame.

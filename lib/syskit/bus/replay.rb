@@ -2,6 +2,7 @@
 
 require 'syskit/bus/errors'
 require 'syskit/bus/candump_log'
+require 'syskit/printable'
 require 'syskit/bus/traffic'
 require 'syskit/bus/report'
 require 'syskit/bus/progress'
@@ -49,6 +50,7 @@ module Syskit
           end
         end
         raise strict_error if strict && log.malformed_count.positive?
+        raise order_error if strict && log.backwards
 
         Report.new(@dispatcher, traffic, source: source_info, declared_bus: @declared_bus)
       rescue SystemCallError, IOError => e
@@ -57,16 +59,38 @@ module Syskit
 
       private
 
+      # Interface names and lines come from the log's bytes: made printable.
       def source_info
-        others = log.other_interfaces.sort.to_h
+        others = log.other_interfaces.sort.to_h.transform_keys { |name| Printable.text(name) }
+        interface = log.interface && Printable.text(log.interface)
         @source.merge(
-          'log' => @path, 'interface' => log.interface, 'other_interfaces' => others, 'lines' => log.lines,
+          'log' => @path, 'interface' => interface, 'other_interfaces' => others, 'lines' => log.lines,
+          'backwards' => backwards_hash(log.backwards),
           'malformed' => { 'count' => log.malformed_count, 'lines' => log.malformed.map { |m| malformed_hash(m) } }
         )
       end
 
       def malformed_hash(malformed)
-        { 'line' => malformed.lineno, 'message' => malformed.message, 'text' => malformed.text }
+        { 'line' => malformed.lineno, 'message' => Printable.text(malformed.message),
+          'text' => Printable.text(malformed.text) }
+      end
+
+      # Times in seconds since the epoch, as the report's other times.
+      def backwards_hash(backwards)
+        backwards && { 'line' => backwards.lineno, 'time' => Report.seconds(backwards.time),
+                       'previous_time' => Report.seconds(backwards.previous_time), 'lines' => backwards.lines }
+      end
+
+      def order_error
+        first = log.backwards
+        LogError.new(
+          format('the log is not in time order: this line is %<seconds>.3f s before the line before it (%<lines>s ' \
+                 'back in time)', seconds: (first.previous_time - first.time) / 1e6,
+                                  lines: Naming.count(first.lines, 'line')),
+          location: Location.new(@path, first.lineno),
+          hint: 'gaps and periods are measured between lines in log order: sort the log by time, or replay the ' \
+                'logs merged into it one by one'
+        )
       end
 
       def strict_error

@@ -30,7 +30,20 @@ module Syskit
       end
 
       def header(report)
-        "#{[title(report), totals(report), kinds(report.traffic), skipped(report.source)].compact.join("\n")}\n"
+        lines = [title(report), totals(report), kinds(report.traffic), skipped(report.source), order(report)]
+        "#{lines.compact.join("\n")}\n"
+      end
+
+      # Where a log goes back in time: its gaps and periods are between
+      # lines in log order, not in time order.
+      def order(report)
+        back = report.source['backwards']
+        return unless back
+
+        seconds = back['previous_time'] - back['time']
+        format('  not in time order: line %<line>d is %<seconds>.3f s before the line before it (%<lines>s back ' \
+               'in time): gaps, periods and late frames are measured in log order, sort the log by time',
+               line: back['line'], seconds: seconds, lines: Naming.count(back['lines'], 'line'))
       end
 
       def title(report)

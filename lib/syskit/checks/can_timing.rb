@@ -74,13 +74,23 @@ module Syskit
 
       def miss(bus, result)
         frame = result.frame
+        at_least = result.stopped_at_miss ? 'at least ' : ''
         TimingError.new(
-          "#{frame} of #{frame.device} on #{bus} can miss its deadline: worst-case response time " \
+          "#{frame} of #{frame.device} on #{bus} can miss its deadline: worst-case response time #{at_least}" \
           "#{CAN::Timing::Format.ms(result.response_time)}, deadline #{CAN::Timing::Format.ms(frame.deadline)}",
-          location: frame.location,
-          hint: 'give it a lower identifier (a higher priority), a later deadline or fewer bytes, or lower the ' \
-                "bus's load; #{command(bus)} shows every frame"
+          location: frame.location, hint: miss_hint(bus, result)
         )
+      end
+
+      def miss_hint(bus, result)
+        frame = result.frame
+        if frame.jitter + result.transmission_time > frame.deadline
+          "its jitter alone (#{CAN::Timing::Format.ms(frame.jitter)}, plus its own transmission) is past its " \
+            'deadline: declare the jitter it has (seconds: jitter: 0.0005 is 0.5 ms) or a later deadline'
+        else
+          'give it a lower identifier (a higher priority), a later deadline or fewer bytes, or lower the ' \
+            "bus's load; #{command(bus)} shows every frame"
+        end
       end
 
       def overload(bus, result)

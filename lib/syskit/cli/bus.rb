@@ -105,6 +105,9 @@ module Syskit
         require 'syskit/cli/bus_timing'
         with_app(robots: [options[:robot]]) do |app|
           profile = find_profile(app, profile_name)
+          # The traffic is the profile's, whatever the robot; a robot that
+          # does not exist is still refused, as plan and replay refuse it.
+          app.robot_config(options[:robot])
           result, bus = BusTiming.analyse(profile, options[:bus])
           puts BusTiming.render(result, bus, profile, options[:format])
           exit(1) unless result.schedulable?

@@ -28,6 +28,14 @@ module Syskit
 
         ['help', command]
       end
+
+      # An argument that is not UTF-8 text: refused before Thor reads it.
+      def not_text(arg)
+        warn Error.new("the argument '#{Printable.text(arg)}' is not UTF-8 text",
+                       hint: 'arguments are names and paths written in UTF-8; rename a file whose name is not')
+                  .report
+        exit 1
+      end
     end
 
     # Thor's own errors (an unknown option, a missing argument) as syskit

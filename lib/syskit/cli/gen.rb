@@ -179,7 +179,7 @@ module Syskit
       # print as in the rest of the CLI (file:line: message, then the hint).
       def generate
         generator = nil
-        reporting_errors(-> { generator&.root }) do
+        reporting_errors(-> { generator&.root || @target_app }) do
           generator = yield(force: options[:force], dry_run: options[:dry_run])
           print_entries(generator, generator.run)
         end
@@ -199,7 +199,7 @@ module Syskit
       # Generators work in an app (--app or the current directory's): no
       # falling back to the example app.
       def target_app
-        Generators::Base.find_app(options[:app])
+        @target_app = Generators::Base.find_app(options[:app])
       end
     end
 

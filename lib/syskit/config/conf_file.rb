@@ -24,8 +24,11 @@ module Syskit
       # A section header: any line that starts with ---.
       HEADER = /\A---/
       HEADER_OPTIONS = %w[name merge chain].freeze
+      # What YAML reads as a date or a time (a value, a list item).
+      DATE = /(?:\A\s*|:\s*|-\s+|[\[,]\s*)(\d{4}-\d\d?-\d\d?(?:[Tt ]\S+)?)/
 
-      # One section: its values, the file and line of its header, its text.
+      # One section: its values, the file and line of its header (0 for a
+      # 'default' section without one: its text starts at line 1), its text.
       Section = Struct.new(:name, :settings, :line, :text, :path)
 
       attr_reader :path, :sections
@@ -82,7 +85,7 @@ module Syskit
       private
 
       def parse(text)
-        current = [{ 'name' => 'default' }, 1, []]
+        current = [{ 'name' => 'default' }, 0, []]
         chunks = []
         text.each_line.with_index(1) do |line, lineno|
           if line.match?(HEADER)
@@ -126,7 +129,8 @@ module Syskit
         location = Location.new(path, line)
         name = header_name(options['name'], location)
         if (other = declared[name])
-          raise ConfigurationError.new("section '#{name}' is declared twice (first at line #{other})",
+          first = other.zero? ? 'at the top of the file' : "at line #{other}"
+          raise ConfigurationError.new("section '#{name}' is declared twice (first #{first})",
                                        location: location, hint: 'merge the two sections')
         end
 
@@ -172,10 +176,11 @@ module Syskit
       end
 
       def load_yaml(text, header_line)
-        # Blank lines keep Psych's line numbers those of the file.
-        # Symbols are Rock's way of writing enum values (deviceType: :SOCKET).
-        values = Psych.safe_load(("\n" * header_line) + text, filename: path, aliases: false,
-                                                              permitted_classes: [Symbol]) || {}
+        # Each section is parsed alone and its lines counted from its
+        # header (a prefix of blank lines made parsing a file quadratic in
+        # its sections). Symbols are Rock's way of writing enum values
+        # (deviceType: :SOCKET).
+        values = Psych.safe_load(text, filename: path, aliases: false, permitted_classes: [Symbol]) || {}
         unless values.is_a?(Hash)
           raise ConfigurationError.new('a configuration section must map property names to values',
                                        location: Location.new(path, header_line + 1),
@@ -198,20 +203,15 @@ module Syskit
                                      hint: 'configuration values are property values: a few levels of nesting')
       rescue Psych::SyntaxError => e
         raise ConfigurationError.new("invalid YAML: #{e.problem}",
-                                     location: Location.new(path, e.line), hint: 'fix the YAML syntax at this line')
+                                     location: Location.new(path, header_line + e.line),
+                                     hint: 'fix the YAML syntax at this line')
       end
 
       # Psych only says a class was refused: the error points at the first
       # tag of the section and names it when the line shows it. Dates and
       # times are read as such by YAML: they are refused as values.
       def tag_error(error, text, header_line)
-        if error.message.match?(/Date|Time/)
-          return ConfigurationError.new(
-            "a date or time is not a property value (#{error.message})",
-            location: line_of(/:\s*\d{4}-\d\d-\d\d/, text, header_line),
-            hint: "quote it to make it a string: '2024-01-31'"
-          )
-        end
+        return date_error(error, text, header_line) if error.message.match?(/Date|Time/)
 
         location = line_of(/!/, text, header_line)
         tag = UserFile.lines(path)[location.lineno - 1].to_s[/!\S+/]
@@ -219,6 +219,23 @@ module Syskit
                                "(#{error.message})",
                                location: location,
                                hint: 'configuration files hold plain data: no tags, no Ruby objects')
+      end
+
+      # A date or time, named with the property it is given to.
+      def date_error(error, text, header_line)
+        location = line_of(DATE, text, header_line)
+        offset = location.lineno - header_line - 1
+        lines = text.lines
+        written = lines[offset].to_s
+        key = written[/\A\s*(?:-\s+)?([^\s:#][^:#]*?)\s*:/, 1]
+        property = lines[0..offset].reverse.map { |l| l[/\A([^\s:#-][^:#]*?)\s*:/, 1] }.compact.first
+        value = written[DATE, 1] || 'it'
+        what = error.message.include?('Date') ? 'a date' : 'a time'
+        where = property && "property '#{property}'#{" (#{key})" if key && key != property}: "
+        ConfigurationError.new(
+          "#{where}#{value} is read by YAML as #{what}, which is not a property value",
+          location: location, hint: "quote it to make it a string: #{key || property || 'key'}: '#{value}'"
+        )
       end
 
       # Top-level keys name properties: anything else (5000:, ~:, [a]:) is
@@ -246,7 +263,7 @@ module Syskit
       # The first line of a section's +text+ matching +marker+.
       def line_of(marker, text, header_line)
         offset = text.lines.index { |l| l.match?(marker) }
-        Location.new(path, offset ? header_line + 1 + offset : header_line)
+        Location.new(path, offset ? header_line + 1 + offset : [header_line, 1].max)
       end
 
       def unknown_section(name, location)

@@ -71,6 +71,8 @@ module Syskit
       # network: planned as deployed tasks of their own name.
       def use_unmanaged_task(mappings = {}, **options)
         location = Location.of_caller
+        raise unmanaged_without_model(mappings, location) unless mappings.is_a?(Hash)
+
         mappings = mappings.merge(options.reject { |key, _| key.is_a?(Symbol) })
         check_options(options.keys.grep(Symbol), location)
         mappings.each { |model, name| add_mapping(model, name, nil, location) }
@@ -159,6 +161,14 @@ module Syskit
       end
 
       private
+
+      def unmanaged_without_model(given, location)
+        DeploymentError.new(
+          "use_unmanaged_task takes a task model and the name of its task, got #{given.inspect} alone",
+          location: location,
+          hint: "write Syskit.conf.use_unmanaged_task OroGen.lib.Task => '#{given.is_a?(String) ? given : 'name'}'"
+        )
+      end
 
       def add(deployment, location)
         @candidates = nil

@@ -48,12 +48,27 @@ module Syskit
           # Methods the file defines (helpers its blocks call) stay on this
           # object instead of becoming methods of every object.
           context = Object.new.extend(DSL::TopLevelStatements)
-          UserCode.evaluate(path, context, root: @app.root)
+          robot_files_required_into(path) { UserCode.evaluate(path, context, root: @app.root) }
           run_phases(config)
         ensure
           @loading = nil
         end
         config
+      end
+
+      # A robot file that requires another one (require_relative
+      # './default') takes its deployments: Ruby's require loads a file
+      # once per process, so the robot files loaded for another robot are
+      # forgotten first. The file being evaluated counts as loaded: a
+      # require of itself does nothing (it deployed everything twice).
+      def robot_files_required_into(path)
+        own = [path, File.realpath(path)].uniq
+        robot_files = names.flat_map { |n| File.join(dir, "#{n}.rb").then { |f| [f, File.realpath(f)] } }
+        $LOADED_FEATURES.reject! { |feature| robot_files.include?(feature) }
+        $LOADED_FEATURES.push(*own)
+        yield
+      ensure
+        own&.each { |feature| $LOADED_FEATURES.delete(feature) }
       end
 
       # Runs the blocks the file recorded, phase by phase. What init and

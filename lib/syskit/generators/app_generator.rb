@@ -27,6 +27,7 @@ module Syskit
         @root = File.expand_path(dir, pwd)
         @app_name = Name.parse(File.basename(dir), what: 'app', acronyms: ACRONYMS,
                                                    examples: 'e.g. awesome_robot').to_s
+        check_name_is_free(dir)
         @force = force
         @dry_run = dry_run
       end
@@ -35,6 +36,17 @@ module Syskit
       # what was, or would be, written.
       def run
         FileWriter.new(root, allowed: ['.'], force: @force, dry_run: @dry_run).write(files)
+      end
+
+      # An app named Kernel or Conf would define its modules inside them
+      # (see App::Settings.taken_by).
+      def check_name_is_free(dir)
+        taken = App::Settings.taken_by(app_name)
+        return unless taken
+
+        raise GeneratorError.new("the app name '#{app_name}' (from '#{File.basename(dir)}') is taken: #{app_name} is " \
+                                 "#{taken}; the app's modules would be defined inside it",
+                                 hint: "choose another directory name, e.g. syskit gen app #{File.basename(dir)}_robot")
       end
 
       # Relative path => content of the files to write.

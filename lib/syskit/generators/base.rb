@@ -36,12 +36,15 @@ module Syskit
       # +force+ overwrites existing files, +dry_run+ writes nothing.
       def initialize(root, force: false, dry_run: false)
         @root = File.expand_path(root)
-        config = Syskit::App.new(root) # reads config/syskit.yml, loads nothing
-        @app_name = config.name
-        @acronyms = config.acronyms
+        settings = Syskit::App::Settings.new(@root)
+        # The names of generated files come from these settings: a name
+        # syskit check refuses is refused here too, never replaced.
+        raise settings.problems.first if settings.problems.any?
+
+        @app_name = settings.name
+        @acronyms = settings.acronyms
         @force = force
         @dry_run = dry_run
-        check_app_name
       end
 
       # Writes the generated files (or only checks them on a dry run) and
@@ -69,13 +72,6 @@ module Syskit
         yield app.orogen.library(name) || app.orogen.load_library(name, Location.new(path, 1)), path
       ensure
         app&.unload
-      end
-
-      def check_app_name
-        return if app_name.split('::').all? { |c| Naming.constant_name?(c) }
-
-        raise GeneratorError.new("the app's name '#{app_name}' is not a Ruby constant name",
-                                 hint: "set one in #{Syskit::App::CONFIG_FILE}, e.g. name: AwesomeRobot")
       end
 
       # The nested modules a model file of +kind+ (Devices, Profiles) opens.

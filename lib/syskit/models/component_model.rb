@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/models/not_a_model'
+
 require 'syskit/models/bound_service'
 require 'syskit/models/port_mapper'
 require 'syskit/models/task_arguments'
@@ -71,7 +73,7 @@ module Syskit
 
         unless model.is_a?(DataServiceModel)
           raise DeclarationError.new("provides expects a data service model, got #{model.inspect}",
-                                     location: location)
+                                     location: location, hint: NotAModel.hint('provides', model, location))
         end
         unless as
           raise DeclarationError.new("provides #{model} needs a service name",

@@ -98,11 +98,11 @@ module Syskit
       def driver_for(model, mappings = {}, as: nil, slave_of: nil, **more)
         location = Location.of_caller
         unless model.is_a?(DeviceModel)
-          raise DeclarationError.new(
-            "driver_for expects a device or bus model, got #{model.inspect}",
-            location: location,
-            hint: ("#{model} is a data service: use provides #{model}, as: 'name'" if model.is_a?(DataServiceModel))
-          )
+          hint = if model.is_a?(DataServiceModel) then "#{model} is a data service: use provides #{model}, as: 'name'"
+                 else NotAModel.hint('driver_for', model, location)
+                 end
+          raise DeclarationError.new("driver_for expects a device or bus model, got #{model.inspect}",
+                                     location: location, hint: hint)
         end
 
         as ||= Naming.underscore(model.name.to_s.split('::').last)

@@ -55,32 +55,7 @@ module Syskit
 
       # Locations of keys are only looked up for errors.
       def apply_value(task, file, key, value)
-        unless task.properties.key?(key)
-          names = task.properties.names
-          section = file.section_of(key, task.conf).name
-          raise ConfigurationError.new(
-            "#{task.model.name} has no property '#{key}'#{Naming.did_you_mean(key, names)} " \
-            "(section '#{section}' of #{File.basename(file.path)})",
-            location: file.location_of(key, task.conf), hint: "its properties are #{names.sort.join(', ')}"
-          )
-        end
-
-        check_symbol(task, key, value)
-        task.properties[key] = value
-      rescue ConfigurationError => e
-        raise e.at(file.location_of(key, task.conf))
-      end
-
-      # A symbol in a configuration file (deviceType: :SOCKET) is an enum
-      # value: refused for a property that is not an enum.
-      def check_symbol(task, key, value)
-        type = task.properties.declarations.fetch(key).type
-        return unless value.is_a?(Symbol) && !type.is_a?(Types::EnumType) && !type.opaque?
-
-        raise ConfigurationError.new(
-          "#{key}: #{value.inspect} is a symbol, which only enum properties take (#{key} is a #{type})",
-          location: nil, hint: "write the value without its leading colon: #{key}: #{value}"
-        )
+        Config::SectionValues.apply(task.properties, file, task.conf, key, value)
       end
 
       def user_code(task, device, what, &)

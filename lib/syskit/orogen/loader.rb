@@ -3,6 +3,7 @@
 require 'syskit/orogen/task_library'
 require 'syskit/orogen/spec_loader'
 require 'syskit/orogen/root_namespace'
+require 'syskit/source_calls'
 
 module Syskit
   module Orogen
@@ -14,6 +15,8 @@ module Syskit
       def initialize(app)
         @app = app
         @libraries = {}
+        # Libraries whose .orogen file is being evaluated, outermost first.
+        @loading = []
         @deployments = {}
         @namespace = RootNamespace.new(self)
         available_library_names.each { |name| @namespace.add_unloaded(name) }
@@ -49,14 +52,25 @@ module Syskit
 
         library = TaskLibrary.new(name, path)
         @libraries[name] = library
+        @loading.push(name)
         begin
           SpecLoader.new(@app, library).load
         rescue Exception # rubocop:disable Lint/RescueException -- undo, then re-raise as is
           @libraries.delete(name)
           raise
+        ensure
+          @loading.pop
         end
         @namespace.add([name], library.namespace)
         library
+      end
+
+      # The libraries being loaded from +name+ on, when +name+ is still
+      # loading (its file waits for a library it loads): the chain that
+      # leads back to it; nil otherwise.
+      def loading_chain(name)
+        index = @loading.index(name)
+        index && @loading[index..]
       end
 
       def find_task_model(full_name)
@@ -124,10 +138,12 @@ module Syskit
 
       private
 
-      # Library name => deployment names, read from the .orogen files' text.
+      # Library name => deployment names, the deployment and
+      # simple_deployment statements of the .orogen files (see SourceCalls).
       def declared_deployments
         @declared_deployments ||= available_library_names.to_h do |lib|
-          [lib, UserFile.read(spec_path(lib)).scan(/^\s*deployment\s*\(?\s*["']([^"']+)["']/).flatten]
+          calls = SourceCalls.find(UserFile.read(spec_path(lib)), %w[deployment simple_deployment])
+          [lib, calls.filter_map(&:argument)]
         end
       end
     end

@@ -84,9 +84,30 @@ module Syskit
         if name.include?('::') && !@app.orogen.loaded?(lib_name) && lib_name != library.name
           raise @app.orogen.unknown_library(lib_name, location, error_class: SpecError)
         end
+        raise loading_cycle(name, lib_name, location) if lib_name != library.name && @app.orogen.loading_chain(lib_name)
 
-        raise SpecError.new("unknown task model '#{name}'#{Naming.did_you_mean(name, known_task_names)}",
-                            location: location, hint: "the task models known here are #{known_task_names.join(', ')}")
+        raise unknown_task_model(name, location)
+      end
+
+      def unknown_task_model(name, location)
+        known = known_task_names
+        hint = if known.empty? then 'no task model is loaded here: load its library first'
+               else "the task models known here are #{known.join(', ')}"
+               end
+        SpecError.new("unknown task model '#{name}'#{Naming.did_you_mean(name, known)}", location: location, hint: hint)
+      end
+
+      # +name+ is in a library that is still loading: it loads, directly
+      # or not, the library being read, before declaring its own tasks.
+      def loading_cycle(name, lib_name, location)
+        chain = [*@app.orogen.loading_chain(lib_name), lib_name]
+        SpecError.new(
+          "task model '#{name}' does not exist yet: task library '#{lib_name}' is still loading, waiting for " \
+          "'#{library.name}', which it loads; these libraries load each other in a cycle (#{chain.join(' -> ')})",
+          location: location,
+          hint: "a library's dependencies load before it: remove the using_task_library (or the subclasses) " \
+                "of one of #{chain.uniq.map { |l| "#{l}.orogen" }.join(', ')} that closes the cycle"
+        )
       end
 
       # A full name loads its library, as oroGen does ('logger::Logger').

@@ -24,9 +24,17 @@ module Syskit
         return svg if status.success?
 
         said = err.lines.first.to_s.strip
-        raise Error.new("graphviz's dot could not draw #{what} (exit status #{status.exitstatus})" \
+        raise Error.new("graphviz's dot could not draw #{what} (#{ended(status)})" \
                         "#{": #{said}" unless said.empty?}",
                         hint: 'write the graph with --format dot and run dot -Tsvg on it to see what graphviz says')
+      end
+
+      # How dot ended: its exit status, or the signal that killed it (out
+      # of memory, a time limit, kill).
+      def ended(status)
+        return "exit status #{status.exitstatus}" unless status.signaled?
+
+        "killed by signal SIG#{Signal.signame(status.termsig)}"
       end
 
       # The dot executable on PATH, or an error saying how to get one.

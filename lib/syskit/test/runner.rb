@@ -36,7 +36,7 @@ module Syskit
             app = value || args.shift
           elsif MINITEST_OPTIONS.key?(name)
             minitest << name
-            minitest << (value || args.shift) if MINITEST_OPTIONS[name]
+            minitest << option_value(name, value || args.shift) if MINITEST_OPTIONS[name]
           elsif arg.start_with?('-') && arg != '-'
             raise unknown_option(arg)
           else
@@ -44,6 +44,25 @@ module Syskit
           end
         end
         Arguments.new(files, minitest, app)
+      end
+
+      # The value of a minitest option, checked here: minitest would stop
+      # with a backtrace (-s abc), or take the next option as the value
+      # (-n --app dir).
+      def self.option_value(name, value)
+        if %w[-s --seed].include?(name)
+          return value if value && Integer(value, exception: false)
+
+          raise Error.new("#{name} takes the seed of a run, an integer#{", not '#{value}'" if value}",
+                          hint: "e.g. syskit test #{name} 42: minitest prints each run's seed (Run options: " \
+                                '--seed N) to run the tests again in the same order')
+        end
+        return value if value && !value.start_with?('-')
+
+        what = %w[-n --name].include?(name) ? 'runs' : 'leaves out'
+        raise Error.new("#{name} needs a pattern#{" before '#{value}'" if value}",
+                        hint: "e.g. syskit test #{name} /configure/ #{what} the tests whose name matches " \
+                              "(#{name} test_name: that test); quote a pattern with spaces")
       end
 
       def self.unknown_option(arg)
@@ -93,12 +112,13 @@ module Syskit
       end
 
       # Loads a test file; what it raises while being loaded (a syntax
-      # error, a typo at its top level, a library that is not installed) is
-      # reported at its line, on stderr and as a failing test of its own,
-      # and the other files' tests run.
+      # error, a typo at its top level, a library that is not installed, an
+      # exit that would leave the next files unloaded) is reported at its
+      # line, on stderr and as a failing test of its own, and the other
+      # files' tests run.
       def self.load_test_file(path)
         require path
-      rescue Syskit::Error, ScriptError, StandardError => e
+      rescue Syskit::Error, ScriptError, StandardError, SystemExit => e
         error = UserCode.translate(e, path: path, root: Test.app.root)
         # The app's own problems come first: they are often the cause.
         Test.app.errors.each { |problem| warn problem.report(Dir.pwd) } unless @app_problems_shown

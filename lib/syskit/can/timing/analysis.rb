@@ -33,7 +33,11 @@ module Syskit
       # a recurrence costs one term per distinct pair queued more than once
       # in the time it is computed for, not one per frame (see
       # HigherPriority), and each busy period starts from the previous
-      # level's (it can only be longer).
+      # level's (it can only be longer). Of the Q_m instances, only those
+      # that can hold the worst response are examined (#instances_needed:
+      # their number does not grow with the jitter), and the first that
+      # misses its deadline ends the frame's analysis; memory does not grow
+      # with the instances.
       class Analysis
         # +bitrate+: bits per second (a positive Integer); +frames+: Frame values.
         def self.run(bitrate:, frames:)
@@ -62,14 +66,11 @@ module Syskit
           busy = 0
           results = @frames.each_with_index.map do |frame, index|
             utilization += Rational(frame.bits, @bitrate) / frame.period
-            level = [frame, costs[index], blocking[index], higher]
+            level = level(frame, costs[index], blocking[index])
             # From 100 % on, this level and every lower one have no bound.
-            if utilization < 1
-              busy = busy_period(*level, busy)
-              times = response(*level, busy)
-            end
-            higher.add(ticks(frame.period), ticks(frame.jitter), costs[index])
-            result(*level.first(3), times)
+            busy, times = analyse(level, higher, utilization, busy) if utilization < 1
+            higher.add(level.period, level.jitter, level.cost)
+            result(frame, level, times)
           end
           BusResult.new(bitrate: @bitrate, utilization: utilization, frames: results.freeze).freeze
         end
@@ -85,7 +86,8 @@ module Syskit
         # arrays, so only those queued more than once are visited, with a
         # while loop that stops at the first pair beyond the time.
         class HigherPriority
-          attr_reader :total
+          # The sum of C_k; the least common multiple of the T_k (1 for none).
+          attr_reader :total, :hyperperiod
 
           def initialize
             @pairs = {}
@@ -94,6 +96,7 @@ module Syskit
             @jitters = []
             @costs = []
             @total = 0
+            @hyperperiod = 1
           end
 
           # Adds a frame of cost C_k to the pair (T_k, J_k), in ticks.
@@ -111,6 +114,7 @@ module Syskit
               @costs.insert(i, cost)
             end
             @total += cost
+            @hyperperiod = @hyperperiod.lcm(period)
           end
 
           # The sum of ceil((time + J_k) / T_k) * C_k, time > 0.
@@ -126,47 +130,94 @@ module Syskit
           end
         end
 
+        # Frame m's values in ticks.
+        Level = Struct.new(:period, :jitter, :deadline, :cost, :blocking)
+
+        # What the analysis of one frame found, in ticks: R_m, R_m(0), the
+        # q of the worst instance, the instances examined, and whether it
+        # stopped at one that misses its deadline.
+        Response = Struct.new(:worst, :first_instance, :worst_instance, :examined, :stopped_at_miss)
+
+        def level(frame, cost, blocking)
+          Level.new(ticks(frame.period), ticks(frame.jitter), ticks(frame.deadline), cost, blocking)
+        end
+
+        # [t_m, the Response] of one level, whose utilisation is below 1.
+        def analyse(level, higher, utilization, previous_busy)
+          needed = instances_needed(level, higher, utilization)
+          busy, queued = busy_period(level, higher, previous_busy, needed)
+          [busy, response(level, higher, [queued, needed].min)]
+        end
+
         # B_m: the longest frame of lower priority (0 for the lowest).
         def blocking_times(costs)
           longest = 0
           costs.reverse.map { |c| longest.tap { longest = [longest, c].max } }.reverse
         end
 
-        # t_m, iterated from the previous level's busy period: level m adds
-        # frame m's own term (at least C_m) and loses at most C_m of
-        # blocking, so its busy period is no shorter.
-        def busy_period(frame, cost, blocking, higher, previous)
-          period = ticks(frame.period)
-          jitter = ticks(frame.jitter)
-          time = [previous, cost].max
+        # How many instances of the busy period can hold the worst
+        # response, whatever the jitters: the response of instance q is
+        # R_m(q) = J_m + C_m + w_m(q) - q * T_m, and J_m does not change
+        # w_m, so a large jitter only adds instances that respond no later:
+        # - bounding each ceil by its argument and its argument + 1 gives
+        #   w_m(q) - q * T_m <= w_m(0) + (sum of hp C_k - q * T_m * (1 - U)) / (1 - U_hp),
+        #   U the level's utilisation: no instance from
+        #   ceil(sum of hp C_k / (T_m * (1 - U))) on responds later than the first;
+        # - with H the least common multiple of the level's periods, a
+        #   pre-fixed point argument gives w_m(q + H / T_m) <= w_m(q) + H:
+        #   instance q + H / T_m responds no later than instance q.
+        # So the analysis needs at most the smaller of the two, and never
+        # more than the instances queued (Q_m); the time and memory it
+        # takes do not grow with the jitter.
+        def instances_needed(level, higher, utilization)
+          by_load = (Rational(higher.total) / (level.period * (1 - utilization))).ceil
+          by_hyperperiod = higher.hyperperiod.lcm(level.period) / level.period
+          by_load.clamp(1, by_hyperperiod)
+        end
+
+        # [t_m, Q_m], t_m iterated from the previous level's busy period:
+        # level m adds frame m's own term (at least C_m) and loses at most
+        # C_m of blocking, so its busy period is no shorter. Stops as soon
+        # as +needed+ instances are queued in it: the instances after them
+        # are not analysed, and a busy period iterated from below is still
+        # a lower bound for the next level.
+        def busy_period(level, higher, previous, needed)
+          time = [previous, level.cost].max
           loop do
-            own = -(-(time + jitter) / period) * cost
-            following = blocking + higher.interference(time) + own
-            return time if following == time
+            queued = -(-(time + level.jitter) / level.period)
+            following = level.blocking + higher.interference(time) + (queued * level.cost)
+            return [time, queued] if following == time || queued >= needed
 
             time = following
           end
         end
 
-        # [R_m, R_m(0), the worst q, Q_m], times in ticks.
-        def response(frame, cost, blocking, higher, busy)
-          period = ticks(frame.period)
-          jitter = ticks(frame.jitter)
-          instances = -(-(busy + jitter) / period)
-          responses = []
-          start = blocking + higher.total
+        # R_m as the maximum over the first +instances+ instances, kept as
+        # it goes (memory does not grow with the instances). The first
+        # instance that misses its deadline ends the search: the frame
+        # misses, and its worst response is at least that one's.
+        def response(level, higher, instances)
+          found = Response.new(nil, nil, nil, 0, false)
+          start = level.blocking + higher.total
           instances.times do |instance|
-            start = queuing_delay(instance, cost, blocking, higher, start)
-            responses << (jitter + start - (instance * period) + cost)
-            start += cost
+            start = queuing_delay(instance, level, higher, start)
+            time = level.jitter + start - (instance * level.period) + level.cost
+            found.first_instance ||= time
+            if found.worst.nil? || time > found.worst
+              found.worst = time
+              found.worst_instance = instance
+            end
+            found.examined = instance + 1
+            break found.stopped_at_miss = found.examined < instances if time > level.deadline
+
+            start += level.cost
           end
-          worst = responses.max
-          [worst, responses.first, responses.index(worst), instances]
+          found
         end
 
         # w_m(q), the least fixed point from +start+ (w_m(q) >= w_m(q-1) + C_m).
-        def queuing_delay(instance, cost, blocking, higher, start)
-          base = blocking + (instance * cost)
+        def queuing_delay(instance, level, higher, start)
+          base = level.blocking + (instance * level.cost)
           time = [start, base + higher.total].max
           loop do
             following = base + higher.interference(time + @tau)
@@ -176,12 +227,13 @@ module Syskit
           end
         end
 
-        def result(frame, cost, blocking, response)
-          worst, first, worst_instance, instances = response
+        def result(frame, level, response)
           FrameResult.new(
-            frame: frame, transmission_time: seconds(cost), blocking: seconds(blocking),
-            response_time: worst && seconds(worst), original_response_time: first && seconds(first),
-            worst_instance: worst_instance, instances: instances
+            frame: frame, transmission_time: seconds(level.cost), blocking: seconds(level.blocking),
+            response_time: response && seconds(response.worst),
+            original_response_time: response && seconds(response.first_instance),
+            worst_instance: response&.worst_instance, instances: response&.examined,
+            stopped_at_miss: response ? response.stopped_at_miss : false
           ).freeze
         end
 

@@ -8,9 +8,13 @@ module Syskit
       # or more (no bound); +original_response_time+ is what the 1994
       # analysis gives (the first instance of the busy period only);
       # +worst_instance+ is the q of the instance with the worst response,
-      # +instances+ Q_m.
+      # +instances+ the instances of the busy period examined (Q_m, or
+      # fewer when the later ones cannot respond later, see Analysis).
+      # +stopped_at_miss+: the analysis stopped at the first instance that
+      # misses its deadline, before others that could respond later:
+      # +response_time+ is then a lower bound of the worst case.
       FrameResult = Struct.new(:frame, :transmission_time, :blocking, :response_time, :original_response_time,
-                               :worst_instance, :instances, keyword_init: true) do
+                               :worst_instance, :instances, :stopped_at_miss, keyword_init: true) do
         # Whether the frame always arrives before its deadline.
         def schedulable?
           !response_time.nil? && response_time <= frame.deadline
@@ -24,7 +28,8 @@ module Syskit
 
         # The JSON entry of `syskit bus timing`, times in seconds;
         # +response_time+ is null for a frame that can miss its deadline
-        # (+slack+ then says by how much, when bounded).
+        # (+slack+ then says by how much, when bounded: at least by that
+        # much when +stopped_at_miss+).
         def to_h
           f = frame
           {
@@ -32,7 +37,7 @@ module Syskit
             'period' => f.period.to_f, 'deadline' => f.deadline.to_f, 'jitter' => f.jitter.to_f,
             'transmission_time' => transmission_time.to_f, 'blocking' => blocking.to_f,
             'response_time' => schedulable? ? response_time.to_f : nil, 'slack' => slack&.to_f,
-            'schedulable' => schedulable?
+            'schedulable' => schedulable?, 'stopped_at_miss' => stopped_at_miss
           }
         end
       end

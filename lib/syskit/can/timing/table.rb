@@ -26,8 +26,14 @@ module Syskit
         def row(result)
           f = result.frame
           [f.hex_id, f.device.to_s, f.bytes.to_s, ms(f.period), ms(f.deadline), ms(f.jitter),
-           ms(result.transmission_time), ms(result.blocking), ms(result.response_time), ms(result.slack),
-           status(result)]
+           ms(result.transmission_time), ms(result.blocking), bound('>=', result, result.response_time),
+           bound('<=', result, result.slack), status(result)]
+        end
+
+        # A time of a frame whose analysis stopped at its first late
+        # instance is a bound: marked with +mark+.
+        def bound(mark, result, seconds)
+          result.stopped_at_miss ? "#{mark}#{ms(seconds)}" : ms(seconds)
         end
 
         # 'ok', 'MISS', or 'MISS (unbounded)'.
@@ -44,6 +50,10 @@ module Syskit
           verdict = if misses.zero? then "every frame meets its deadline (#{frames})"
                     else "#{misses} of #{frames} can miss #{misses == 1 ? 'its' : 'their'} deadline"
                     end
+          if result.frames.any?(&:stopped_at_miss)
+            verdict += "\n>= a response time past the deadline is that of the frame's first late instance: " \
+                       'the analysis stops there, later ones may take longer'
+          end
           return verdict unless result.overloaded?
 
           "the bus is loaded #{Format.percent(result.utilization)}: it cannot carry this traffic\n#{verdict}"

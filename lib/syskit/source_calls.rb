@@ -1,0 +1,60 @@
+# frozen_string_literal: true
+
+require 'ripper'
+
+module Syskit
+  # Calls of given methods in a Ruby source, found by Ruby's own parser
+  # before the file runs (register_app in robot configurations, deployment
+  # statements in .orogen files): comments and strings that mention a call
+  # are not calls, and are never taken for one.
+  module SourceCalls
+    # A call found: the method's name, its first argument's text when it
+    # is a plain string literal (nil when it is computed), and its line.
+    Call = Struct.new(:name, :argument, :line)
+
+    # A call node is [name node, arguments node] in one of these shapes:
+    # name 'x' / recv.name 'x' / (recv.)name('x').
+    SHAPES = {
+      command: ->(node) { [node[1], node[2]] },
+      command_call: ->(node) { [node[3], node[4]] },
+      method_add_arg: lambda do |node|
+        callee = node[1]
+        name = callee[0] == :fcall ? callee[1] : callee[3]
+        [name, node[2] && node[2][1]]
+      end
+    }.freeze
+
+    module_function
+
+    # The calls of the methods +names+ in +source+, in source order; none
+    # when Ruby cannot parse it (its evaluation reports that).
+    def find(source, names)
+      found = []
+      walk(Ripper.sexp(source), names.map(&:to_s), found)
+      found.sort_by(&:line)
+    end
+
+    def walk(node, names, found)
+      return unless node.is_a?(Array)
+
+      name, arguments = SHAPES[node[0]]&.call(node)
+      if name.is_a?(Array) && name[0] == :@ident && names.include?(name[1])
+        first = arguments.is_a?(Array) && arguments[0] == :args_add_block ? arguments[1].first : nil
+        found << Call.new(name[1], literal(first), name[2][0])
+      end
+      node.each { |child| walk(child, names, found) }
+    end
+
+    # The text of a plain string literal ('x', "x", %q(x)): no
+    # interpolation, no escape.
+    def literal(node)
+      return unless node.is_a?(Array) && node[0] == :string_literal
+
+      parts = node[1].drop(1)
+      return '' if parts.empty?
+      return unless parts.size == 1 && parts[0][0] == :@tstring_content && !parts[0][1].include?('\\')
+
+      parts[0][1]
+    end
+  end
+end

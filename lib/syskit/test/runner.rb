@@ -36,7 +36,7 @@ module Syskit
             app = value || args.shift
           elsif MINITEST_OPTIONS.key?(name)
             minitest << name
-            minitest << (value || args.shift) if MINITEST_OPTIONS[name]
+            minitest << check_value(name, value || args.shift) if MINITEST_OPTIONS[name]
           elsif arg.start_with?('-') && arg != '-'
             raise unknown_option(arg)
           else
@@ -44,6 +44,15 @@ module Syskit
           end
         end
         Arguments.new(files, minitest, app)
+      end
+
+      # minitest takes a seed that is an integer; anything else would stop it
+      # with a backtrace.
+      def self.check_value(name, value)
+        return value unless %w[-s --seed].include?(name) && !value.to_s.match?(/\A\d+\z/)
+
+        raise Error.new("#{name} takes an integer, got '#{value}'",
+                        hint: "give the seed minitest printed (Run options: --seed 1234), e.g. #{name} 1234")
       end
 
       def self.unknown_option(arg)

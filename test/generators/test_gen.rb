@@ -27,6 +27,11 @@ module Syskit
       end
     RUBY
 
+    # What the README shows `syskit gen app awesome_robot` prints.
+    README_APP_LISTING = File.read(File.join(SelfTest::GEM_ROOT, 'README.md'))[
+      /^\$ syskit gen app awesome_robot\n(.*?\n)\$ /m, 1
+    ]
+
     def tmpdir
       dir = Dir.mktmpdir('syskit-gen')
       (@tmpdirs ||= []) << dir
@@ -62,27 +67,16 @@ module Syskit
       Dir.glob('**/*', File::FNM_DOTMATCH, base: dir).reject { |f| f.end_with?('.') }.sort
     end
 
+    # `rake test` in +app+ as a shell outside this project's Bundler runs
+    # it: the app's Rakefile sets up its own Gemfile.
     def rake_test(app)
-      Open3.capture3(RbConfig.ruby, '-I', LIB, '-S', 'rake', 'test', chdir: app)
+      env = (defined?(Bundler) ? Bundler.unbundled_env : ENV.to_h).except('SYSKIT_PATH', 'RUBYLIB')
+      Open3.capture3(env, RbConfig.ruby, '-S', 'rake', 'test', chdir: app, unsetenv_others: true)
     end
 
     def test_a_new_app_and_every_generated_model_load_and_their_tests_pass
       app, out = new_app
-      assert_equal <<~TEXT, out
-        create Gemfile
-        create README.md
-        create Rakefile
-        create config/orogen/.gitkeep
-        create config/robots/default.rb
-        create config/syskit.yml
-        create models/devices/.gitkeep
-        create models/orogen/.gitkeep
-        create models/profiles/base.rb
-        create models/services/.gitkeep
-        create models/typekits/.gitkeep
-        create test/profiles/test_base.rb
-        AwesomeRobot is in awesome_robot/; next: cd awesome_robot && SYSKIT_PATH=#{GEM_ROOT} bundle exec rake test
-      TEXT
+      assert_equal README_APP_LISTING, out
 
       generate_every_model(app)
       assert_generated_ruby(app)
@@ -163,15 +157,26 @@ module Syskit
       snippets.each { |s| assert_includes text, s, path }
     end
 
-    # The checkout Bundler uses is the one SYSKIT_PATH names, the installed
-    # version otherwise: the file names no path of the machine it was made on.
+    # Made from a checkout, the app's syskit is that checkout, or the one
+    # SYSKIT_PATH names; the source is the machine's (no registry written).
     def assert_gemfile(app)
       gemfile = File.read(File.join(app, 'Gemfile'))
-      refute_match(%r{https?://|rubygems\.org|#{Regexp.escape(GEM_ROOT)}}, gemfile)
+      refute_match(%r{https?://|rubygems\.org}, gemfile)
       assert_equal [:source, Gem.sources.first.uri.to_s], gemfile_calls(gemfile, {}).first
       assert_includes gemfile_calls(gemfile, 'SYSKIT_PATH' => '/src/syskit'),
                       [:gem, ['syskit'], { path: '/src/syskit' }]
+      assert_includes gemfile_calls(gemfile, {}), [:gem, ['syskit'], { path: GEM_ROOT }]
+    end
+
+    # The installed gem's app names its version, or the checkout of
+    # SYSKIT_PATH.
+    def test_the_gemfile_of_an_app_made_by_an_installed_syskit_names_its_version
+      dir = tmpdir
+      generator = Generators::AppGenerator.new('awesome_robot', pwd: dir)
+      gemfile = generator.stub(:checkout?, false) { generator.files.fetch('Gemfile') }
       assert_includes gemfile_calls(gemfile, {}), [:gem, ['syskit', "~> #{VERSION}"], {}]
+      assert_includes gemfile_calls(gemfile, 'SYSKIT_PATH' => '/src/syskit'),
+                      [:gem, ['syskit'], { path: '/src/syskit' }]
     end
 
     # The gem and source calls of +gemfile+ evaluated with +env+ as ENV.
@@ -181,7 +186,7 @@ module Syskit
       dsl.define_singleton_method(:source) { |uri| calls << [:source, uri] }
       dsl.define_singleton_method(:gem) { |*args, **opts| calls << [:gem, args, opts] }
       dsl.define_singleton_method(:env) { env }
-      dsl.instance_eval(gemfile.gsub('ENV[', 'env['))
+      dsl.instance_eval(gemfile.gsub(/\bENV\b/, 'env'))
       calls
     end
 
@@ -249,16 +254,6 @@ module Syskit
       refute File.exist?(File.join(app, 'models', 'orogen', 'broken.rb'))
     end
 
-    def test_the_next_step_of_an_installed_syskit_is_rake_test
-      dir = tmpdir
-      generator = Generators::AppGenerator.new('awesome_robot', pwd: dir)
-      assert_equal 'cd awesome_robot && rake test', Dir.chdir(dir) {
-        generator.stub(:checkout?, false) {
-          generator.next_step
-        }
-      }
-    end
-
     def test_generators_run_in_an_app_only
       out_of_app = tmpdir
       assert_match(/\A#{Regexp.escape(out_of_app)} is not in a Syskit app/,
@@ -269,10 +264,8 @@ module Syskit
       assert_empty Dir.children(out_of_app)
 
       assert_match(/'9lives' is not a valid app name/, refused('app', '9lives', chdir: out_of_app))
-      assert_match(/'foo-bar' is not a valid app name/, refused('app', 'foo-bar', chdir: out_of_app))
-      assert_match(/is not a directory name relative to the current directory/,
-                   refused('app', '/tmp/x', chdir: out_of_app))
-      assert_match(/is not a directory name relative/, refused('app', '../x', chdir: out_of_app))
+      assert_match(/'foo\.bar' is not a valid app name/, refused('app', 'foo.bar', chdir: out_of_app))
+      assert_match(/'9_lives' is not a valid app name/, refused('app', '/tmp/9-lives', chdir: out_of_app))
       assert_empty Dir.children(out_of_app)
     end
 
@@ -299,6 +292,36 @@ module Syskit
                    gen('dev', 'gps/ublox/f9', '--force', chdir: app)
       assert_includes File.read(model), "device_type 'F9' do"
       assert File.file?(test)
+    end
+
+    # As `bundle gem` names a gem, dashes are word breaks; the directory
+    # may be given by any path.
+    def test_an_app_name_with_dashes_and_an_app_anywhere
+      dir = tmpdir
+      out = gen('app', 'my-robot', chdir: dir)
+      assert_match(%r{^MyRobot is in my-robot/; next: cd my-robot && rake test$}, out)
+      assert_file File.join(dir, 'my-robot'), 'config/syskit.yml', "name: MyRobot\n"
+      assert_file File.join(dir, 'my-robot'), 'models/profiles/base.rb', "module MyRobot\n"
+
+      elsewhere = File.join(tmpdir, 'robots', 'sea-bot')
+      out = gen('app', elsewhere, chdir: dir)
+      shown = Regexp.escape(elsewhere)
+      assert_match(%r{^SeaBot is in #{shown}/; next: cd #{shown} && rake test$}, out)
+      out = gen('app', '../up_bot', chdir: File.join(dir, 'my-robot'))
+      assert_match(%r{^UpBot is in \.\./up_bot/; next: cd \.\./up_bot && rake test$}, out)
+      assert File.file?(File.join(dir, 'up_bot', 'Rakefile'))
+
+      # Without config/syskit.yml, an app's name is its directory's.
+      File.delete(File.join(elsewhere, 'config', 'syskit.yml'))
+      out, err, status = run_cli('check', '--app', elsewhere)
+      assert_equal [0, "SeaBot: 0 error(s), 0 warning(s)\n"], [status, out], err
+    end
+
+    # What git should not track in an app: Bundler's files of this machine.
+    def test_a_new_app_has_a_gitignore
+      app, = new_app
+      ignored = File.readlines(File.join(app, '.gitignore'), chomp: true).grep_v(/\A#/)
+      assert_equal %w[/.bundle/ /vendor/bundle/ /Gemfile.lock /tmp/], ignored
     end
 
     def test_a_dry_run_of_an_app_creates_nothing

@@ -23,11 +23,23 @@ module Syskit
         @problems = []
         @data = collecting({}) { read }
         @acronyms = collecting([]) { list('acronyms') }
-        @name = name || collecting(nil) { given_name } || Naming.camelize(File.basename(root), @acronyms)
+        @name = name || collecting(nil) { given_name } || Settings.default_name(root, @acronyms)
         return if Naming.constant_name?(@name)
 
         @problems << directory_name_error(root)
         @name = 'UnnamedApp'
+      end
+
+      # An app's name when config/syskit.yml gives none: its directory's,
+      # camelized, dashes read as underscores as `bundle gem` reads them
+      # (awesome_robot and awesome-robot -> AwesomeRobot).
+      def self.default_name(root, acronyms = [])
+        Naming.camelize(directory_words(File.basename(root)), acronyms)
+      end
+
+      # 'my-robot' -> 'my_robot': a directory name as words camelize joins.
+      def self.directory_words(basename)
+        basename.tr('-', '_')
       end
 
       def [](key)

@@ -57,12 +57,14 @@ module Syskit
 
       desc 'app NAME', 'create a new app in the directory NAME'
       long_desc <<~TEXT
-        Creates the directory NAME (relative to the current directory) with an
-        app's layout: models/{devices,services,orogen,profiles,typekits}, config/orogen,
+        Creates the directory NAME (a relative or absolute path) with an app's
+        layout: models/{devices,services,orogen,profiles,typekits}, config/orogen,
         config/robots/default.rb, config/syskit.yml, test/, a Rakefile, a
-        Gemfile, a README and a first profile, Profiles::Base, with its test.
-        The app's name is NAME's basename, camelized (awesome_robot ->
-        AwesomeRobot). `rake test` passes in the new app.
+        Gemfile naming this syskit (its version, or this checkout's path), a
+        .gitignore, a README and a first profile, Profiles::Base, with its
+        test. The app's name is NAME's basename, camelized, dashes read as
+        underscores (awesome_robot, awesome-robot -> AwesomeRobot). `rake test`
+        and `bundle exec rake test` pass in the new app.
 
         Example: syskit gen app awesome_robot
       TEXT
@@ -174,8 +176,7 @@ module Syskit
         if options[:dry_run]
           puts 'dry run: nothing was written'
         elsif generator.is_a?(Generators::AppGenerator)
-          dir = generator.root.delete_prefix("#{Dir.pwd}/")
-          puts "#{generator.app_name} is in #{dir}/; next: #{generator.next_step}"
+          puts "#{generator.app_name} is in #{generator.dir}/; next: #{generator.next_step}"
         end
       end
 

@@ -67,6 +67,11 @@ module Syskit
       Dir.glob('**/*', File::FNM_DOTMATCH, base: dir).reject { |f| f.end_with?('.') }.sort
     end
 
+    # `syskit test ARGS` (its output is the test process's).
+    def syskit_test(*args, chdir:)
+      Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'test', *args, chdir: chdir)
+    end
+
     # `rake test` in +app+ as a shell outside this project's Bundler runs
     # it: the app's Rakefile sets up its own Gemfile.
     def rake_test(app)
@@ -87,7 +92,7 @@ module Syskit
       assert_equal [0, "AwesomeRobot: 0 error(s), 0 warning(s)\n"], [status, out], err
       out, err, status = rake_test(app)
       assert status.success?, "#{out}\n#{err}"
-      assert_match(/^17 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
+      assert_match(/^18 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
     end
 
     # syskit gen dev, bus, profile and orogen in +app+, from several
@@ -131,7 +136,9 @@ module Syskit
       assert_file app, 'test/orogen/test_my_lib.rb', "using_task_library 'my_lib'\n\nmodule OroGen\n",
                   "  describe my_lib.BusTask do\n", "  describe my_lib.Task do\n", 'it { is_configurable }'
       refute_match(/require/, File.read(File.join(app, 'test', 'orogen', 'test_my_lib.rb')))
-      assert_file app, 'models/orogen/canbus.rb', 'canbus.orogen, bundled with syskit'
+      assert_file app, 'models/orogen/canbus.rb', 'canbus.orogen, bundled with syskit',
+                  "\nrequire 'common_models/models/orogen/canbus'\n"
+      assert_file app, 'test/orogen/test_canbus.rb', "it 'drives CommonModels::Devices::Bus::CAN' do"
       assert_file app, 'config/syskit.yml', "name: AwesomeRobot\n", "acronyms: [GPS, CAN, IMU]\n"
       assert_file app, 'models/services/sensing/pose.rb', "    module Sensing\n", "data_service_type 'Pose' do"
       assert_file app, 'test/services/sensing/test_pose.rb', 'assert Pose.fullfills?(Syskit::DataService)'
@@ -230,6 +237,30 @@ module Syskit
       _, err, status = run_cli('gen', 'orogen', 'gps_ubox', '--trace', chdir: app)
       assert_equal 1, status
       assert_match BACKTRACE, err
+    end
+
+    # As in Rock, an app's extension of canbus replaces the bundled one: it
+    # starts from it with a require, and its test fails without it.
+    def test_an_extension_of_the_bundled_canbus_starts_from_it
+      app, = new_app
+      gen('orogen', 'canbus', chdir: app)
+      extension = File.join(app, 'models', 'orogen', 'canbus.rb')
+      text = File.read(extension)
+      assert_includes text, "# This file takes the place of common_models/models/orogen/canbus.rb,\n" \
+                            "# the canbus extension bundled with syskit, as an app's extension file\n"
+      assert_includes text, "  # Declared by common_models/models/orogen/canbus (required above):\n  " \
+                            "#   driver_for CommonModels::Devices::Bus::CAN, as: 'can'\n"
+      out, err, status = syskit_test('test/orogen/test_canbus.rb', chdir: app)
+      assert status.success?, "#{out}#{err}"
+
+      File.write(extension, text.sub(/^require .*\n/, ''))
+      out, _, status = syskit_test('test/orogen/test_canbus.rb', chdir: app)
+      assert_equal 1, status.exitstatus
+      assert_match(/^canbus::Task no longer drives CommonModels::Devices::Bus::CAN \(keep the require of /, out)
+
+      # Generated again over a file without the require, it has it again.
+      gen('orogen', 'canbus', '--force', chdir: app)
+      assert_equal text, File.read(extension)
     end
 
     def test_orogenconf_names_a_task_model_of_a_known_library

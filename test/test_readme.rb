@@ -19,7 +19,7 @@ module Syskit
     # The tour's snippets headed by a file of the example app are excerpts
     # of that file: each line, in order (comments after code aside).
     def test_the_tour_snippets_are_excerpts_of_the_example_app
-      snippets = README.scan(/^```(?:ruby|yaml)\n# (\S+\.(?:rb|yml))(?: \([^)\n]*\))?\n(.*?)^```/m)
+      snippets = README.scan(/^```(?:ruby|yaml)\n# (\S+\.(?:rb|yml|orogen))(?: \([^)\n]*\))?\n(.*?)^```/m)
       assert_operator snippets.size, :>=, 8
       snippets.each do |path, body|
         file = File.join(EXAMPLE, path)

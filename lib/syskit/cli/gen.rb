@@ -7,6 +7,7 @@ require 'syskit/generators/orogen_generator'
 require 'syskit/generators/profile_generator'
 require 'syskit/generators/service_generator'
 require 'syskit/generators/orogen_conf_generator'
+require 'syskit/generators/task_library_generator'
 
 module Syskit
   # The `syskit` command line (see syskit/cli.rb), here given its `gen` subcommand.
@@ -24,6 +25,7 @@ module Syskit
           syskit gen dev gps/ublox/f9       # models/devices/gps/ublox/f9.rb, Devices::GPS::Ublox::F9
           syskit gen bus can                # models/devices/bus/can.rb, Devices::Bus::CAN
           syskit gen srv pose               # models/services/pose.rb, Services::Pose
+          syskit gen tasklib gps_ublox::F9Task  # models/orogen/gps_ublox.{orogen,rb}, a new library
           syskit gen orogen gps_ublox       # models/orogen/gps_ublox.rb, from gps_ublox.orogen
           syskit gen profile live/base      # models/profiles/live/base.rb, Profiles::Live::Base
           syskit gen orogenconf gps_ublox::Task  # config/orogen/gps_ublox::Task.yml
@@ -129,6 +131,23 @@ module Syskit
         generate { |opts| Generators::OrogenGenerator.new(target_app, library, **opts) }
       end
 
+      desc 'tasklib LIB[::TASK]', 'create a new task library (LIB.orogen, one task context), its extension and test'
+      long_desc <<~TEXT
+        Creates models/orogen/LIB.orogen, a task library in oroGen's syntax
+        with one task context, TASK (Task by default), that declares a
+        property and an output port, and examples in comments of what
+        else a task context declares. Also writes its extension,
+        models/orogen/LIB.rb, and test/orogen/test_LIB.rb, as gen orogen
+        does. A library of that name bundled with syskit, in a bundle or on
+        SYSKIT_OROGEN_PATH is not hidden: extend it with gen orogen LIB.
+
+        Example: syskit gen tasklib gps_ublox::F9Task
+      TEXT
+      method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
+      def tasklib(name)
+        generate { |opts| Generators::TaskLibraryGenerator.new(target_app, name, **opts) }
+      end
+
       desc 'orogenconf LIB::TASK', 'create the configuration file of a task model, with its properties'
       long_desc <<~TEXT
         Creates config/orogen/LIB::TASK.yml with a 'default' section that sets
@@ -187,7 +206,7 @@ module Syskit
       end
     end
 
-    desc 'gen SUBCOMMAND', 'generate an app, a device, a bus, a data service, a task library extension, ' \
+    desc 'gen SUBCOMMAND', 'generate an app, a device, a bus, a data service, a task library or its extension, ' \
                            'a configuration file or a profile'
     subcommand 'gen', Gen
   end

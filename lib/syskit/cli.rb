@@ -93,6 +93,7 @@ module Syskit
         result = Network::Generator.plan_profile(app, profile, actions: actions, robot: options[:robot])
         RENDERERS.fetch(options[:format]).write(result.plan, $stdout)
         note_warnings(app)
+        note_missed_deadlines(profile)
       end
     end
 
@@ -149,6 +150,19 @@ module Syskit
       return unless count.positive?
 
       warn Style.for($stderr).warning("#{Naming.count(count, 'warning')} while loading (syskit check lists them)")
+    end
+
+    # A plan whose CAN frames can miss their deadline is still printed
+    # (syskit check reports it as an error): one line per bus on stderr
+    # says so and which command shows why.
+    def note_missed_deadlines(profile)
+      require 'syskit/cli/bus_timing'
+      style = Style.for($stderr)
+      BusTiming.missed_deadlines(profile).each do |bus, missed, total|
+        warn style.warning("#{bus}: #{Naming.count(missed, 'frame')} of #{total} can miss " \
+                           "#{missed == 1 ? 'its' : 'their'} deadline " \
+                           "(syskit bus timing #{profile.name} --bus #{bus.name} shows which)")
+      end
     end
 
     def print_check(app, report)

@@ -76,7 +76,8 @@ module Syskit
       configuration, ports, connections and the configure/start order.
 
       PROFILE is the profile's name or its end (Live::Base), or the path form
-      of gen profile (live/base). Without PROFILE, the app's first profile.
+      of gen profile (live/base); Base is Profiles::Base when there is one.
+      Without PROFILE, the app's first profile.
       Without --app, the app containing the current directory, else (in a
       checkout of syskit) the example app.
 

@@ -39,6 +39,13 @@ module Syskit
       assert_empty err
     end
 
+    # As plan does, without PROFILE the app's first profile.
+    def test_the_first_profile_by_default
+      out, err, status = timing('--bus', 'can1', '--app', EXAMPLE)
+      assert_equal 0, status, err
+      assert_equal timing('Live::Base', '--bus', 'can1', '--app', EXAMPLE).first, out
+    end
+
     def test_json
       out, err, status = timing('Live::Base', '--bus', 'can0', '--app', EXAMPLE, '--format', 'json')
       assert_equal 0, status, err

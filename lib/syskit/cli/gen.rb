@@ -21,17 +21,19 @@ module Syskit
 
       EXAMPLES = <<~TEXT
         Examples:
-          syskit gen app awesome_robot      # a new app in ./awesome_robot
-          syskit gen dev gps/ublox/f9       # models/devices/gps/ublox/f9.rb, Devices::GPS::Ublox::F9
-          syskit gen bus can                # models/devices/bus/can.rb, Devices::Bus::CAN
-          syskit gen srv pose               # models/services/pose.rb, Services::Pose
-          syskit gen tasklib gps_ublox::F9Task  # models/orogen/gps_ublox.{orogen,rb}, a new library
-          syskit gen orogen gps_ublox       # models/orogen/gps_ublox.rb, from gps_ublox.orogen
-          syskit gen profile live/base      # models/profiles/live/base.rb, Profiles::Live::Base
+          syskit gen app awesome_robot           # a new app in ./awesome_robot
+          syskit gen dev gps/ublox/f9            # Devices::GPS::Ublox::F9
+          syskit gen bus can                     # Devices::Bus::CAN
+          syskit gen srv pose                    # Services::Pose
+          syskit gen tasklib gps_ublox::F9Task   # a new gps_ublox.orogen
+          syskit gen orogen gps_ublox            # the extension of gps_ublox.orogen
           syskit gen orogenconf gps_ublox::Task  # config/orogen/gps_ublox::Task.yml
+          syskit gen profile live/base           # Profiles::Live::Base
 
-        Names are given in path form (gps/ublox/f9) or constant form (GPS::Ublox::F9);
-        the acronyms of config/syskit.yml are kept (GPS, not Gps).
+        Names are given in path form (gps/ublox/f9) or constant form
+        (GPS::Ublox::F9); the acronyms of config/syskit.yml are kept (GPS, not
+        Gps). Each model is in the file its name says, with a test next to it
+        (models/devices/gps/ublox/f9.rb, test/devices/gps/ublox/test_f9.rb).
       TEXT
 
       def self.exit_on_failure?
@@ -206,8 +208,7 @@ module Syskit
       end
     end
 
-    desc 'gen SUBCOMMAND', 'generate an app, a device, a bus, a data service, a task library or its extension, ' \
-                           'a configuration file or a profile'
+    desc 'gen SUBCOMMAND', 'write new files: an app, models, task libraries, configuration (with tests)'
     subcommand 'gen', Gen
   end
 end

@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require 'set'
 require 'thor'
 require 'syskit'
 require 'syskit/check'
@@ -172,17 +173,20 @@ module Syskit
       # Files in the order their first problem was found, which puts the
       # cause before what follows from it; lines in order within a file.
       groups = report.problems.group_by { |p| p.location&.relative_path(app.root).to_s }
+      hints = Set.new
       groups.each_with_index do |(_file, problems), i|
         puts if i.positive?
-        print_problems(app, problems)
+        print_problems(app, problems, hints)
       end
       puts "#{app.name}: #{report.errors.size} error(s), #{report.warnings.size} warning(s)"
     end
 
-    # The problems of one file, in line order.
-    def print_problems(app, problems)
+    # The problems of one file, in line order. A warning's hint is given
+    # once, under the first warning of its kind (+hints+: those given).
+    def print_problems(app, problems, hints)
       style = Style.for($stdout)
       problems.sort_by { |p| p.location&.lineno.to_i }.each do |p|
+        p = p.without_hint if p.is_a?(Warning) && p.hint && !hints.add?(p.hint)
         puts style.report(p, app.root)
         puts((p.backtrace || []).map { |l| "    #{l}" }) if trace?
       end

@@ -40,7 +40,7 @@ module Syskit
       # keeps it for each.
       assert_equal ["  hint: syskit plans devices, buses and their drivers; this has no effect on the plan\n"],
                    out.lines.grep(/hint:/)
-      assert_equal "models/actions/main.rb:4: warning: action interface Rover::Actions::Main: not modelled by this " \
+      assert_equal 'models/actions/main.rb:4: warning: action interface Rover::Actions::Main: not modelled by this ' \
                    "gem, ignored in the plan\n", out.lines.first
       assert_match(/\A  hint: /, out.lines[1])
       json, = run_cli('check', '--app', ROVER, '--format', 'json')

@@ -12,6 +12,7 @@ require 'syskit/cli/support'
 require 'syskit/cli/command_line'
 require 'syskit/cli/style'
 require 'syskit/cli/help'
+require 'syskit/cli/plan_files'
 require 'syskit/test/runner'
 
 module Syskit
@@ -84,19 +85,54 @@ module Syskit
 
       --format svg draws the dot graph with graphviz (which must be installed).
 
-      Example: syskit plan Live::Base temperature_sensor_dev --format json
+      --diff OLD.json prints what changed since the plan in OLD.json (written
+      by --format json) instead of the plan: see syskit diff.
+
+      Examples: syskit plan Live::Base temperature_sensor_dev --format json
+                syskit plan Live::Base --diff plan-before.json
     TEXT
     method_option :app, type: :string, desc: 'the app directory'
     method_option :robot, type: :string, default: 'default', desc: 'the robot configuration (config/robots/NAME.rb)'
     method_option :format, type: :string, default: 'text', enum: RENDERERS.keys, desc: 'output format'
+    method_option :diff, type: :string, banner: 'OLD.json', desc: 'print what changed since the plan in OLD.json'
+    method_option :exit_code, type: :boolean, default: false, desc: 'with --diff: exit status 1 when the plans differ'
     def plan(profile_name = nil, *actions)
       with_app(robots: [options[:robot]]) do |app|
+        old = read_old_plan
         profile = find_profile(app, profile_name)
         result = Network::Generator.plan_profile(app, profile, actions: actions, robot: options[:robot])
-        RENDERERS.fetch(options[:format]).write(result.plan, $stdout)
+        if old
+          print_diff(old, PlanFiles.plain(result.plan), new_name: "syskit plan #{[profile.name, *actions].join(' ')}")
+        else
+          RENDERERS.fetch(options[:format]).write(result.plan, $stdout)
+        end
         note_warnings(app)
         note_missed_deadlines(profile)
+        exit(1) if @plans_differ
       end
+    end
+
+    desc 'diff OLD.json NEW.json', 'what changed between two plans written by syskit plan --format json'
+    long_desc <<~TEXT
+      Compares two plans, as syskit plan --format json writes them, for a
+      review before the change meets hardware: per list of the plan (tasks,
+      devices, connections, order, buses), the entries added (+), removed
+      (-) and changed (~, each value that changed: deployment, configuration
+      properties and conf sections, ports, policies, bus frames...), and the
+      steps that moved in the start order. Where things are declared
+      (declared_at) is not compared. --format json gives the same for
+      programs. Exit status 0, or with --exit-code 1 when the plans differ.
+
+      Example: git show main:plan.json > old.json && syskit diff old.json plan.json
+    TEXT
+    method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
+    method_option :exit_code, type: :boolean, default: false, desc: 'exit status 1 when the plans differ'
+    def diff(old_path, new_path)
+      reporting_errors(-> { Dir.pwd }) do
+        old = PlanFiles.read(old_path)
+        print_diff(old, PlanFiles.read(new_path), old_name: old_path, new_name: new_path)
+      end
+      exit(1) if @plans_differ
     end
 
     desc 'check', 'load an app, generate every profile on every robot, report every problem'
@@ -144,6 +180,26 @@ module Syskit
     end
 
     private
+
+    # The plan of --diff, read before the app is generated; a format that
+    # is not text or JSON has no diff.
+    def read_old_plan
+      return unless options[:diff]
+
+      unless %w[text json].include?(options[:format])
+        raise Error.new("--diff prints the difference as text or json, not #{options[:format]}",
+                        hint: 'leave out --format, or give --format json')
+      end
+      PlanFiles.read(options[:diff])
+    end
+
+    # Prints the diff of two plan documents; remembers whether they differ
+    # for --exit-code.
+    def print_diff(old, new, new_name:, old_name: options[:diff])
+      diff, text = PlanFiles.render(old, new, options[:format], old_name: old_name, new_name: new_name)
+      $stdout.write(text)
+      @plans_differ = options[:exit_code] && !diff.empty?
+    end
 
     # Warnings do not stop a plan (constructs of Rock files this gem does
     # not model, ...): one line on stderr says there are some.

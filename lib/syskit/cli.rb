@@ -88,8 +88,9 @@ module Syskit
       --diff OLD.json prints what changed since the plan in OLD.json (written
       by --format json) instead of the plan: see syskit diff.
 
-      Examples: syskit plan Live::Base temperature_sensor_dev --format json
-                syskit plan Live::Base --diff plan-before.json
+      Example: syskit plan Live::Base temperature_sensor_dev --format json
+
+      Example: syskit plan Live::Base --diff plan-before.json
     TEXT
     method_option :app, type: :string, desc: 'the app directory'
     method_option :robot, type: :string, default: 'default', desc: 'the robot configuration (config/robots/NAME.rb)'

@@ -19,9 +19,14 @@ module Syskit
         DSL.app!.import_types(name.to_s, location: Location.of_caller)
       end
 
-      # A Ruby library of Rock's runtime that is not installed here is not
-      # modelled: requiring it is a warning, and the file goes on loading.
+      # A file of the app or of its bundles is loaded by the app (see
+      # App::Files#required_file). A Ruby library of Rock's runtime that is
+      # not installed here is not modelled: requiring it is a warning, and
+      # the file goes on loading.
       def require(name)
+        path = Syskit.app&.required_file(name) if name.is_a?(String)
+        return Syskit.app.load_file(path) if path
+
         super
       rescue LoadError
         raise unless Syskit.app && Compat.runtime_library?(name)

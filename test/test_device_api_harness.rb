@@ -1,8 +1,6 @@
 # frozen_string_literal: true
 
 require 'helper'
-require 'open3'
-require 'rbconfig'
 
 module Syskit
   # The device API a driver author calls in configure and in tests
@@ -11,7 +9,7 @@ module Syskit
   class TestDeviceApiHarness < Minitest::Test
     def test_the_device_api_app_tests_pass
       app = fixture('device_api')
-      out, err, status = Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'test', '--app', app)
+      out, err, status = syskit_process('test', '--app', app)
       assert status.success?, "#{out}\n#{err}"
       assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors/, out)
     end

@@ -180,8 +180,7 @@ module Syskit
     end
 
     def test_exit_status_of_the_real_executable
-      _, err, status = Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'plan', 'Nope',
-                                      '--app', EXAMPLE)
+      _, err, status = syskit_process('plan', 'Nope', '--app', EXAMPLE)
       assert_equal 1, status.exitstatus
       assert_match(/no profile named 'Nope'/, err)
     end
@@ -193,7 +192,8 @@ module Syskit
     def on_terminal(*args, env: {})
       require 'pty'
       out = +''
-      PTY.spawn(env, RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), *args) do |reader, _, pid|
+      PTY.spawn(SelfTest.child_env.merge(env), RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), *args,
+                unsetenv_others: true) do |reader, _, pid|
         begin
           reader.each_line { |l| out << l }
         rescue Errno::EIO

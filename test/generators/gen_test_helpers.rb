@@ -46,7 +46,7 @@ module Syskit
 
     # `syskit test ARGS` (its output is the test process's).
     def syskit_test(*args, chdir:)
-      Open3.capture3(RbConfig.ruby, File.join(SelfTest::GEM_ROOT, 'bin', 'syskit'), 'test', *args, chdir: chdir)
+      syskit_process('test', *args, chdir: chdir)
     end
 
     # `rake test` in +app+ as a shell outside this project's Bundler runs

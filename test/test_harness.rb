@@ -6,7 +6,6 @@ module Syskit
   # `require 'syskit/test'`, `syskit test` and `rake test` in apps, run as
   # users run them: in a separate process.
   class TestHarness < Minitest::Test
-
     def syskit_test(app, *files)
       syskit_process('test', '--app', app, *files)
     end

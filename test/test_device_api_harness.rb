@@ -7,6 +7,9 @@ module Syskit
   # (slave devices and their lookups, each_attached_device on a bus
   # driver), through `require 'syskit/test'` in an app, as users run it.
   class TestDeviceApiHarness < Minitest::Test
+    # Processes only: run beside the in-process tests (see SelfTest::ProcessTestsFirst).
+    parallelize_me!
+
     def test_the_device_api_app_tests_pass
       app = fixture('device_api')
       out, err, status = syskit_process('test', '--app', app)

@@ -6,6 +6,9 @@ module Syskit
   # `require 'syskit/test'`, `syskit test` and `rake test` in apps, run as
   # users run them: in a separate process.
   class TestHarness < Minitest::Test
+    # Processes only: run beside the in-process tests (see SelfTest::ProcessTestsFirst).
+    parallelize_me!
+
     def syskit_test(app, *files)
       syskit_process('test', '--app', app, *files)
     end

@@ -266,6 +266,16 @@ module Syskit
       assert_equal [0, "SeaBot: 0 error(s), 0 warning(s)\n"], [status, out], err
     end
 
+    # The README's session of generators prints what the commands print.
+    def test_the_readme_session
+      session = File.read(File.join(GEM_ROOT, 'README.md'))[/^\$ cd awesome_robot\n(.*?)^\$ rake test/m, 1]
+      app, = new_app
+      session.scan(/^\$ syskit gen (.*)\n((?:[^$].*\n)*)/).each do |args, output|
+        assert_equal output, gen(*args.split, chdir: app), "syskit gen #{args}"
+      end
+      assert_operator session.scan('$ syskit gen').size, :>=, 7
+    end
+
     # What git should not track in an app: Bundler's files of this machine.
     def test_a_new_app_has_a_gitignore
       app, = new_app

@@ -194,6 +194,7 @@ module Syskit
       def print_entries(generator, entries)
         prefix = options[:dry_run] ? 'would ' : ''
         entries.each { |e| puts "#{prefix}#{e.overwrite ? 'overwrite' : 'create'} #{e.path}" }
+        generator.notes.each { |note| puts "note: #{note}" }
         if options[:dry_run]
           puts 'dry run: nothing was written'
         elsif generator.is_a?(Generators::AppGenerator)

@@ -38,6 +38,11 @@ module Syskit
         FileWriter.new(root, allowed: ['.'], force: @force, dry_run: @dry_run).write(files)
       end
 
+      # The app's next step is said instead (see #next_step).
+      def notes
+        []
+      end
+
       # Relative path => content of the files to write.
       def files
         locals = { app_name: app_name, dir_name: File.basename(root), acronyms: ACRONYMS, version: Syskit::VERSION,

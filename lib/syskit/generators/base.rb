@@ -50,6 +50,12 @@ module Syskit
         FileWriter.new(root, allowed: self.class::ALLOWED, force: @force, dry_run: @dry_run).write(files)
       end
 
+      # What the user should know of the files written, after #run: none
+      # unless a generator says otherwise.
+      def notes
+        []
+      end
+
       # The modules a generated file of +kind+ ('Devices', 'Profiles') for
       # +name+ is nested in: AppName::Kind::Name's namespace.
       def self.modules_for(app_name, kind, name)

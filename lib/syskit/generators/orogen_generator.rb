@@ -37,6 +37,7 @@ module Syskit
       # read the task library's specification.
       def files
         spec_path, tasks, base = read_library
+        @notes = base ? [base_note(base)] : []
         locals = { app_name: app_name, library: library, spec_path: spec_path, tasks: tasks, base: base,
                    modules: Template::Modules.new(app_name.split('::')) }
         {
@@ -45,7 +46,17 @@ module Syskit
         }
       end
 
+      # The extension an app's file takes the place of, when there is one.
+      def notes
+        @notes || []
+      end
+
       private
+
+      def base_note(base)
+        "models/orogen/#{library}.rb takes the place of the #{library} extension #{base.origin}: it starts with " \
+          "require '#{base.require_path}', which keeps what that file declares"
+      end
 
       # Where the .orogen file is, for the file's header, and its tasks.
       def read_library

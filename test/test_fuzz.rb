@@ -249,9 +249,12 @@ module Syskit
       out, err, status = Open3.capture3(SelfTest.child_env.merge('SYSKIT_FUZZ_IN_PROCESS' => '1'), RbConfig.ruby,
                                         '-Ilib', '-Itest', __FILE__, '-n', "/#{name}/",
                                         chdir: SelfTest::GEM_ROOT, unsetenv_others: true)
-      summary = out[/^fuzz: .*$/]
-      puts "\n#{summary}" if summary
       assert status.success?, "the fuzz process failed:\n#{out}#{err}"
+      summary = out[/^fuzz: .*$/]
+      assert summary, "the fuzz process ran no iteration:\n#{out}#{err}"
+      # On the terminal's stdout: this thread runs beside tests that take
+      # $stdout over to read what the CLI prints.
+      STDOUT.puts "\n#{summary}" # rubocop:disable Style/GlobalStdStream
     end
 
     def print_summary(runs, failed, elapsed)

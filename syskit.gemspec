@@ -19,7 +19,7 @@ Gem::Specification.new do |spec|
   spec.homepage = 'https://www.rock-robotics.org'
   spec.required_ruby_version = '>= 3.1'
 
-  spec.files = Dir['lib/**/*.rb', 'bundles/**/*', 'templates/**/*', 'bin/*', 'README.md', 'LICENSE']
+  spec.files = Dir['lib/**/*.rb', 'bundles/**/*', 'templates/**/*', 'bin/*', 'README.md', 'CHANGELOG.md', 'LICENSE']
   spec.bindir = 'bin'
   spec.executables = ['syskit']
   spec.require_paths = ['lib']

@@ -4,6 +4,8 @@ require 'minitest/autorun'
 require 'syskit'
 require 'syskit/cli'
 require 'fileutils'
+require 'open3'
+require 'rbconfig'
 require 'stringio'
 require 'tmpdir'
 
@@ -121,6 +123,31 @@ module Syskit
       error
     end
 
+    # The environment of the processes tests start: this one's without
+    # Bundler's setup, which costs each Ruby process a resolution of the
+    # Gemfile (0.2 s of CPU), but with the load paths of the gems this
+    # process uses, so that they find the same gems.
+    def self.child_env
+      @child_env ||= begin
+        base = defined?(Bundler) ? Bundler.unbundled_env : ENV.to_h
+        paths = Gem.loaded_specs.values.flat_map(&:full_require_paths).uniq
+        base.merge('RUBYLIB' => [*paths, base['RUBYLIB']].compact.join(File::PATH_SEPARATOR)).freeze
+      end
+    end
+
+    # bin/syskit ARGS in a process of its own, in SelfTest.child_env with
+    # +env+; returns [stdout, stderr, Process::Status].
+    def syskit_process(*args, chdir: GEM_ROOT, env: {})
+      Open3.capture3(SelfTest.child_env.merge(env), RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), *args,
+                     chdir: chdir, unsetenv_others: true)
+    end
+
+    # `rake ARGS` with this checkout's lib/ first, as tests of apps run it.
+    def rake_process(*args, chdir:)
+      Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'), '-S', 'rake', *args,
+                     chdir: chdir, unsetenv_others: true)
+    end
+
     # Runs bin/syskit in this process; returns [stdout, stderr, exit status].
     def run_cli(*args, chdir: GEM_ROOT)
       out = StringIO.new
@@ -169,3 +196,35 @@ module Syskit
 end
 
 Minitest::Test.include(Syskit::SelfTest)
+
+module Syskit
+  module SelfTest
+    # Tests that only run syskit (or rake, gem, bundle) in processes of
+    # their own declare `parallelize_me!`: they spend their time waiting on
+    # those processes. minitest runs such tests after the others; queued
+    # first, they run on the machine's other core while this process runs
+    # the tests that load apps in it (which share globals and run one at a
+    # time). The suite takes the time of the longer of the two.
+    module ProcessTestsFirst
+      def __run(reporter, options)
+        parallel, serial = Minitest::Runnable.runnables.shuffle.partition { |s| s.test_order == :parallel }
+        parallel.map { |suite| suite.run(reporter, options) } + serial.map { |suite| suite.run(reporter, options) }
+      end
+    end
+
+    # With tests in parallel threads, the other tests record their results
+    # under the reporter's lock too (minitest's parallel tests do).
+    module LockedRecords
+      def run_one_method(klass, method_name, reporter)
+        reporter.synchronize { reporter.prerecord(klass, method_name) }
+        result = Minitest.run_one_method(klass, method_name)
+        reporter.synchronize { reporter.record(result) }
+      end
+    end
+  end
+end
+
+Minitest.singleton_class.prepend(Syskit::SelfTest::ProcessTestsFirst)
+Minitest::Runnable.singleton_class.prepend(Syskit::SelfTest::LockedRecords)
+# Computed before any test runs, from the environment the suite started in.
+Syskit::SelfTest.child_env

@@ -39,8 +39,8 @@ module Syskit
 
     def test_a_reader_that_goes_away_ends_the_command_quietly
       root = my_app("device(Devices::IMU, as: 'imu')\n")
-      Open3.popen3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'plan', '--app', root,
-                   '--format', 'json') do |_in, out, err, wait|
+      Open3.popen3(SelfTest.child_env, RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'plan', '--app', root,
+                   '--format', 'json', unsetenv_others: true) do |_in, out, err, wait|
         out.close
         assert_equal 0, wait.value.exitstatus
         assert_empty err.read
@@ -48,9 +48,14 @@ module Syskit
     end
 
     def test_ctrl_c_exits_quietly_with_status_one_hundred_thirty
-      root = my_app(nil, 'models/devices/slow.rb' => "sleep 30\n")
-      Open3.popen3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'check', '--app', root) do |_in, out, err, wait|
-        sleep 1.5
+      ready = File.join(Dir.mktmpdir('syskit-ready'), 'loading')
+      (@tmpdirs ||= []) << File.dirname(ready)
+      # A model file that says it is being loaded, then takes its time.
+      root = my_app(nil, 'models/devices/slow.rb' => "File.write(#{ready.inspect}, '')\nsleep 30\n")
+      Open3.popen3(SelfTest.child_env, RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'check', '--app', root,
+                   unsetenv_others: true) do |_in, out, err, wait|
+        deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 30
+        sleep 0.02 until File.exist?(ready) || Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
         Process.kill('INT', wait.pid)
         assert_equal 130, wait.value.exitstatus
         assert_empty out.read

@@ -12,11 +12,18 @@ module Syskit
   # backtrace, or a hang.
   #
   # Bounded and deterministic: a fixed seed, at most ITERATIONS runs and
-  # BUDGET seconds. Each iteration has its own random generator, so one can
-  # be replayed alone:
+  # BUDGET seconds of CPU (so that a loaded machine runs as many). Each
+  # iteration has its own random generator, so one can be replayed alone:
   #
   #   SYSKIT_FUZZ_SEED=1 SYSKIT_FUZZ_ONLY=123 ruby -Ilib -Itest test/test_fuzz.rb
+  #
+  # In the suite, the iterations run in a process of their own, beside the
+  # tests that load apps in the suite's process (see
+  # SelfTest::ProcessTestsFirst); that process runs this file with
+  # SYSKIT_FUZZ_IN_PROCESS set.
   class TestFuzz < Minitest::Test
+    parallelize_me! unless ENV['SYSKIT_FUZZ_IN_PROCESS']
+
     SEED = Integer(ENV.fetch('SYSKIT_FUZZ_SEED', '20_250_601').delete('_'))
     ITERATIONS = Integer(ENV.fetch('SYSKIT_FUZZ_ITERATIONS', '450'))
     BUDGET = Float(ENV.fetch('SYSKIT_FUZZ_SECONDS', '12'))
@@ -217,6 +224,8 @@ module Syskit
     end
 
     def test_mutated_apps_fail_with_located_errors_only
+      return in_a_process_of_its_own unless ENV['SYSKIT_FUZZ_IN_PROCESS'] || ONLY
+
       check_the_bases_work
       started = now
       runs = []
@@ -234,15 +243,31 @@ module Syskit
 
     private
 
+    # Runs this test in a Ruby process of its own, and gives its summary and
+    # failures.
+    def in_a_process_of_its_own
+      out, err, status = Open3.capture3(SelfTest.child_env.merge('SYSKIT_FUZZ_IN_PROCESS' => '1'), RbConfig.ruby,
+                                        '-Ilib', '-Itest', __FILE__, '-n', "/#{name}/",
+                                        chdir: SelfTest::GEM_ROOT, unsetenv_others: true)
+      assert status.success?, "the fuzz process failed:\n#{out}#{err}"
+      summary = out[/^fuzz: .*$/]
+      assert summary, "the fuzz process ran no iteration:\n#{out}#{err}"
+      # On the terminal's stdout: this thread runs beside tests that take
+      # $stdout over to read what the CLI prints.
+      STDOUT.puts "\n#{summary}" # rubocop:disable Style/GlobalStdStream
+    end
+
     def print_summary(runs, failed, elapsed)
-      puts format("\nfuzz: %<n>d iterations (seed %<seed>d) in %<t>.1fs, %<ok>d accepted, %<err>d located errors, " \
-                  '%<bad>d failures',
+      puts format("\nfuzz: %<n>d iterations (seed %<seed>d) in %<t>.1fs of CPU, %<ok>d accepted, " \
+                  '%<err>d located errors, %<bad>d failures',
                   n: runs.size, seed: SEED, t: elapsed, ok: runs.count { |r| r.status.zero? },
                   err: runs.count { |r| r.status == 1 && r.problems.empty? }, bad: failed.size)
     end
 
+    # The CPU time of this process: the budget holds as many iterations
+    # whatever else the machine runs.
     def now
-      Process.clock_gettime(Process::CLOCK_MONOTONIC)
+      Process.clock_gettime(Process::CLOCK_PROCESS_CPUTIME_ID)
     end
 
     def read_tree(dir)

@@ -1,17 +1,16 @@
 # frozen_string_literal: true
 
 require 'helper'
-require 'open3'
-require 'rbconfig'
 
 module Syskit
   # `require 'syskit/test'`, `syskit test` and `rake test` in apps, run as
   # users run them: in a separate process.
   class TestHarness < Minitest::Test
-    LIB = File.join(GEM_ROOT, 'lib')
+    # Processes only: run beside the in-process tests (see SelfTest::ProcessTestsFirst).
+    parallelize_me!
 
     def syskit_test(app, *files)
-      Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'test', '--app', app, *files)
+      syskit_process('test', '--app', app, *files)
     end
 
     def test_the_seed_test_snippets_pass_as_written
@@ -23,8 +22,7 @@ module Syskit
     end
 
     def test_rake_test_in_the_example_app
-      out, err, status = Open3.capture3(RbConfig.ruby, '-I', LIB, '-S', 'rake', 'test',
-                                        chdir: File.join(GEM_ROOT, 'examples', 'awesome_robot'))
+      out, err, status = rake_process('test', chdir: File.join(GEM_ROOT, 'examples', 'awesome_robot'))
       assert status.success?, "#{out}\n#{err}"
       assert_match(/\d+ runs, \d+ assertions, 0 failures, 0 errors/, out)
     end

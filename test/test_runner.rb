@@ -1,18 +1,19 @@
 # frozen_string_literal: true
 
 require 'helper'
-require 'open3'
-require 'rbconfig'
 
 module Syskit
   # `syskit test` running test files as Syskit writes them (SPEC 12):
   # test/fixtures/rock/rover/test has them in each of Syskit's forms.
   class TestRunner < Minitest::Test
+    # Processes only: run beside the in-process tests (see SelfTest::ProcessTestsFirst).
+    parallelize_me!
+
     ROVER = File.join(FIXTURES, 'rock', 'rover')
     BACKTRACE = /\.rb:\d+:in `/
 
     def syskit_test(*args, chdir: GEM_ROOT)
-      Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'test', *args, chdir: chdir)
+      syskit_process('test', *args, chdir: chdir)
     end
 
     def test_test_files_in_syskits_forms_pass_and_runtime_tests_are_skipped_with_the_reason
@@ -36,8 +37,7 @@ module Syskit
       app = write_app({ 'Rakefile' => "require 'syskit/rake'\n",
                         'config/syskit.yml' => "name: Plain\n",
                         'test/test_plain.rb' => "describe 'a plain test' do\n  it('runs') { assert true }\nend\n" })
-      out, err, status = Open3.capture3(RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'), '-S', 'rake', 'test',
-                                        'TESTOPTS=-v', chdir: app)
+      out, err, status = rake_process('test', 'TESTOPTS=-v', chdir: app)
       assert status.success?, "#{out}\n#{err}"
       assert_match(/^a plain test#test_0001_runs = /, out)
     end

@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require 'set'
 require 'thor'
 require 'syskit'
 require 'syskit/printable'
@@ -13,6 +14,7 @@ require 'syskit/cli/support'
 require 'syskit/cli/command_line'
 require 'syskit/cli/style'
 require 'syskit/cli/help'
+require 'syskit/cli/plan_files'
 require 'syskit/test/runner'
 
 module Syskit
@@ -83,7 +85,8 @@ module Syskit
       ports, connections and the configure/start order.
 
       PROFILE is the profile's name or its end (Live::Base), or the path form
-      of gen profile (live/base). Without PROFILE, the app's first profile.
+      of gen profile (live/base); Base is Profiles::Base when there is one.
+      Without PROFILE, the app's first profile.
       Without --app, the app containing the current directory, else (in a
       checkout of syskit) the example app.
 
@@ -91,19 +94,33 @@ module Syskit
       The picture shows the ports the plan connects; --all-ports shows every
       port.
 
+      --diff OLD.json prints what changed since the plan in OLD.json (written
+      by --format json) instead of the plan: see syskit diff.
+
       Example: syskit plan Live::Base temperature_sensor_dev --format json
+
+      Example: syskit plan Live::Base --diff plan-before.json
     TEXT
     method_option :app, type: :string, desc: 'the app directory'
     method_option :robot, type: :string, default: 'default', desc: 'the robot configuration (config/robots/NAME.rb)'
     method_option :format, type: :string, default: 'text', enum: RENDERERS.keys, desc: 'output format'
     method_option :all_ports, type: :boolean, default: false, desc: 'dot and svg: draw unconnected ports too'
+    method_option :diff, type: :string, banner: 'OLD.json', desc: 'print what changed since the plan in OLD.json'
+    method_option :exit_code, type: :boolean, default: false, desc: 'with --diff: exit status 1 when the plans differ'
     def plan(profile_name = nil, *actions)
       with_app(robots: [options[:robot]]) do |app|
+        old = read_old_plan
         profile = find_profile(app, profile_name)
         result = plan_actions(app, profile, actions)
-        picture = %w[dot svg].include?(options[:format]) ? { all_ports: options[:all_ports] } : {}
-        RENDERERS.fetch(options[:format]).write(result.plan, $stdout, **picture)
+        if old
+          print_diff(old, PlanFiles.plain(result.plan), new_name: "syskit plan #{[profile.name, *actions].join(' ')}")
+        else
+          picture = %w[dot svg].include?(options[:format]) ? { all_ports: options[:all_ports] } : {}
+          RENDERERS.fetch(options[:format]).write(result.plan, $stdout, **picture)
+        end
         note_warnings(app)
+        note_missed_deadlines(profile)
+        exit(1) if @plans_differ
       end
     end
 
@@ -121,6 +138,29 @@ module Syskit
           hint: "plan one at a time: syskit plan #{profile.name} #{definitions.first}_def"
         )]
       end
+    end
+
+    desc 'diff OLD.json NEW.json', 'what changed between two plans written by syskit plan --format json'
+    long_desc <<~TEXT
+      Compares two plans, as syskit plan --format json writes them, for a
+      review before the change meets hardware: per list of the plan (tasks,
+      devices, connections, order, buses), the entries added (+), removed
+      (-) and changed (~, each value that changed: deployment, configuration
+      properties and conf sections, ports, policies, bus frames...), and the
+      steps that moved in the start order. Where things are declared
+      (declared_at) is not compared. --format json gives the same for
+      programs. Exit status 0, or with --exit-code 1 when the plans differ.
+
+      Example: git show main:plan.json > old.json && syskit diff old.json plan.json
+    TEXT
+    method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
+    method_option :exit_code, type: :boolean, default: false, desc: 'exit status 1 when the plans differ'
+    def diff(old_path, new_path)
+      reporting_errors(-> { Dir.pwd }) do
+        old = PlanFiles.read(old_path)
+        print_diff(old, PlanFiles.read(new_path), old_name: old_path, new_name: new_path)
+      end
+      exit(1) if @plans_differ
     end
 
     desc 'check', 'load an app, generate every profile on every robot, report every problem'
@@ -209,6 +249,26 @@ module Syskit
       puts "open #{File.join(result.output, 'index.html')}"
     end
 
+    # The plan of --diff, read before the app is generated; a format that
+    # is not text or JSON has no diff.
+    def read_old_plan
+      return unless options[:diff]
+
+      unless %w[text json].include?(options[:format])
+        raise Error.new("--diff prints the difference as text or json, not #{options[:format]}",
+                        hint: 'leave out --format, or give --format json')
+      end
+      PlanFiles.read(options[:diff])
+    end
+
+    # Prints the diff of two plan documents; remembers whether they differ
+    # for --exit-code.
+    def print_diff(old, new, new_name:, old_name: options[:diff])
+      diff, text = PlanFiles.render(old, new, options[:format], old_name: old_name, new_name: new_name)
+      $stdout.write(text)
+      @plans_differ = options[:exit_code] && !diff.empty?
+    end
+
     # Warnings do not stop a plan (constructs of Rock files this gem does
     # not model, ...): one line on stderr says there are some.
     def note_warnings(app)
@@ -218,23 +278,39 @@ module Syskit
       warn Style.for($stderr).warning("#{Naming.count(count, 'warning')} while loading (syskit check lists them)")
     end
 
+    # A plan whose CAN frames can miss their deadline is still printed
+    # (syskit check reports it as an error): one line per bus on stderr
+    # says so and which command shows why.
+    def note_missed_deadlines(profile)
+      require 'syskit/cli/bus_timing'
+      style = Style.for($stderr)
+      BusTiming.missed_deadlines(profile).each do |bus, missed, total|
+        warn style.warning("#{bus}: #{Naming.count(missed, 'frame')} of #{total} can miss " \
+                           "#{missed == 1 ? 'its' : 'their'} deadline " \
+                           "(syskit bus timing #{profile.name} --bus #{bus.name} shows which)")
+      end
+    end
+
     def print_check(app, report)
       return print_check_json(app, report) if options[:format] == 'json'
 
       # Files in the order their first problem was found, which puts the
       # cause before what follows from it; lines in order within a file.
       groups = report.problems.group_by { |p| p.location&.relative_path(app.root).to_s }
+      hints = Set.new
       groups.each_with_index do |(_file, problems), i|
         puts if i.positive?
-        print_problems(app, problems)
+        print_problems(app, problems, hints)
       end
       puts "#{app.name}: #{report.errors.size} error(s), #{report.warnings.size} warning(s)"
     end
 
-    # The problems of one file, in line order.
-    def print_problems(app, problems)
+    # The problems of one file, in line order. A warning's hint is given
+    # once, under the first warning of its kind (+hints+: those given).
+    def print_problems(app, problems, hints)
       style = Style.for($stdout)
       problems.sort_by { |p| p.location&.lineno.to_i }.each do |p|
+        p = p.without_hint if p.is_a?(Warning) && p.hint && !hints.add?(p.hint)
         puts style.report(p, app.root)
         puts((p.backtrace || []).map { |l| "    #{l}" }) if trace?
       end

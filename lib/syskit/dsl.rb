@@ -19,13 +19,17 @@ module Syskit
         DSL.app!.import_types(name.to_s, location: Location.of_caller)
       end
 
-      # A Ruby library of Rock's runtime that is not installed here is not
-      # modelled: requiring it is a warning, and the file goes on loading.
-      # A file another bundle's file of the same name shadows is loaded
-      # (see DSL.require_shadowed); common_models' old name is mapped (see
-      # Compat::OldCommonModels).
+      # A file of the app or of its bundles is loaded by the app (see
+      # App::Files#required_file), the one the load path finds first even
+      # when another bundle's file of that name is loaded. A Ruby library of
+      # Rock's runtime that is not installed here is not modelled: requiring
+      # it is a warning, and the file goes on loading; common_models' old
+      # name is mapped (see Compat::OldCommonModels).
       def require(name)
-        super || DSL.require_shadowed(name)
+        path = Syskit.app&.required_file(name) if name.is_a?(String)
+        return Syskit.app.load_file(path) if path
+
+        super
       rescue LoadError
         return Compat.require_provided(name) if Compat.provided_library?(name)
         raise unless Syskit.app
@@ -108,22 +112,6 @@ module Syskit
         raise DeclarationError.new("#{self}::#{name} is already defined and is not a profile",
                                    location: location, hint: 'give the profile another name')
       end
-    end
-
-    # Ruby's require takes +name+ as loaded when any directory of the load
-    # path has a loaded file under that name: with several bundles on the
-    # load path, rock_auv's 'models/services/controller' counts as loaded
-    # once the rock bundle's models/services/controller.rb is. The file the
-    # load path finds first is what the user means: it is loaded then.
-    def self.require_shadowed(name)
-      app = Syskit.app
-      return false unless app && !File.absolute_path?(name.to_s)
-
-      _, path = $LOAD_PATH.resolve_feature_path(name.to_s)
-      return false unless path && app.environment_file?(path)
-      return false if $LOADED_FEATURES.include?(path) || $LOADED_FEATURES.include?(File.realpath(path))
-
-      Kernel.require(path)
     end
 
     def self.app!

@@ -44,6 +44,14 @@ module Syskit
       copy
     end
 
+    # Copy of this error without its hint, for a report that gave the same
+    # hint above.
+    def without_hint
+      copy = dup
+      copy.instance_variable_set(:@hint, nil)
+      copy
+    end
+
     private
 
     def locate(location, hint)

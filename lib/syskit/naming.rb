@@ -1,5 +1,10 @@
 # frozen_string_literal: true
 
+# Suggestions for misspelled names. Loaded here once: a require in the
+# method would cost a search of the loaded features each time, which Ruby
+# re-indexes whenever an app marks one of its files loaded.
+require 'did_you_mean'
+
 module Syskit
   # Conversions between the path form users type (gps/ublox/f9) and the
   # constant form models are named with (GPS::Ublox::F9).
@@ -32,7 +37,6 @@ module Syskit
 
     # Suggestions for a misspelled +name+ among +candidates+.
     def suggest(name, candidates)
-      require 'did_you_mean'
       DidYouMean::SpellChecker.new(dictionary: candidates.map(&:to_s)).correct(name.to_s)
     end
 

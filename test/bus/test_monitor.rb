@@ -138,10 +138,11 @@ module Syskit
         started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
         report = Monitor.new(dispatcher, reader, out: StringIO.new, interval: 0.05, live: false).run(duration: 0.2)
         elapsed = Process.clock_gettime(Process::CLOCK_MONOTONIC) - started
-        # Never before the duration; soon after it (a loaded machine may
-        # delay the last poll).
+        # Never before the duration; soon after it (a loaded machine, or
+        # the suite's process tests running beside this one, may delay the
+        # last poll by a second or more).
         assert_operator elapsed, :>=, 0.2
-        assert_operator elapsed, :<, 1.0
+        assert_operator elapsed, :<, 5.0
         assert_equal 0, report.traffic.frames
       end
 

@@ -158,6 +158,19 @@ module Syskit
       assert_match(/^  200 +2 +0\.000 +1\.000  filter of write-only writer$/, out)
     end
 
+    # A frame a device declares and no filter receives: the host sends it
+    # to the device (a command); the report says who declared it.
+    def test_unclaimed_ids_name_the_devices_that_declare_them
+      profile = File.join(@app, 'models', 'profiles', 'base.rb')
+      File.write(profile, File.read(profile).sub('can_id(0x100, 0x700)',
+                                                 'can_id(0x100, 0x700).frame(0x7E5, bytes: 1, period: 0.1)'))
+      unclaimed = replay_json['unclaimed'].map { |u| [u['hex'], u['declared_by']] }
+      assert_equal [['7E5', ['wide']], ['0000ABCD', []]], unclaimed
+      out, = run_cli('bus', 'replay', 'Base', @log, '--app', @app)
+      assert_match(/^  7E5 +2 +0\.500 +1\.400  declared by wide: host to device$/, out)
+      assert_match(/^  0000ABCD +1 +0\.800 +0\.800$/, out)
+    end
+
     def test_frames_several_devices_receive_are_grouped_by_id_with_the_devices
       overlaps = replay_json['overlaps'].map { |o| [o['hex'], o['frames'], o['devices']] }
       assert_equal [['120', 1, %w[narrow wide]], ['125', 3, %w[narrow wide]]], overlaps

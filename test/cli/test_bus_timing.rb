@@ -26,6 +26,26 @@ module Syskit
       assert_equal "every frame meets its deadline (6 frames)\n", lines.last
     end
 
+    # The plan is printed, and stderr says its bus's frames can be late.
+    def test_plan_says_when_frames_can_miss_their_deadline
+      out, err, status = run_cli('plan', '--app', fixture('broken', 'can_frame_misses_deadline'))
+      assert_equal 0, status
+      assert_match(/^Plan of MyApp::Profiles::Base/, out)
+      assert_equal "bus 'can0': 1 frame of 3 can miss its deadline (syskit bus timing MyApp::Profiles::Base " \
+                   "--bus can0 shows which)\n", err
+      _, err, = run_cli('plan', '--app', fixture('broken', 'can_bus_overloaded'))
+      assert_match(/\Abus 'can0': 1 frame of 1 can miss its deadline/, err)
+      _, err, = run_cli('plan', '--app', EXAMPLE)
+      assert_empty err
+    end
+
+    # As plan does, without PROFILE the app's first profile.
+    def test_the_first_profile_by_default
+      out, err, status = timing('--bus', 'can1', '--app', EXAMPLE)
+      assert_equal 0, status, err
+      assert_equal timing('Live::Base', '--bus', 'can1', '--app', EXAMPLE).first, out
+    end
+
     def test_json
       out, err, status = timing('Live::Base', '--bus', 'can0', '--app', EXAMPLE, '--format', 'json')
       assert_equal 0, status, err

@@ -44,6 +44,21 @@ module Syskit
       assert_match(%r{\Ano profile named 'live/bsae' \(did you mean 'live/base'\?\)}, err)
     end
 
+    # Right after gen app and gen profile live/base, Base is Profiles::Base;
+    # a name several profiles end with lists the names to type.
+    def test_a_profile_name_several_profiles_end_with
+      app = write_app({ 'config/syskit.yml' => "name: Bot\n", 'config/robots/default.rb' => '' }, name: 'bot')
+      %w[base live/base sim/base sim/other/base].each { |name| run_cli('gen', 'profile', name, chdir: app) }
+      out, err, status = run_cli('plan', 'Base', '--app', app)
+      assert_equal 0, status, err
+      assert_match(/\APlan of Bot::Profiles::Base /, out)
+      FileUtils.rm(File.join(app, 'models', 'profiles', 'base.rb'))
+      out, err, status = run_cli('plan', 'Base', '--app', app)
+      assert_equal [1, ''], [status, out]
+      assert_equal "'Base' names several profiles: Bot::Profiles::Live::Base, Bot::Profiles::Sim::Base, " \
+                   "Bot::Profiles::Sim::Other::Base\n  hint: type one of Live::Base, Sim::Base, Other::Base\n", err
+    end
+
     def test_plan_without_a_profile_when_the_first_has_no_device
       arm = "module MyApp\n  module Profiles\n    profile('Arm') { robot {} }\n  end\nend\n"
       root = my_app("device MyApp::Devices::IMU, as: 'imu'", 'models/profiles/arm.rb' => arm)
@@ -165,8 +180,7 @@ module Syskit
     end
 
     def test_exit_status_of_the_real_executable
-      _, err, status = Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'plan', 'Nope',
-                                      '--app', EXAMPLE)
+      _, err, status = syskit_process('plan', 'Nope', '--app', EXAMPLE)
       assert_equal 1, status.exitstatus
       assert_match(/no profile named 'Nope'/, err)
     end
@@ -178,7 +192,8 @@ module Syskit
     def on_terminal(*args, env: {})
       require 'pty'
       out = +''
-      PTY.spawn(env, RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), *args) do |reader, _, pid|
+      PTY.spawn(SelfTest.child_env.merge(env), RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), *args,
+                unsetenv_others: true) do |reader, _, pid|
         begin
           reader.each_line { |l| out << l }
         rescue Errno::EIO

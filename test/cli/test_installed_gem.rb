@@ -7,8 +7,12 @@ require 'tmpdir'
 module Syskit
   # The gem as users get it: built with `gem build`, installed with `gem
   # install` in a GEM_HOME of its own, run from outside this tree; and a
-  # new app run from a checkout through Bundler, as `gen app` tells.
+  # new app made by either, whose tests run with `rake test` and `bundle
+  # exec rake test`, as `gen app` tells.
   class TestInstalledGem < Minitest::Test
+    # Processes only: run beside the in-process tests (see SelfTest::ProcessTestsFirst).
+    parallelize_me!
+
     def setup
       @tmp = Dir.mktmpdir('syskit-gem')
     end
@@ -34,18 +38,19 @@ module Syskit
       assert_match(%r{^Bot is in bot/; next: cd bot && rake test$}, out)
       app = File.join(work, 'bot')
       refute_includes File.read(File.join(app, 'Gemfile')), GEM_ROOT
-      out, = run!('rake', 'test', chdir: app)
-      assert_match(/^4 runs, .* 0 failures, 0 errors/, out)
+      assert_app_tests_pass(app)
       out, = run!(syskit, 'check', chdir: app)
       assert_equal "Bot: 0 error(s), 0 warning(s)\n", out
     end
 
-    def test_a_new_app_runs_its_tests_with_a_checkout_through_bundler
-      out, = run!(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'gen', 'app', 'bot', chdir: @tmp)
-      command = out[/next: (.*)$/, 1]
-      assert_equal "cd bot && SYSKIT_PATH=#{GEM_ROOT} bundle exec rake test", command
-      out, = run!('sh', '-c', command, chdir: @tmp)
-      assert_match(/^4 runs, .* 0 failures, 0 errors/, out)
+    # Made from a checkout, an app names it in its Gemfile: its tests run
+    # with no SYSKIT_PATH and no syskit installed, with or without Bundler.
+    def test_a_new_app_made_from_a_checkout_runs_its_tests_with_that_checkout
+      out, = run!(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'gen', 'app', 'my-bot', chdir: @tmp)
+      assert_match(%r{^MyBot is in my-bot/; next: cd my-bot && rake test$}, out)
+      app = File.join(@tmp, 'my-bot')
+      assert_includes File.read(File.join(app, 'Gemfile')), "path: ENV.fetch('SYSKIT_PATH', #{GEM_ROOT.inspect})"
+      assert_app_tests_pass(app)
     end
 
     private
@@ -64,10 +69,19 @@ module Syskit
       File.join(@tmp, 'gem_home')
     end
 
+    # `rake test` and `bundle exec rake test`, as the new app's README says.
+    def assert_app_tests_pass(app)
+      [%w[rake test], %w[bundle exec rake test]].each do |command|
+        out, = run!(*command, chdir: app)
+        assert_match(/^4 runs, .* 0 failures, 0 errors/, out, command.join(' '))
+      end
+    end
+
     # The environment of a shell outside this project's Bundler setup, with
     # the temporary GEM_HOME first.
     def env
       base = defined?(Bundler) ? Bundler.unbundled_env : ENV.to_h
+      base = base.except('SYSKIT_PATH', 'RUBYLIB')
       base.merge('GEM_HOME' => gem_home, 'GEM_PATH' => [gem_home, *Gem.path].join(File::PATH_SEPARATOR),
                  'PATH' => [File.join(gem_home, 'bin'), base['PATH']].join(File::PATH_SEPARATOR),
                  'NO_COLOR' => '1')

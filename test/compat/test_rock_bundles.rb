@@ -32,6 +32,15 @@ module Syskit
         'config/robots/sim.rb:5: warning: Syskit.conf.use_gazebo_world'
       ], warnings
       assert_match(/^Rover: 0 error\(s\), 7 warning\(s\)$/, out)
+      # The hint of these warnings is said once, under the first; JSON
+      # keeps it for each.
+      hint = 'syskit plans devices, buses, their drivers and compositions; this has no effect on the plan'
+      assert_equal ["  hint: #{hint}\n"], out.lines.grep(/hint:/)
+      assert_equal 'models/actions/main.rb:4: warning: action interface Rover::Actions::Main: not modelled by this ' \
+                   "gem, ignored in the plan\n", out.lines.first
+      assert_match(/\A  hint: /, out.lines[1])
+      json, = run_cli('check', '--app', ROVER, '--format', 'json')
+      assert(JSON.parse(json)['problems'].all? { |p| p['hint'].start_with?('syskit plans devices') })
     end
 
     def test_the_plan_of_a_rock_style_robot

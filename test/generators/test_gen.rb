@@ -4,13 +4,13 @@ require 'helper'
 require 'minitest/mock'
 require 'open3'
 require 'rbconfig'
+require 'generators/gen_test_helpers'
 
 module Syskit
   # `syskit gen app|dev|bus|orogen|profile` as users run it (SPEC 10): the
   # files follow the app's conventions, load, and their tests pass.
   class TestGen < Minitest::Test
-    LIB = File.join(GEM_ROOT, 'lib')
-    BACKTRACE = /\.rb:\d+:in `/
+    include GenTestHelpers
 
     MY_LIB = <<~RUBY
       name 'my_lib'
@@ -27,65 +27,15 @@ module Syskit
       end
     RUBY
 
-    def tmpdir
-      dir = Dir.mktmpdir('syskit-gen')
-      (@tmpdirs ||= []) << dir
-      dir
-    end
-
-    # A new app made by `syskit gen app`.
-    def new_app(name = 'awesome_robot')
-      dir = tmpdir
-      out, err, status = run_cli('gen', 'app', name, chdir: dir)
-      assert_equal 0, status, err
-      [File.join(dir, name), out]
-    end
-
-    # Runs `syskit gen ARGS` successfully; returns its output.
-    def gen(*args, chdir:)
-      out, err, status = run_cli('gen', *args, chdir: chdir)
-      assert_equal 0, status, "syskit gen #{args.join(' ')}: #{err}"
-      out
-    end
-
-    # Runs `syskit gen ARGS`, expecting a refusal; returns the error output.
-    def refused(*args, chdir:)
-      out, err, status = run_cli('gen', *args, chdir: chdir)
-      assert_equal 1, status, "syskit gen #{args.join(' ')} should be refused: #{out}"
-      assert_empty out
-      assert_match(/\n  hint: /, err)
-      refute_match BACKTRACE, err
-      err
-    end
-
-    def files_of(dir)
-      Dir.glob('**/*', File::FNM_DOTMATCH, base: dir).reject { |f| f.end_with?('.') }.sort
-    end
-
-    def rake_test(app)
-      Open3.capture3(RbConfig.ruby, '-I', LIB, '-S', 'rake', 'test', chdir: app)
-    end
-
-    NEW_APP = <<~TEXT.freeze
-      create Gemfile
-      create README.md
-      create Rakefile
-      create config/orogen/.gitkeep
-      create config/robots/default.rb
-      create config/syskit.yml
-      create models/compositions/.gitkeep
-      create models/devices/.gitkeep
-      create models/orogen/.gitkeep
-      create models/profiles/base.rb
-      create models/services/.gitkeep
-      create models/typekits/.gitkeep
-      create test/profiles/test_base.rb
-      AwesomeRobot is in awesome_robot/; next: cd awesome_robot && SYSKIT_PATH=#{GEM_ROOT} bundle exec rake test
-    TEXT
+    # What the README shows `syskit gen app awesome_robot` prints.
+    README_APP_LISTING = File.read(File.join(SelfTest::GEM_ROOT, 'README.md'))[
+      /^\$ syskit gen app awesome_robot\n(.*?\n)\$ /m, 1
+    ]
 
     def test_a_new_app_and_every_generated_model_load_and_their_tests_pass
       app, out = new_app
-      assert_equal NEW_APP, out
+      assert_equal README_APP_LISTING, out
+
       generate_every_model(app)
       assert_generated_ruby(app)
       assert_generated_models(app)
@@ -96,7 +46,7 @@ module Syskit
       assert_equal [0, "AwesomeRobot: 0 error(s), 0 warning(s)\n"], [status, out], err
       out, err, status = rake_test(app)
       assert status.success?, "#{out}\n#{err}"
-      assert_match(/^18 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
+      assert_match(/^20 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
     end
 
     # syskit gen dev, bus, profile and orogen in +app+, from several
@@ -121,6 +71,9 @@ module Syskit
       assert_equal "create models/compositions/control/arm_control.rb\n" \
                    "create test/compositions/control/test_arm_control.rb\n",
                    gen('cmp', 'control/arm_control', chdir: app)
+      assert_equal "create models/orogen/gps_ublox.orogen\ncreate models/orogen/gps_ublox.rb\n" \
+                   "create test/orogen/test_gps_ublox.rb\n", gen('tasklib', 'gps_ublox::F9Task', chdir: app)
+      assert_equal "create config/orogen/gps_ublox::F9Task.yml\n", gen('orogenconf', 'gps_ublox::F9Task', chdir: app)
     end
 
     # The composition of #generate_every_model and its test.
@@ -151,12 +104,27 @@ module Syskit
       assert_file app, 'test/orogen/test_my_lib.rb', "using_task_library 'my_lib'\n\nmodule OroGen\n",
                   "  describe my_lib.BusTask do\n", "  describe my_lib.Task do\n", 'it { is_configurable }'
       refute_match(/require/, File.read(File.join(app, 'test', 'orogen', 'test_my_lib.rb')))
-      assert_file app, 'models/orogen/canbus.rb', 'canbus.orogen, bundled with syskit'
+      assert_file app, 'models/orogen/canbus.rb', 'canbus.orogen, bundled with syskit',
+                  "\nrequire 'common_models/models/orogen/canbus'\n"
+      assert_file app, 'test/orogen/test_canbus.rb', "it 'drives CommonModels::Devices::Bus::CAN' do"
       assert_file app, 'config/syskit.yml', "name: AwesomeRobot\n", "acronyms: [GPS, CAN, IMU]\n"
       assert_file app, 'models/services/sensing/pose.rb', "    module Sensing\n", "data_service_type 'Pose' do"
       assert_file app, 'test/services/sensing/test_pose.rb', 'assert Pose.fullfills?(Syskit::DataService)'
       assert_file app, 'config/orogen/my_lib::Task.yml',
                   "--- name:default\n# (no documentation in the spec)\nfilter_id: 0\n"
+      assert_new_task_library(app)
+    end
+
+    # What gen tasklib gps_ublox::F9Task and gen orogenconf wrote.
+    def assert_new_task_library(app)
+      assert_file app, 'models/orogen/gps_ublox.orogen', "name 'gps_ublox'\n", "task_context 'F9Task' do\n",
+                  "  property('device', '/std/string', '')\n",
+                  "  output_port('samples', '/base/samples/RigidBodyState')\n"
+      assert_file app, 'models/orogen/gps_ublox.rb', 'declared in models/orogen/gps_ublox.orogen',
+                  'Syskit.extend_model OroGen.gps_ublox.F9Task do',
+                  "driver_for AwesomeRobot::Devices::Type::Manufacturer::Model, as: 'f9'"
+      assert_file app, 'config/orogen/gps_ublox::F9Task.yml',
+                  "# the device it talks to, e.g. /dev/ttyUSB0\ndevice: ''\n"
     end
 
     # Every generated Ruby file: magic comment, 2-space indentation, no
@@ -172,20 +140,26 @@ module Syskit
       end
     end
 
-    def assert_file(app, path, *snippets)
-      text = File.read(File.join(app, path))
-      snippets.each { |s| assert_includes text, s, path }
-    end
-
-    # The checkout Bundler uses is the one SYSKIT_PATH names, the installed
-    # version otherwise: the file names no path of the machine it was made on.
+    # Made from a checkout, the app's syskit is that checkout, or the one
+    # SYSKIT_PATH names; the source is the machine's (no registry written).
     def assert_gemfile(app)
       gemfile = File.read(File.join(app, 'Gemfile'))
-      refute_match(%r{https?://|rubygems\.org|#{Regexp.escape(GEM_ROOT)}}, gemfile)
+      refute_match(%r{https?://|rubygems\.org}, gemfile)
       assert_equal [:source, Gem.sources.first.uri.to_s], gemfile_calls(gemfile, {}).first
       assert_includes gemfile_calls(gemfile, 'SYSKIT_PATH' => '/src/syskit'),
                       [:gem, ['syskit'], { path: '/src/syskit' }]
+      assert_includes gemfile_calls(gemfile, {}), [:gem, ['syskit'], { path: GEM_ROOT }]
+    end
+
+    # The installed gem's app names its version, or the checkout of
+    # SYSKIT_PATH.
+    def test_the_gemfile_of_an_app_made_by_an_installed_syskit_names_its_version
+      dir = tmpdir
+      generator = Generators::AppGenerator.new('awesome_robot', pwd: dir)
+      gemfile = generator.stub(:checkout?, false) { generator.files.fetch('Gemfile') }
       assert_includes gemfile_calls(gemfile, {}), [:gem, ['syskit', "~> #{VERSION}"], {}]
+      assert_includes gemfile_calls(gemfile, 'SYSKIT_PATH' => '/src/syskit'),
+                      [:gem, ['syskit'], { path: '/src/syskit' }]
     end
 
     # The gem and source calls of +gemfile+ evaluated with +env+ as ENV.
@@ -195,7 +169,7 @@ module Syskit
       dsl.define_singleton_method(:source) { |uri| calls << [:source, uri] }
       dsl.define_singleton_method(:gem) { |*args, **opts| calls << [:gem, args, opts] }
       dsl.define_singleton_method(:env) { env }
-      dsl.instance_eval(gemfile.gsub('ENV[', 'env['))
+      dsl.instance_eval(gemfile.gsub(/\bENV\b/, 'env'))
       calls
     end
 
@@ -241,38 +215,6 @@ module Syskit
       assert_match BACKTRACE, err
     end
 
-    def test_orogenconf_names_a_task_model_of_a_known_library
-      app, = new_app
-      before = files_of(app)
-      assert_equal "'canbus' is not the name of a task model\n  hint: give the library and the task, as in the name " \
-                   "of the configuration file: syskit gen orogenconf gps_ublox::Task\n",
-                   refused('orogenconf', 'canbus', chdir: app)
-      assert_equal "task library 'canbus' has no task 'canbus::Tsk' (did you mean 'canbus::Task'?)\n  " \
-                   "hint: its tasks are canbus::InterfaceTask, canbus::Task\n",
-                   refused('orogenconf', 'canbus::Tsk', chdir: app)
-      assert_match(/\Ano task library 'canbs' \(did you mean 'canbus'\?\)\n  hint: there is no canbs.orogen/,
-                   refused('orogenconf', 'canbs::Task', chdir: app))
-      assert_equal before, files_of(app)
-    end
-
-    def test_errors_of_a_task_library_point_at_its_file
-      app, = new_app
-      File.write(File.join(app, 'models', 'orogen', 'broken.orogen'), "name 'broken'\ntask_contxt 'Task' do\nend\n")
-      error = refused('orogen', 'broken', chdir: app)
-      assert_match(%r{\Amodels/orogen/broken\.orogen:2: .*task_contxt}, error)
-      refute File.exist?(File.join(app, 'models', 'orogen', 'broken.rb'))
-    end
-
-    def test_the_next_step_of_an_installed_syskit_is_rake_test
-      dir = tmpdir
-      generator = Generators::AppGenerator.new('awesome_robot', pwd: dir)
-      assert_equal 'cd awesome_robot && rake test', Dir.chdir(dir) {
-        generator.stub(:checkout?, false) {
-          generator.next_step
-        }
-      }
-    end
-
     def test_generators_run_in_an_app_only
       out_of_app = tmpdir
       assert_match(/\A#{Regexp.escape(out_of_app)} is not in a Syskit app/,
@@ -283,10 +225,8 @@ module Syskit
       assert_empty Dir.children(out_of_app)
 
       assert_match(/'9lives' is not a valid app name/, refused('app', '9lives', chdir: out_of_app))
-      assert_match(/'foo-bar' is not a valid app name/, refused('app', 'foo-bar', chdir: out_of_app))
-      assert_match(/is not a directory name relative to the current directory/,
-                   refused('app', '/tmp/x', chdir: out_of_app))
-      assert_match(/is not a directory name relative/, refused('app', '../x', chdir: out_of_app))
+      assert_match(/'foo\.bar' is not a valid app name/, refused('app', 'foo.bar', chdir: out_of_app))
+      assert_match(/'9_lives' is not a valid app name/, refused('app', '/tmp/9-lives', chdir: out_of_app))
       assert_empty Dir.children(out_of_app)
     end
 
@@ -338,6 +278,46 @@ module Syskit
                    gen('dev', 'gps/ublox/f9', '--force', chdir: app)
       assert_includes File.read(model), "device_type 'F9' do"
       assert File.file?(test)
+    end
+
+    # As `bundle gem` names a gem, dashes are word breaks; the directory
+    # may be given by any path.
+    def test_an_app_name_with_dashes_and_an_app_anywhere
+      dir = tmpdir
+      out = gen('app', 'my-robot', chdir: dir)
+      assert_match(%r{^MyRobot is in my-robot/; next: cd my-robot && rake test$}, out)
+      assert_file File.join(dir, 'my-robot'), 'config/syskit.yml', "name: MyRobot\n"
+      assert_file File.join(dir, 'my-robot'), 'models/profiles/base.rb', "module MyRobot\n"
+
+      elsewhere = File.join(tmpdir, 'robots', 'sea-bot')
+      out = gen('app', elsewhere, chdir: dir)
+      shown = Regexp.escape(elsewhere)
+      assert_match(%r{^SeaBot is in #{shown}/; next: cd #{shown} && rake test$}, out)
+      out = gen('app', '../up_bot', chdir: File.join(dir, 'my-robot'))
+      assert_match(%r{^UpBot is in \.\./up_bot/; next: cd \.\./up_bot && rake test$}, out)
+      assert File.file?(File.join(dir, 'up_bot', 'Rakefile'))
+
+      # Without config/syskit.yml, an app's name is its directory's.
+      File.delete(File.join(elsewhere, 'config', 'syskit.yml'))
+      out, err, status = run_cli('check', '--app', elsewhere)
+      assert_equal [0, "SeaBot: 0 error(s), 0 warning(s)\n"], [status, out], err
+    end
+
+    # The README's session of generators prints what the commands print.
+    def test_the_readme_session
+      session = File.read(File.join(GEM_ROOT, 'README.md'))[/^\$ cd awesome_robot\n(.*?)^\$ rake test/m, 1]
+      app, = new_app
+      session.scan(/^\$ syskit gen (.*)\n((?:[^$].*\n)*)/).each do |args, output|
+        assert_equal output, gen(*args.split, chdir: app), "syskit gen #{args}"
+      end
+      assert_operator session.scan('$ syskit gen').size, :>=, 7
+    end
+
+    # What git should not track in an app: Bundler's files of this machine.
+    def test_a_new_app_has_a_gitignore
+      app, = new_app
+      ignored = File.readlines(File.join(app, '.gitignore'), chomp: true).grep_v(/\A#/)
+      assert_equal %w[/.bundle/ /vendor/bundle/ /Gemfile.lock /tmp/], ignored
     end
 
     def test_a_dry_run_of_an_app_creates_nothing

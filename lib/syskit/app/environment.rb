@@ -39,6 +39,12 @@ module Syskit
         [first, roots.map { |root| File.dirname(root) }.uniq - first]
       end
 
+      # The directories of #load_path while the app is active, in the order
+      # Ruby's require searches them.
+      def require_dirs
+        @active ? @first + @last : []
+      end
+
       def activate
         raise Error, "#{Syskit.app} is still loaded, unload it first" if Syskit.app && !Syskit.app.equal?(@app)
         return if @active

@@ -47,6 +47,25 @@ module Syskit
         true
       end
 
+      # The file of the app or of its bundles that `require name` means
+      # ('models/devices/gps', 'common_models/models/devices/bus/can'), nil
+      # for any other library. DSL#require loads it with #load_file rather
+      # than Kernel#require: Ruby re-indexes its loaded features on the next
+      # require after each file an app marks loaded (tens of milliseconds
+      # in a process with a few hundred features), and a file required
+      # before its turn is then evaluated as every app file is.
+      def required_file(name)
+        file = name.end_with?('.rb') ? name : "#{name}.rb"
+        return (file if File.file?(file) && environment_file?(file)) if file.start_with?('/')
+        return if file.start_with?('./', '../')
+
+        @environment.require_dirs.each do |dir|
+          path = File.join(dir, file)
+          return path if File.file?(path)
+        end
+        nil
+      end
+
       # Evaluates a file that is not a model file (a robot configuration)
       # in the app's namespace, each time it is asked to.
       def eval_file(path)

@@ -24,7 +24,7 @@ module Syskit
         @problems = []
         @data = collecting({}) { read }
         @acronyms = collecting([]) { list('acronyms') }
-        @name = name || collecting(nil) { given_name } || Naming.camelize(File.basename(root), @acronyms)
+        @name = name || collecting(nil) { given_name } || Settings.default_name(root, @acronyms)
         problem = if !Naming.constant_name?(@name) then directory_name_error(root)
                   elsif Settings.taken_name?(@name) then taken_name_error
                   end
@@ -50,6 +50,18 @@ module Syskit
         elsif top == :Syskit then "syskit's own module"
         elsif Object.const_defined?(top, false) then 'a constant Ruby (or a library syskit loads) already defines'
         end
+      end
+
+      # An app's name when config/syskit.yml gives none: its directory's,
+      # camelized, dashes read as underscores as `bundle gem` reads them
+      # (awesome_robot and awesome-robot -> AwesomeRobot).
+      def self.default_name(root, acronyms = [])
+        Naming.camelize(directory_words(File.basename(root)), acronyms)
+      end
+
+      # 'my-robot' -> 'my_robot': a directory name as words camelize joins.
+      def self.directory_words(basename)
+        basename.tr('-', '_')
       end
 
       def [](key)

@@ -15,8 +15,11 @@ module Syskit
                              keyword_init: true)
       # One frame key (id + extended flag), the devices receiving it and,
       # for ids nobody receives, the write-only devices whose can_id matches
-      # (most likely their senders).
-      IdRow = Struct.new(:key, :frames, :first_time, :last_time, :devices, :writers, keyword_init: true)
+      # (most likely their senders) and the devices that declare the frame
+      # (.frame): one no can_id receives is one the host sends them, a
+      # command to the device.
+      IdRow = Struct.new(:key, :frames, :first_time, :last_time, :devices, :writers, :declared_by,
+                         keyword_init: true)
 
       attr_reader :bus, :traffic, :devices, :unclaimed, :overlaps, :source, :declared
 
@@ -43,6 +46,7 @@ module Syskit
         @traffic = traffic
         @source = source
         @declared = DeclaredTraffic.new(declared_bus, traffic) if declared_bus
+        @declarers = declarers(declared_bus)
         build(dispatcher)
       end
 
@@ -105,7 +109,14 @@ module Syskit
 
       def id_row(key, stats, names = [], writers: [])
         IdRow.new(key: key, frames: stats.frames, first_time: stats.first_time, last_time: stats.last_time,
-                  devices: names, writers: writers)
+                  devices: names, writers: writers, declared_by: @declarers.fetch(key, []))
+      end
+
+      # Frame key => the devices declaring that frame on the bus.
+      def declarers(bus)
+        return {} unless bus
+
+        bus.frames.group_by { |f| Frame.key(f.id, f.extended) }.transform_values { |fs| fs.map(&:device).uniq }
       end
 
       def frames_hash
@@ -120,7 +131,7 @@ module Syskit
 
       def unclaimed_hash(row)
         id_hash(row).merge('first_time' => Report.seconds(row.first_time), 'last_time' => Report.seconds(row.last_time),
-                           'write_only_matches' => row.writers)
+                           'write_only_matches' => row.writers, 'declared_by' => row.declared_by)
       end
 
       def device_hash(row)

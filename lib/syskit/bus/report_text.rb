@@ -94,13 +94,21 @@ module Syskit
 
         head = ID_HEADER
         body = rows.map { |r| id_cells(report, r) }
-        if rows.any? { |r| r.writers.any? }
+        notes = rows.map { |r| unclaimed_note(r) }
+        if notes.any?
           head += ['Note']
-          body = body.zip(rows).map do |cells, r|
-            cells + [r.writers.empty? ? '' : "filter of write-only #{r.writers.join(', ')}"]
-          end
+          body = body.zip(notes).map { |cells, note| cells + [note.to_s] }
         end
         "#{title}\n#{table(head, body, indent: '  ')}"
+      end
+
+      # Who is behind a frame no device receives: the devices declaring it
+      # (.frame), which the host sends it to, else the write-only devices
+      # whose filter it matches.
+      def unclaimed_note(row)
+        if row.declared_by.any? then "declared by #{row.declared_by.join(', ')}: host to device"
+        elsif row.writers.any? then "filter of write-only #{row.writers.join(', ')}"
+        end
       end
 
       def overlaps(report)

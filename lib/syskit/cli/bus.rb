@@ -23,7 +23,7 @@ module Syskit
       class_option :trace, type: :boolean, default: false, hide: true, desc: 'show the backtrace of errors'
       class_option :app, type: :string, desc: 'the app directory'
       class_option :robot, type: :string, default: 'default', desc: 'the robot configuration (config/robots/NAME.rb)'
-      class_option :bus, type: :string, desc: 'the bus device of the plan (default: the only bus with devices)'
+      class_option :bus, type: :string, desc: 'the bus of the plan (default: its only bus with devices)'
 
       desc 'replay PROFILE LOGFILE', 'what each device of a bus receives from a candump log'
       long_desc <<~TEXT
@@ -52,12 +52,13 @@ module Syskit
         end
       end
 
-      desc 'monitor PROFILE', 'watch a live SocketCAN bus through the devices of a plan'
+      desc 'monitor [PROFILE]', 'watch a live SocketCAN bus through the devices of a plan'
       long_desc <<~TEXT
         Opens the SocketCAN interface IFACE (Linux, classic and CAN FD frames)
-        and shows the replay table of the bus, refreshed every --interval
-        seconds, until Ctrl-C (or --duration seconds). The "Now" column is the
-        rate during the last interval.
+        and shows the replay table of the bus in PROFILE's plan (without
+        PROFILE, the app's first profile), refreshed every --interval seconds,
+        until Ctrl-C (or --duration seconds). The "Now" column is the rate
+        during the last interval.
 
         A virtual bus to try it:
           sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set up vcan0
@@ -69,7 +70,7 @@ module Syskit
       method_option :duration, type: :numeric, desc: 'stop after this many seconds'
       method_option :format, type: :string, default: 'text', enum: %w[text json],
                              desc: 'json prints the final report only'
-      def monitor(profile_name)
+      def monitor(profile_name = nil)
         load_monitor
         with_plan(profile_name) do |dispatcher, source, declared_bus|
           io = ::Syskit::Bus::SocketCAN.open(options[:interface])
@@ -88,10 +89,11 @@ module Syskit
         exit(130)
       end
 
-      desc 'timing PROFILE', 'worst-case response time of every frame declared on a CAN bus'
+      desc 'timing [PROFILE]', 'worst-case response time of every frame declared on a CAN bus'
       long_desc <<~TEXT
-        Analyses the frames that PROFILE's robot declares on the CAN bus
-        --bus (.frame on its devices, .bitrate on the bus): for each frame, in
+        Analyses the frames that PROFILE's robot (without PROFILE, the app's
+        first profile, as for syskit plan) declares on the CAN bus --bus
+        (.frame on its devices, .bitrate on the bus): for each frame, in
         priority order, its transmission time, blocking, worst-case response
         time and slack, with the revised analysis of Davis, Burns, Bril and
         Lukkien (Real-Time Systems 35, 2007); then the bus's utilisation.
@@ -101,7 +103,7 @@ module Syskit
         Example: syskit bus timing Live::Base --bus can0 --format json
       TEXT
       method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
-      def timing(profile_name)
+      def timing(profile_name = nil)
         require 'syskit/cli/bus_timing'
         with_app(robots: [options[:robot]]) do |app|
           profile = find_profile(app, profile_name)
@@ -165,7 +167,7 @@ module Syskit
       end
     end
 
-    desc 'bus SUBCOMMAND', 'bus traffic through a plan: replay a candump log, monitor a live SocketCAN bus'
+    desc 'bus SUBCOMMAND', "a bus through a plan: replay a candump log, monitor it live, its frames' timing"
     subcommand 'bus', Bus
   end
 end

@@ -33,6 +33,18 @@ module Syskit
         end
       end
 
+      # [bus, frames that can miss their deadline, frames] of each CAN bus of
+      # the profile's robot where some can (declaration order).
+      def missed_deadlines(profile)
+        can_buses(profile).filter_map do |bus|
+          next unless bus.bitrate
+
+          frames = bus.frames_on_wire
+          missed = CAN::Timing::Analysis.run(bitrate: bus.bitrate, frames: frames).frames.count { |r| !r.schedulable? }
+          [bus, missed, frames.size] if missed.positive?
+        end
+      end
+
       # The CAN buses of the profile's robot with a wire of their own.
       def can_buses(profile)
         profile.robot.devices.grep(Robot::ComBus).select { |b| Robot::CanTraffic.can_bus?(b) && b.carrier.equal?(b) }

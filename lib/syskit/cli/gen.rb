@@ -8,6 +8,7 @@ require 'syskit/generators/profile_generator'
 require 'syskit/generators/service_generator'
 require 'syskit/generators/composition_generator'
 require 'syskit/generators/orogen_conf_generator'
+require 'syskit/generators/task_library_generator'
 
 module Syskit
   # The `syskit` command line (see syskit/cli.rb), here given its `gen` subcommand.
@@ -21,17 +22,20 @@ module Syskit
 
       EXAMPLES = <<~TEXT
         Examples:
-          syskit gen app awesome_robot      # a new app in ./awesome_robot
-          syskit gen dev gps/ublox/f9       # models/devices/gps/ublox/f9.rb, Devices::GPS::Ublox::F9
-          syskit gen bus can                # models/devices/bus/can.rb, Devices::Bus::CAN
-          syskit gen srv pose               # models/services/pose.rb, Services::Pose
-          syskit gen cmp arm_control        # models/compositions/arm_control.rb, Compositions::ArmControl
-          syskit gen orogen gps_ublox       # models/orogen/gps_ublox.rb, from gps_ublox.orogen
-          syskit gen profile live/base      # models/profiles/live/base.rb, Profiles::Live::Base
+          syskit gen app awesome_robot           # a new app in ./awesome_robot
+          syskit gen dev gps/ublox/f9            # Devices::GPS::Ublox::F9
+          syskit gen bus can                     # Devices::Bus::CAN
+          syskit gen srv pose                    # Services::Pose
+          syskit gen cmp arm_control             # Compositions::ArmControl
+          syskit gen tasklib gps_ublox::F9Task   # a new gps_ublox.orogen
+          syskit gen orogen gps_ublox            # the extension of gps_ublox.orogen
           syskit gen orogenconf gps_ublox::Task  # config/orogen/gps_ublox::Task.yml
+          syskit gen profile live/base           # Profiles::Live::Base
 
-        Names are given in path form (gps/ublox/f9) or constant form (GPS::Ublox::F9);
-        the acronyms of config/syskit.yml are kept (GPS, not Gps).
+        Names are given in path form (gps/ublox/f9) or constant form
+        (GPS::Ublox::F9); the acronyms of config/syskit.yml are kept (GPS, not
+        Gps). Each model is in the file its name says, with a test next to it
+        (models/devices/gps/ublox/f9.rb, test/devices/gps/ublox/test_f9.rb).
       TEXT
 
       def self.exit_on_failure?
@@ -59,12 +63,14 @@ module Syskit
 
       desc 'app NAME', 'create a new app in the directory NAME'
       long_desc <<~TEXT
-        Creates the directory NAME (relative to the current directory) with an
-        app's layout: models/{devices,services,orogen,profiles,typekits}, config/orogen,
+        Creates the directory NAME (a relative or absolute path) with an app's
+        layout: models/{devices,services,orogen,profiles,typekits}, config/orogen,
         config/robots/default.rb, config/syskit.yml, test/, a Rakefile, a
-        Gemfile, a README and a first profile, Profiles::Base, with its test.
-        The app's name is NAME's basename, camelized (awesome_robot ->
-        AwesomeRobot). `rake test` passes in the new app.
+        Gemfile naming this syskit (its version, or this checkout's path), a
+        .gitignore, a README and a first profile, Profiles::Base, with its
+        test. The app's name is NAME's basename, camelized, dashes read as
+        underscores (awesome_robot, awesome-robot -> AwesomeRobot). `rake test`
+        and `bundle exec rake test` pass in the new app.
 
         Example: syskit gen app awesome_robot
       TEXT
@@ -144,6 +150,23 @@ module Syskit
         generate { |opts| Generators::OrogenGenerator.new(target_app, library, **opts) }
       end
 
+      desc 'tasklib LIB[::TASK]', 'create a new task library (LIB.orogen, one task context), its extension and test'
+      long_desc <<~TEXT
+        Creates models/orogen/LIB.orogen, a task library in oroGen's syntax
+        with one task context, TASK (Task by default), that declares a
+        property and an output port, and examples in comments of what
+        else a task context declares. Also writes its extension,
+        models/orogen/LIB.rb, and test/orogen/test_LIB.rb, as gen orogen
+        does. A library of that name bundled with syskit, in a bundle or on
+        SYSKIT_OROGEN_PATH is not hidden: extend it with gen orogen LIB.
+
+        Example: syskit gen tasklib gps_ublox::F9Task
+      TEXT
+      method_option :app, type: :string, desc: 'the app directory (default: the app containing the current directory)'
+      def tasklib(name)
+        generate { |opts| Generators::TaskLibraryGenerator.new(target_app, name, **opts) }
+      end
+
       desc 'orogenconf LIB::TASK', 'create the configuration file of a task model, with its properties'
       long_desc <<~TEXT
         Creates config/orogen/LIB::TASK.yml with a 'default' section that sets
@@ -188,11 +211,11 @@ module Syskit
       def print_entries(generator, entries)
         prefix = options[:dry_run] ? 'would ' : ''
         entries.each { |e| puts "#{prefix}#{e.overwrite ? 'overwrite' : 'create'} #{e.path}" }
+        generator.notes.each { |note| puts "note: #{note}" }
         if options[:dry_run]
           puts 'dry run: nothing was written'
         elsif generator.is_a?(Generators::AppGenerator)
-          dir = generator.root.delete_prefix("#{Dir.pwd}/")
-          puts "#{generator.app_name} is in #{dir}/; next: #{generator.next_step}"
+          puts "#{generator.app_name} is in #{generator.dir}/; next: #{generator.next_step}"
         end
       end
 
@@ -203,8 +226,7 @@ module Syskit
       end
     end
 
-    desc 'gen SUBCOMMAND', 'generate an app, a device, a bus, a data service, a task library extension, ' \
-                           'a configuration file or a profile'
+    desc 'gen SUBCOMMAND', 'write new files: an app, models, task libraries, configuration (with tests)'
     subcommand 'gen', Gen
   end
 end

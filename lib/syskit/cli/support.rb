@@ -70,19 +70,42 @@ module Syskit
         profiles = app.profiles.values.sort_by(&:name)
         return default_profile(app, profiles) if name.nil?
 
-        wanted = profile_segments(name)
-        matches = profiles.select { |p| profile_segments(p.name).last(wanted.size) == wanted }
+        matches = profiles_ending_with(name, profiles)
         return matches.first if matches.size == 1
-
-        names = profiles.map(&:name)
-        if matches.empty?
-          spelled = name.include?('/') ? profiles.map { |p| profile_path(p.name) } : names
-          raise UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, spelled)}",
-                                hint: "profiles: #{names.join(', ')}")
-        end
+        raise no_profile(name, profiles) if matches.empty?
 
         raise UnknownName.new("'#{name}' names several profiles: #{matches.map(&:name).join(', ')}",
-                              hint: 'give more of the name')
+                              hint: "type one of #{matches.map { |p| shortest_name(p, profiles) }.join(', ')}")
+      end
+
+      # The profiles whose name ends with +name+; only the one +name+ is
+      # the path of under the app's Profiles when there is one (Base is
+      # Profiles::Base rather than Profiles::Live::Base, as it is for Ruby
+      # code inside Profiles).
+      def profiles_ending_with(name, profiles)
+        wanted = profile_segments(name)
+        matches = profiles.select { |p| profile_segments(p.name).last(wanted.size) == wanted }
+        exact = matches.select { |p| profile_path(p.name) == wanted.join('/') }
+        exact.size == 1 ? exact : matches
+      end
+
+      def no_profile(name, profiles)
+        names = profiles.map(&:name)
+        spelled = name.include?('/') ? profiles.map { |p| profile_path(p.name) } : names
+        UnknownName.new("no profile named '#{name}'#{Naming.did_you_mean(name, spelled)}",
+                        hint: "profiles: #{names.join(', ')}")
+      end
+
+      # The shortest end of +profile+'s name that names it alone among
+      # +profiles+ (Live::Base when Sim::Base exists).
+      def shortest_name(profile, profiles)
+        constants = profile.name.split('::')
+        others = profiles.reject { |p| p.equal?(profile) }.map { |p| profile_segments(p.name) }
+        size = (1..constants.size).find do |n|
+          ending = profile_segments(profile.name).last(n)
+          others.none? { |o| o.last(n) == ending }
+        end
+        constants.last(size || constants.size).join('::')
       end
 
       # 'Live::Base', 'live/base' and 'Profiles::Live::Base' -> [..., 'live', 'base']

@@ -17,16 +17,18 @@ module Syskit
       EMPTY_DIRS = %w[models/devices models/services models/compositions models/orogen models/typekits
                       config/orogen].freeze
 
-      attr_reader :root, :app_name
+      # +dir+ is the directory as given, for messages; +root+ its full path.
+      attr_reader :dir, :root, :app_name
 
-      # +dir+: the app's directory, relative to +pwd+; its basename, camelized,
-      # is the app's name.
+      # +dir+: the app's directory, relative to +pwd+ or absolute; its
+      # basename, camelized, is the app's name (see App::Settings.default_name).
       def initialize(dir, pwd: Dir.pwd, force: false, dry_run: false)
         dir = dir.to_s.chomp('/')
         check_dir(dir)
+        @dir = dir
         @root = File.expand_path(dir, pwd)
-        @app_name = Name.parse(File.basename(dir), what: 'app', acronyms: ACRONYMS,
-                                                   examples: 'e.g. awesome_robot').to_s
+        @app_name = Name.parse(App::Settings.directory_words(File.basename(@root)),
+                               what: 'app', acronyms: ACRONYMS, examples: 'e.g. awesome_robot or my-robot').to_s
         check_name_is_free(dir)
         @force = force
         @dry_run = dry_run
@@ -49,10 +51,17 @@ module Syskit
                                  hint: "choose another directory name, e.g. syskit gen app #{File.basename(dir)}_robot")
       end
 
+      # The app's next step is said instead (see #next_step).
+      def notes
+        []
+      end
+
       # Relative path => content of the files to write.
       def files
-        locals = { app_name: app_name, dir_name: File.basename(root), acronyms: ACRONYMS, version: Syskit::VERSION }
+        locals = { app_name: app_name, dir_name: File.basename(root), acronyms: ACRONYMS, version: Syskit::VERSION,
+                   checkout: (GEM_ROOT if checkout?) }
         files = {
+          '.gitignore' => Template.render('app_gitignore', **locals),
           'README.md' => Template.render('app_readme', **locals),
           'Gemfile' => Template.render('app_gemfile', **locals),
           'Rakefile' => Template.render('app_rakefile', **locals),
@@ -63,23 +72,20 @@ module Syskit
         files.merge(ProfileGenerator.files(app_name, Name.new(['Base']))).sort.to_h
       end
 
-      # How to run the new app's tests: rake finds an installed syskit;
-      # from a checkout, Bundler takes it from SYSKIT_PATH (see the Gemfile).
+      # How to run the new app's tests. The Rakefile sets Bundler up, and
+      # the Gemfile names this syskit: the installed gem, or the checkout
+      # the app was made from, by its path.
       def next_step
-        dir = Shellwords.escape(root.delete_prefix("#{Dir.pwd}/"))
-        return "cd #{dir} && rake test" unless checkout?
-
-        "cd #{dir} && SYSKIT_PATH=#{Shellwords.escape(GEM_ROOT)} bundle exec rake test"
+        "cd #{Shellwords.escape(dir)} && rake test"
       end
 
       private
 
       def check_dir(dir)
-        return unless dir.empty? || dir.start_with?('/', '~') || dir.split('/').include?('..')
+        return unless dir.empty?
 
-        raise GeneratorError.new("'#{dir}' is not a directory name relative to the current directory",
-                                 hint: 'run syskit gen app from the directory the app goes in, ' \
-                                       'e.g. syskit gen app awesome_robot')
+        raise GeneratorError.new('an app needs a directory name',
+                                 hint: 'give the directory to create, e.g. syskit gen app awesome_robot')
       end
 
       # Installed gems do not ship their gemspec, checkouts do.

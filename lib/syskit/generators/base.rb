@@ -53,6 +53,12 @@ module Syskit
         FileWriter.new(root, allowed: self.class::ALLOWED, force: @force, dry_run: @dry_run).write(files)
       end
 
+      # What the user should know of the files written, after #run: none
+      # unless a generator says otherwise.
+      def notes
+        []
+      end
+
       # The modules a generated file of +kind+ ('Devices', 'Profiles') for
       # +name+ is nested in: AppName::Kind::Name's namespace.
       def self.modules_for(app_name, kind, name)
@@ -61,17 +67,31 @@ module Syskit
 
       private
 
-      # Yields task library +name+ (loaded) and the path of its .orogen file,
-      # in the app loaded as syskit check would (extension files of the
-      # libraries it uses may need the app's device models); the app's own
-      # problems are left to syskit check, only this library's matter here.
+      # Yields task library +name+ (loaded with its extension files), the
+      # path of its .orogen file and the app, loaded as syskit check would
+      # (extension files of the libraries it uses may need the app's device
+      # models); the app's own problems are left to syskit check, only this
+      # library's matter here.
       def with_library(name)
         app = Syskit::App.new(root)
         app.load
         path = app.orogen.spec_path(name) || raise(app.orogen.unknown_library(name, nil, error_class: GeneratorError))
-        yield app.orogen.library(name) || app.orogen.load_library(name, Location.new(path, 1)), path
+        yield app.orogen.library(name) || load_library(app, name, path), path, app
       ensure
         app&.unload
+      end
+
+      # Loads a library the app does not use: an error of its .orogen file
+      # stops the generator, those of its extension files are syskit
+      # check's to report.
+      def load_library(app, name, path)
+        library = app.orogen.load_library(name, Location.new(path, 1))
+        app.extension_files(name, path).each do |file|
+          app.load_file(file)
+        rescue Syskit::Error
+          next
+        end
+        library
       end
 
       # The nested modules a model file of +kind+ (Devices, Profiles) opens.

@@ -10,9 +10,15 @@ module Syskit
     class OrogenGenerator < Base
       LIBRARY_NAME = /\A[A-Za-z_][A-Za-z0-9_]*\z/
 
-      # What the template says of one task context.
+      # What the template says of one task context; +inherited+: what the
+      # extension it builds on declares (driver_for and provides lines),
+      # +driven+: the device and bus models it drives through them.
       TaskInfo = Struct.new(:name, :accessor, :doc, :device_name, :property, :output_port, :dynamic_type,
-                            keyword_init: true)
+                            :inherited, :driven, keyword_init: true)
+
+      # The extension file an app's models/orogen/LIB.rb takes the place of:
+      # its path, the require that loads it, and where it comes from.
+      Base = Struct.new(:path, :require_path, :origin, keyword_init: true)
 
       attr_reader :library
 
@@ -30,8 +36,9 @@ module Syskit
       # Relative path => content of the files to write. Loads the app to
       # read the task library's specification.
       def files
-        spec_path, tasks = read_library
-        locals = { app_name: app_name, library: library, spec_path: spec_path, tasks: tasks,
+        spec_path, tasks, base = read_library
+        @notes = base ? [base_note(base)] : []
+        locals = { app_name: app_name, library: library, spec_path: spec_path, tasks: tasks, base: base,
                    modules: Template::Modules.new(app_name.split('::')) }
         {
           "models/orogen/#{library}.rb" => Template.render('orogen', **locals),
@@ -39,11 +46,43 @@ module Syskit
         }
       end
 
+      # The extension an app's file takes the place of, when there is one.
+      def notes
+        @notes || []
+      end
+
       private
+
+      def base_note(base)
+        "models/orogen/#{library}.rb takes the place of the #{library} extension #{base.origin}: it starts with " \
+          "require '#{base.require_path}', which keeps what that file declares"
+      end
 
       # Where the .orogen file is, for the file's header, and its tasks.
       def read_library
-        with_library(library) { |loaded, path| [spec_description(path), task_infos(loaded, path)] }
+        with_library(library) do |loaded, path, app|
+          base = base_extension(app)
+          # What it declares, also when the app's file it replaces (--force)
+          # did not require it.
+          app.load_file(base.path) if base
+          [spec_description(path), task_infos(loaded, path), base]
+        end
+      end
+
+      # The extension of this library in the bundles after the app (the
+      # gem's own common_models last), which the app's file takes the place
+      # of, as in Rock: the generated file requires it, as Rock's do
+      # (require 'common_models/models/orogen/canbus').
+      def base_extension(app)
+        app.bundles.drop(1).each do |bundle|
+          path = File.join(bundle.root, 'models', 'orogen', "#{library}.rb")
+          next unless File.file?(path)
+
+          origin = bundle.equal?(Syskit::App::BundleSearch::BUNDLED) ? 'bundled with syskit' : "of #{bundle}"
+          return Base.new(path: path, require_path: "#{File.basename(bundle.root)}/models/orogen/#{library}",
+                          origin: origin)
+        end
+        nil
       end
 
       # The path of the .orogen file inside the app, no machine-specific
@@ -68,15 +107,38 @@ module Syskit
 
       def task_info(model)
         relative = model.name.delete_prefix("#{library}::")
-        outputs = model.ports.values.select(&:output?).sort_by(&:name)
-        dynamic = model.dynamic_ports.find { |p| p.direction == :output }
         TaskInfo.new(
           name: model.name, accessor: "OroGen.#{library}.#{relative.split('::').join('.')}",
           doc: model.spec.doc, device_name: device_name(relative),
           property: (model.spec.properties.keys + model.property_declarations.keys).first,
-          output_port: outputs.first&.name,
-          dynamic_type: dynamic && type_expression(dynamic.type)
+          **port_info(model), **inherited_info(model)
         )
+      end
+
+      # The ports the template's examples name.
+      def port_info(model)
+        dynamic = model.dynamic_ports.find { |p| p.direction == :output }
+        { output_port: model.ports.values.select(&:output?).min_by(&:name)&.name,
+          dynamic_type: dynamic && type_expression(dynamic.type) }
+      end
+
+      # What the extension the app's builds on declares: its services, as
+      # lines, and the models they drive.
+      def inherited_info(model)
+        inherited = model.each_data_service.select(&:master?).reject { |srv| in_app?(srv.declared_at) }
+        { inherited: inherited.map { |srv| declaration_of(srv) },
+          driven: inherited.filter_map(&:driven_device_model).uniq.map(&:name).sort }
+      end
+
+      # Whether a declaration is in the app's own files (an extension
+      # overwritten with --force), not in the extension the app builds on.
+      def in_app?(location)
+        location&.path.to_s.start_with?("#{root}/")
+      end
+
+      # driver_for Model, as: 'name' / provides Model, as: 'name'
+      def declaration_of(srv)
+        "#{srv.model.is_a?(Models::DeviceModel) ? 'driver_for' : 'provides'} #{srv.model.name}, as: '#{srv.name}'"
       end
 
       # F9Task -> f9, Task -> the library's name: the 'as' of the examples.

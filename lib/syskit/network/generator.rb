@@ -30,8 +30,10 @@ module Syskit
           context.tasks
         end
 
+        # The task of a device, or of a requirement's device. (A bus answers
+        # #device too: can0.device(Model, as: ...) declares one on it.)
         def task_for(device)
-          context.task_for(device.respond_to?(:device) ? device.device : device)
+          context.task_for(device.is_a?(InstanceRequirements) ? device.device : device)
         end
       end
 

@@ -29,8 +29,14 @@ module Syskit
     # The calls of the methods +names+ in +source+, in source order; none
     # when Ruby cannot parse it (its evaluation reports that).
     def find(source, names)
+      names = names.map(&:to_s)
+      # A call has its name in the text: a source without any is not
+      # parsed (Ripper takes 0.4 s on a robot configuration of 10,000
+      # deployments, none of which registers an app).
+      return [] if names.none? { |name| source.include?(name) }
+
       found = []
-      walk(Ripper.sexp(source), names.map(&:to_s), found)
+      walk(Ripper.sexp(source), names, found)
       found.sort_by(&:line)
     end
 

@@ -62,7 +62,8 @@ module Syskit
       # rubocop:disable-next Metrics -- one loop, see above
       def read(io, traffic, every: 1)
         tallies = traffic.tallies
-        fast = fast_line
+        # Read by position once a first frame has set the times it needs.
+        fast = @previous_time && traffic.last_time && fast_line
         id_start = fast && (@interface.bytesize + 21)
         frames = extended = fd_frames = fd_extended = rtr_frames = errors = bytes_total = 0
         first_time = traffic.first_time
@@ -82,41 +83,56 @@ module Syskit
         seconds_prefix = nil # "(SSSSSSSSSS." of the last line read by position
         seconds = 0
         io.each_line(MAX_LINE) do |line|
-          key = time = nil
           if !long && fast&.match?(line)
             # (SSSSSSSSSS.UUUUUU) IFACE III#DD.. or IIIIIIII#DD..
             lines += 1
-            hash = line.getbyte(id_start + 3) == HASH_MARK ? id_start + 3 : id_start + 8
-            key = line.byteslice(id_start, hash - id_start).to_i(16)
+            frames += 1
+            if line.getbyte(id_start + 3) == HASH_MARK
+              key = line.byteslice(id_start, 3).to_i(16)
+              bytes_total += (line.bytesize - id_start - 5) >> 1
+            else
+              key = line.byteslice(id_start, 8).to_i(16) | Frame::EFF_FLAG
+              extended += 1
+              bytes_total += (line.bytesize - id_start - 10) >> 1
+            end
             # Thousands of lines in a row share their second.
             unless seconds_prefix && line.start_with?(seconds_prefix)
               seconds_prefix = line.byteslice(0, 12)
               seconds = line.byteslice(1, 10).to_i * 1_000_000
             end
             time = seconds + line.byteslice(12, 6).to_i
-            if hash > id_start + 3
-              key |= Frame::EFF_FLAG
-              extended += 1
+            # Traffic#count and #stretch, inline (times are never nil here).
+            tally = tallies[key]
+            if tally.nil? then tallies[key] = [1, time, time, 0]
+            else
+              tally[0] += 1
+              last = tally[2]
+              if time >= last
+                tally[3] = time - last if time - last > tally[3]
+                tally[2] = time
+              elsif time < tally[1] then tally[1] = time
+              end
             end
-            bytes_total += (line.bytesize - hash - 2) >> 1
+            if time >= last_time then last_time = time
+            elsif time < first_time then first_time = time
+            end
+            if time < previous
+              @lines = lines
+              out_of_order(time, previous)
+            end
+            previous = time
           else
             whole = line.bytesize < MAX_LINE || line.end_with?("\n")
             unless long
               @lines = lines += 1
-              if whole
-                fields = line_fields(line)
-              else
-                too_long(line)
-              end
+              whole ? (fields = line_fields(line)) : too_long(line)
             end
             long = !whole
             if fields
               key, time, fd, rtr, bytes = fields
+              frames += 1
               if key == ERROR
-                # counted in the totals, never dispatched
-                key = nil
-                frames += 1
-                errors += 1
+                errors += 1 # counted in the totals, never dispatched
               else
                 extended += 1 if key >= Frame::EFF_FLAG
                 rtr_frames += 1 if rtr
@@ -126,38 +142,26 @@ module Syskit
                 else
                   bytes_total += bytes
                 end
+                tally = tallies[key]
+                tally ? traffic.stretch(tally, time) : tallies[key] = [1, time, time, 0]
+                tally[0] += 1 if tally
               end
-              fast ||= fast_line
+              if last_time.nil? then first_time = last_time = time
+              elsif time >= last_time then last_time = time
+              elsif time < first_time then first_time = time
+              end
+              if previous && time < previous
+                @lines = lines
+                out_of_order(time, previous)
+              end
+              previous = time
+              # From the first frame on, lines as candump writes them are
+              # read by position.
+              fast = fast_line
               id_start = fast && (@interface.bytesize + 21)
             end
           end
-          if time
-            if key
-              frames += 1
-              tally = tallies[key]
-              if tally.nil? then tallies[key] = [1, time, time, 0]
-              else
-                tally[0] += 1
-                last = tally[2]
-                if time >= last
-                  tally[3] = time - last if time - last > tally[3]
-                  tally[2] = time
-                elsif time < tally[1] then tally[1] = time
-                end
-              end
-            end
-            if last_time.nil? then first_time = last_time = time
-            elsif time >= last_time then last_time = time
-            elsif time < first_time then first_time = time
-            end
-            if previous && time < previous
-              @lines = lines
-              out_of_order(time, previous)
-            end
-            previous = time
-          end
-          pieces += 1
-          next unless pieces == every
+          next unless (pieces += 1) == every
 
           pieces = 0
           commit.call

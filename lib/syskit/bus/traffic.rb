@@ -125,9 +125,8 @@ module Syskit
         (STANDARD_BITS * classic_standard) + (EXTENDED_BITS * classic_extended) + (BITS_PER_BYTE * @bytes)
       end
 
-      private
-
-      # Same as #span, for the times of one key's tally.
+      # Same as #span, for the times of one key's tally; public for the log
+      # readers that update tallies themselves (see CandumpLog#read).
       def stretch(tally, time)
         # Logs are in time order: the last frame is the latest, except in
         # logs merged from several sources.
@@ -140,6 +139,8 @@ module Syskit
         elsif time < tally[FIRST_TIME] then tally[FIRST_TIME] = time
         end
       end
+
+      private
 
       def span(time)
         if @last_time.nil? then @first_time = @last_time = time

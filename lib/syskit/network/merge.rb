@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/network/kept_tasks'
+
 module Syskit
   module Network
     # Step 2: equal tasks made for different children become one, as
@@ -63,20 +65,27 @@ module Syskit
       end
 
       # Merges what can be merged in +group+; returns how many tasks went.
+      # Each task merges into the first task kept before it whose inputs
+      # agree with its own (see #inputs), found through hashes (see
+      # KeptTasks) rather than by comparing it with every kept task: a
+      # group holds thousands of tasks when compositions differ only by
+      # what feeds them.
       def merge_group(group, inputs, replaced)
-        kept = []
+        kept = KeptTasks.new
         group.each do |task|
-          target = kept.find { |k| same_inputs?(k, task, inputs) }
-          target ? replaced[task] = target : kept << task
+          signature = inputs(task, inputs)
+          target = kept.first_agreeing(signature)
+          target ? replaced[task] = target : kept.add(task, signature)
         end
         group.size - kept.size
       end
 
-      def same_inputs?(one, other, inputs)
-        mine = inputs.fetch(one, {})
-        theirs = inputs.fetch(other, {})
-        (mine.keys & theirs.keys).all? do |port|
-          mine[port].sort == theirs[port].sort || one.find_port(port)&.multiplexes?
+      # The connected input ports of +task+ that do not multiplex, with
+      # their sources, sorted. Two tasks' inputs agree when every port both
+      # have is fed by the same sources (a multiplexing port takes any).
+      def inputs(task, inputs)
+        inputs.fetch(task, {}).each_with_object({}) do |(port, sources), signature|
+          signature[port] = sources.sort unless task.find_port(port)&.multiplexes?
         end
       end
 

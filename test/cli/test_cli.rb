@@ -205,7 +205,8 @@ module Syskit
     # What the help and the version print needs no model: they load none.
     def test_help_and_version_load_no_model
       [%w[help], %w[help plan], %w[gen help dev], %w[--version], %w[plna]].each do |args|
-        script = "ARGV.replace(#{args.inspect}); at_exit { warn \"model layer: \#{defined?(Syskit::App).inspect}\" }; " \
+        script = "ARGV.replace(#{args.inspect}); " \
+                 "at_exit { warn \"model layer: \#{defined?(Syskit::App).inspect}\" }; " \
                  "load #{File.join(GEM_ROOT, 'bin', 'syskit').inspect}"
         out, err, = Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-e', script, unsetenv_others: true)
         assert_match(/syskit/, out + err, args)

@@ -153,7 +153,8 @@ module Syskit
       hint = "\n  hint: a plan file is what syskit plan PROFILE --format json > plan.json writes\n"
       { %w[diff nothing.json old.json] => "no plan file 'nothing.json'#{hint}",
         %w[diff old.json empty.json] => "empty.json: this plan file is empty#{hint}",
-        %w[plan --diff broken.json] => /\Abroken\.json: this is not a JSON plan: unexpected token/,
+        # The JSON library's own words, which differ between its versions.
+        %w[plan --diff broken.json] => /\Abroken\.json: this is not a JSON plan: unexpected (token|end of input)/,
         %w[diff other.json old.json] => 'other.json: this is JSON but not a plan (it has no profile, robot and ' \
                                         "tasks)#{hint}",
         %w[plan --diff old.json --format dot] => "--diff prints the difference as text or json, not dot\n  " \

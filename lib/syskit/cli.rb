@@ -21,9 +21,11 @@ module Syskit
     RENDERERS = { 'text' => :Text, 'json' => :JSON, 'dot' => :Dot, 'svg' => :Svg }.freeze
 
     # What each command loads before it runs (see Help#libraries); the
-    # others load the model layer, syskit, and the rest as they go.
+    # others load the model layer, syskit, and the rest as they go. `gen`
+    # and `bus` are groups: their commands say what they need.
     LIBRARIES = {
-      'version' => [], 'gen' => [], 'bus' => [], 'diff' => %w[syskit syskit/cli/plan_files], 'check' => %w[syskit syskit/check],
+      'version' => [], 'gen' => [], 'bus' => [],
+      'diff' => %w[syskit syskit/cli/plan_files], 'check' => %w[syskit syskit/check],
       'doc' => %w[syskit syskit/doc], 'test' => %w[syskit syskit/test/runner]
     }.freeze
 

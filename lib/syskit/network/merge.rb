@@ -25,7 +25,7 @@ module Syskit
 
         replaced = {}.compare_by_identity
         loop do
-          inputs = input_sources(replaced)
+          inputs = input_sources(replaced, groups)
           break if groups.sum { |group| merge_group(group, inputs, replaced) }.zero?
 
           groups = groups.map { |g| g.reject { |t| replaced.key?(t) } }.select { |g| g.size > 1 }
@@ -41,12 +41,18 @@ module Syskit
              .values.select { |g| g.size > 1 }
       end
 
-      # For each task, its input ports' sources ([task, port] pairs), tasks
-      # already merged standing for the ones they replaced.
-      def input_sources(replaced)
+      # For each task of +groups+, its input ports' sources ([task, port]
+      # pairs), tasks already merged standing for the ones they replaced.
+      # Connections into other tasks are not resolved: most tasks of a
+      # large network merge with none.
+      def input_sources(replaced, groups)
+        wanted = groups.flatten.to_h { |t| [t, true] }.compare_by_identity
         sources = Hash.new { |h, task| h[task] = Hash.new { |ports, name| ports[name] = [] } }.compare_by_identity
         @context.compositions.each do |composition|
           composition.model.connections.each do |connection|
+            into = composition.children_by_role[connection.to.child_name]
+            next unless into.is_a?(Composition) || wanted.key?(final(into, replaced))
+
             from = composition.resolve_child_port(connection.from)
             to = composition.resolve_child_port(connection.to)
             next unless from && to

@@ -1,7 +1,5 @@
 # frozen_string_literal: true
 
-require 'ripper'
-
 module Syskit
   # Calls of given methods in a Ruby source, found by Ruby's own parser
   # before the file runs (register_app in robot configurations, deployment
@@ -35,6 +33,9 @@ module Syskit
       # deployments, none of which registers an app).
       return [] if names.none? { |name| source.include?(name) }
 
+      # Loaded here: most sources have no such call, and most commands
+      # parse none.
+      require 'ripper'
       found = []
       walk(Ripper.sexp(source), names, found)
       found.sort_by(&:line)

@@ -46,23 +46,28 @@ module Syskit
       # Connections into other tasks are not resolved: most tasks of a
       # large network merge with none.
       def input_sources(replaced, groups)
-        wanted = groups.flatten.to_h { |t| [t, true] }.compare_by_identity
+        wanted = {}.compare_by_identity
+        groups.each { |group| group.each { |task| wanted[task] = true } }
         sources = Hash.new { |h, task| h[task] = Hash.new { |ports, name| ports[name] = [] } }.compare_by_identity
         @context.compositions.each do |composition|
           composition.model.connections.each do |connection|
             into = composition.children_by_role[connection.to.child_name]
             next unless into.is_a?(Composition) || wanted.key?(final(into, replaced))
 
-            from = composition.resolve_child_port(connection.from)
-            to = composition.resolve_child_port(connection.to)
-            next unless from && to
-
-            source = [final(from[0], replaced).object_id, from[1]]
-            list = sources[final(to[0], replaced)][to[1]]
-            list << source unless list.include?(source)
+            add_source(sources, composition, connection, replaced)
           end
         end
         sources
+      end
+
+      def add_source(sources, composition, connection, replaced)
+        from = composition.resolve_child_port(connection.from)
+        to = composition.resolve_child_port(connection.to)
+        return unless from && to
+
+        source = [final(from[0], replaced).object_id, from[1]]
+        list = sources[final(to[0], replaced)][to[1]]
+        list << source unless list.include?(source)
       end
 
       def final(task, replaced)

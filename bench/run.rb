@@ -183,6 +183,10 @@ module Syskit
 end
 
 if $PROGRAM_NAME == __FILE__
+  # Whole processes are timed as users start them, without Bundler: under
+  # `bundle exec rake bench` each would inherit its RUBYOPT (-rbundler/setup)
+  # and load Bundler first (0.15 s more for every one, ruby -e 1 included).
+  ENV.replace(Bundler.unbundled_env) if defined?(Bundler)
   puts "machine: #{Syskit::Bench::Startup.machine}"
   Syskit::Bench::Startup.run
   puts

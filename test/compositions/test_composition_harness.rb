@@ -88,6 +88,62 @@ module Syskit
       end
     RUBY
 
+    # A composition whose Ruby code computes with Eigen values and reads
+    # its arguments, as pose predicates in Rock's bundles do.
+    NEAR = <<~RUBY
+      require 'models/devices/rover'
+      module Rig
+        module Compositions
+          class Near < Syskit::Composition
+            argument :target
+            argument :tolerance
+            add Services::Pose, as: 'pose'
+
+            def near?(sample)
+              offset = target.position - sample.position
+              turn = (target.orientation.inverse * sample.orientation).to_euler
+              3.times.all? { |i| offset[i].abs <= tolerance[i] } && turn[0].abs <= tolerance[3]
+            end
+          end
+        end
+      end
+    RUBY
+
+    NEAR_TEST = <<~RUBY
+      require 'models/compositions/near'
+      module Rig
+        module Compositions
+          describe Near do
+            before do
+              @target = Types.base.Pose.new(position: Eigen::Vector3.Zero, orientation: Eigen::Quaternion.Identity)
+              @near = Near.new(target: @target)
+            end
+
+            def pose(x, yaw)
+              Types.base.Pose.new(position: Eigen::Vector3.new(x, 0, 0),
+                                  orientation: Eigen::Quaternion.from_angle_axis(yaw, Eigen::Vector3.UnitZ))
+            end
+
+            it 'compares positions and headings within the tolerance set on it' do
+              @near.tolerance = [0.5, 0.5, 0.5, 0.2]
+              assert @near.near?(pose(0.4, 0.1))
+              refute @near.near?(pose(0.6, 0.1))
+              refute @near.near?(pose(0.4, -0.3))
+            end
+
+            it "has the rotations of Rock's Eigen bindings" do
+              q = Eigen::Quaternion.from_euler(Eigen::Vector3.new(0.3, -0.2, 0.1), 2, 1, 0)
+              assert q.to_euler.approx?(Eigen::Vector3.new(0.3, -0.2, 0.1), 1e-9)
+              assert (q * Eigen::Vector3.UnitX).approx?(q.transform(Eigen::Vector3.UnitX))
+              assert (q * q.inverse).approx?(Eigen::Quaternion.Identity, 1e-12)
+              assert_equal Eigen::Vector3.Unset, Eigen::Vector3.Unset
+              assert Base.unset?(Eigen::Vector3.Unset[1])
+            end
+          end
+        end
+      end
+    RUBY
+
     PROFILE_TEST = <<~RUBY
       require 'models/profiles/base'
       module Rig
@@ -119,6 +175,14 @@ module Syskit
       out, err, status = syskit_test(harness_app, 'test/compositions/test_follow.rb')
       assert status.success?, "#{out}\n#{err}"
       assert_match(/5 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
+    end
+
+    def test_compositions_compute_with_eigen_values_and_their_arguments
+      app = rig_app({ 'models/compositions/near.rb' => "require 'base/float'\n#{NEAR}",
+                      'test/compositions/test_near.rb' => NEAR_TEST })
+      out, err, status = syskit_test(app, 'test/compositions/test_near.rb')
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
     end
 
     def test_profile_assertions_cover_definitions

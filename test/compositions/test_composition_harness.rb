@@ -144,6 +144,30 @@ module Syskit
       end
     RUBY
 
+    # Task models made in a test, as Syskit's tests make them.
+    RUBY_MODELS_TEST = <<~RUBY.freeze
+      require 'models/compositions/follow'
+      module Rig
+        module Compositions
+          describe Follow do
+            it 'takes task models made in Ruby as its children' do
+              source = Syskit::TaskContext.new_submodel(name: 'Source') do
+                output_port 'pose', '#{RBS}'
+                provides Services::Pose, as: 'pose'
+              end
+              follower = OroGen.rig.Follower.new_submodel { output_port 'debug', '/double' }
+              cmp = syskit_stub_and_deploy(Follow.use('pose' => source, 'follower' => follower))
+              assert_equal 'Source', cmp.pose_child.model.name
+              assert cmp.pose_child.pose_port.connected_to?(cmp.follower_child.pose_port)
+              assert cmp.follower_child.model <= OroGen.rig.Follower
+              assert cmp.follower_child.model.find_port('debug')
+              assert_equal 1.0, cmp.follower_child.model.new.properties.gain
+            end
+          end
+        end
+      end
+    RUBY
+
     PROFILE_TEST = <<~RUBY
       require 'models/profiles/base'
       module Rig
@@ -183,6 +207,14 @@ module Syskit
       out, err, status = syskit_test(app, 'test/compositions/test_near.rb')
       assert status.success?, "#{out}\n#{err}"
       assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
+    end
+
+    def test_task_models_made_in_ruby_in_a_test
+      app = rig_app({ 'models/compositions/follow.rb' => FOLLOW,
+                      'test/compositions/test_models.rb' => RUBY_MODELS_TEST })
+      out, err, status = syskit_test(app, 'test/compositions/test_models.rb')
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/1 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
     end
 
     def test_profile_assertions_cover_definitions

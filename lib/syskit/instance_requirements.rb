@@ -282,12 +282,9 @@ module Syskit
     end
 
     def declare_deployment(name, unmanaged, location)
-      unless name.respond_to?(:to_str) && name.to_str.match?(/\A[\w.-]+\z/)
-        raise DeclarationError.new("invalid deployed task name #{name.inspect} for #{self}",
-                                   location: location, hint: "write deployed_as('name_of_the_task')")
-      end
-
-      copy(deployment: Robot::MasterDevice::DeclaredDeployment.new(name.to_str, unmanaged, location))
+      copy(deployment: Robot::MasterDevice::DeclaredDeployment.declare(
+        name, unmanaged, location, owner: self, hint: "write deployed_as('name_of_the_task')"
+      ))
     end
 
     def copy(**changes)

@@ -168,6 +168,29 @@ module Syskit
       end
     RUBY
 
+    # Configuration sections a test stubs, for itself only.
+    CONF_TEST = <<~RUBY
+      require 'models/compositions/follow'
+      module Rig
+        module Compositions
+          describe Follow do
+            it 'configures its children with the stubbed sections' do
+              syskit_stub_conf(OroGen.rig.Follower, 'default', data: { 'gain' => 2.5 })
+              syskit_stub_conf(OroGen.rig.Follower, 'fast', data: { gain: 4.0 })
+              cmp = syskit_stub_deploy_and_configure(Follow)
+              assert_equal 2.5, cmp.follower_child.properties.gain
+              cmp = syskit_stub_deploy_and_configure(Follow.use('follower' => OroGen.rig.Follower.with_conf('default', 'fast')))
+              assert_equal 4.0, cmp.follower_child.properties.gain
+            end
+
+            it 'has the sections of the files again in the next test' do
+              assert_equal 1.0, syskit_stub_deploy_and_configure(Follow).follower_child.properties.gain
+            end
+          end
+        end
+      end
+    RUBY
+
     PROFILE_TEST = <<~RUBY
       require 'models/profiles/base'
       module Rig
@@ -215,6 +238,15 @@ module Syskit
       out, err, status = syskit_test(app, 'test/compositions/test_models.rb')
       assert status.success?, "#{out}\n#{err}"
       assert_match(/1 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
+    end
+
+    def test_configuration_sections_stubbed_by_a_test
+      app = rig_app({ 'models/compositions/follow.rb' => FOLLOW, 'test/compositions/test_conf.rb' => CONF_TEST })
+      out, err, status = syskit_test(app, 'test/compositions/test_conf.rb', '--seed', '1')
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
+      out, err, status = syskit_test(app, 'test/compositions/test_conf.rb', '--seed', '2')
+      assert status.success?, "#{out}\n#{err}"
     end
 
     def test_profile_assertions_cover_definitions

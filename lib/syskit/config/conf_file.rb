@@ -41,6 +41,28 @@ module Syskit
         parse(UserFile.read(path))
       end
 
+      # A file without sections, for a task model that has none (+path+ is
+      # only its name in messages).
+      def self.empty(path)
+        file = allocate
+        file.instance_variable_set(:@path, path)
+        file.instance_variable_set(:@sections, {})
+        file
+      end
+
+      # A copy whose sections +names+ have +data+ merged into them (made
+      # when missing), declared at +location+: what a test stubs.
+      def with_sections(names, data, location)
+        copy = ConfFile.empty(path)
+        stubbed = sections.dup
+        names.each do |name|
+          settings = ConfFile.deep_merge(stubbed[name]&.settings || {}, data.transform_keys(&:to_s))
+          stubbed[name] = Section.new(name, settings, location.lineno, '', location.path)
+        end
+        copy.instance_variable_set(:@sections, stubbed)
+        copy
+      end
+
       def section_names
         sections.keys
       end

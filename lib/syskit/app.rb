@@ -9,6 +9,7 @@ require 'syskit/app/settings_yaml'
 require 'syskit/app/settings'
 require 'syskit/app/everything'
 require 'syskit/app/conf_files'
+require 'syskit/app/init_file'
 require 'syskit/types/typekit_search'
 require 'syskit/config/robot_config_loader'
 
@@ -119,10 +120,14 @@ module Syskit
     # Syskit: the drivers a profile can use are the ones its files ask for.
     # With +everything: true+ (syskit check), every task library and typekit
     # of the app is loaded afterwards too, so that their problems are found.
-    def load(robots: ['default'], everything: false)
+    #
+    # With +models: false+, the files under models/ are loaded only when
+    # something requires them (a Rock app whose config/init.rb sets
+    # auto_load_models to false, see InitFile, runs its tests so).
+    def load(robots: ['default'], everything: false, models: true)
       activate
       load_bundled_models
-      load_model_files
+      load_model_files if models
       load_robot_configs(robots)
       collect_problems { resolve_devices }
       load_everything if everything

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 require 'json'
 
 module Syskit
@@ -110,7 +110,7 @@ module Syskit
 
     # The README's example, on a copy of the example app.
     def test_the_readme_example
-      shown = File.read(File.join(GEM_ROOT, 'README.md'))[/^\$ syskit plan Live::Base --diff plan.json\n(.*?)^```/m, 1]
+      shown = SelfTest::Docs.readme.output_of('syskit plan Live::Base --diff plan.json')
       app = File.join(Dir.mktmpdir('syskit-diff'), 'awesome_robot')
       (@tmpdirs ||= []) << File.dirname(app)
       FileUtils.cp_r(File.join(GEM_ROOT, 'examples', 'awesome_robot'), app)

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 require 'minitest/mock'
 require 'open3'
 require 'rbconfig'
@@ -28,9 +28,7 @@ module Syskit
     RUBY
 
     # What the README shows `syskit gen app awesome_robot` prints.
-    README_APP_LISTING = File.read(File.join(SelfTest::GEM_ROOT, 'README.md'))[
-      /^\$ syskit gen app awesome_robot\n(.*?\n)\$ /m, 1
-    ]
+    README_APP_LISTING = SelfTest::Docs.readme.output_of('syskit gen app awesome_robot')
 
     def test_a_new_app_and_every_generated_model_load_and_their_tests_pass
       app, out = new_app
@@ -305,7 +303,7 @@ module Syskit
 
     # The README's session of generators prints what the commands print.
     def test_the_readme_session
-      session = File.read(File.join(GEM_ROOT, 'README.md'))[/^\$ cd awesome_robot\n(.*?)^\$ rake test/m, 1]
+      session = SelfTest::Docs.readme.text[/^\$ cd awesome_robot\n(.*?)^\$ rake test/m, 1]
       app, = new_app
       session.scan(/^\$ syskit gen (.*)\n((?:[^$].*\n)*)/).each do |args, output|
         assert_equal output, gen(*args.split, chdir: app), "syskit gen #{args}"

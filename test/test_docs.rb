@@ -1,0 +1,39 @@
+# frozen_string_literal: true
+
+require 'docs_helper'
+
+module Syskit
+  # What every document (README.md, doc/**/*.md) shows of the example app
+  # is in the example app.
+  class TestDocs < Minitest::Test
+    EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
+
+    # Snippets headed by a file of the example app are excerpts of that
+    # file: each line, in order (comments after code aside).
+    def test_snippets_headed_by_a_file_are_excerpts_of_the_example_app
+      snippets = SelfTest::Docs.all.flat_map { |doc| doc.file_snippets.map { |path, body| [doc, path, body] } }
+      assert_operator snippets.size, :>=, 8
+      snippets.each do |doc, path, body|
+        file = File.join(EXAMPLE, path)
+        assert File.file?(file), "#{doc.path}'s snippet of #{path}: the example app has no such file"
+        assert_excerpt File.readlines(file), body, "#{doc.path}'s snippet of #{path}"
+      end
+    end
+
+    private
+
+    def assert_excerpt(lines, body, what)
+      lines = lines.map { |l| code_of(l) }
+      at = 0
+      body.lines.map { |l| code_of(l) }.reject { |l| l.empty? || l.start_with?('#') }.each do |line|
+        found = lines[at..].index(line)
+        assert found, "#{what}: '#{line}' is not in the file (after line #{at})"
+        at += found + 1
+      end
+    end
+
+    def code_of(line)
+      line.sub(/\s+# .*$/, '').strip
+    end
+  end
+end

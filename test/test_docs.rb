@@ -20,6 +20,13 @@ module Syskit
       end
     end
 
+    def test_the_plan_guide_shows_the_whole_plan
+      shown = SelfTest::Docs.guide('plan').output_of('bundle exec bin/syskit plan --app examples/awesome_robot')
+      out, err, status = run_cli('plan', '--app', 'examples/awesome_robot')
+      assert_equal 0, status, err
+      assert_equal out, shown
+    end
+
     private
 
     def assert_excerpt(lines, body, what)

@@ -25,11 +25,21 @@ module Syskit
       assert_equal cases, Integer(said)
     end
 
-    def test_the_example_plan_is_the_one_the_command_prints
+    # The tour's plan is an excerpt of what the command prints: each run
+    # of lines between "..." lines is in the output as shown, in order.
+    def test_the_tour_plan_is_an_excerpt_of_what_the_command_prints
       shown = README.output_of('bundle exec bin/syskit plan --app examples/awesome_robot')
       out, err, status = run_cli('plan', '--app', 'examples/awesome_robot')
       assert_equal 0, status, err
-      assert_equal out, shown
+      runs = shown.split(/^ *\.\.\.\n/)
+      assert_operator runs.size, :>=, 5
+      at = 0
+      runs.each do |run|
+        found = out.index(run, at)
+        assert found, "the README's plan shows lines the command does not print (after offset #{at}):\n#{run}"
+        assert found.zero? || out[found - 1] == "\n", "the README's plan cuts a line:\n#{run}"
+        at = found + run.size
+      end
     end
   end
 end

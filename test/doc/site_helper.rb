@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 require 'rexml/document'
 
 module Syskit

@@ -14,6 +14,13 @@ module Syskit
       assert_equal "wrote #{html_pages(dir).size} pages to #{dir}\nopen #{dir}/index.html\n", out
     end
 
+    # The count the site guide shows is the example site's.
+    def test_the_site_guide_shows_what_the_command_prints
+      shown = SelfTest::Docs.guide('site').output_of('bundle exec bin/syskit doc --app examples/awesome_robot ' \
+                                                     '--output /tmp/site')
+      assert_equal "wrote #{html_pages(example_site).size} pages to /tmp/site\nopen /tmp/site/index.html\n", shown
+    end
+
     def test_the_index_lists_every_kind_and_marks_what_comes_from_a_bundle
       index = page('index.html')
       assert_equal ['Device models 7', 'Bus models 2', 'Data services 1', 'Task libraries 10', 'Task models 13',

@@ -35,6 +35,23 @@ module Syskit
         paths.map { |path| read(path) }
       end
 
+      # Assertions on what documents show.
+      module Assertions
+        # +shown+ is an excerpt of +out+: each run of lines between "..."
+        # lines is in +out+ whole, as shown, and the runs are in order.
+        def assert_shown_excerpt(shown, out, what)
+          runs = shown.split(/^ *\.\.\.\n/)
+          at = 0
+          runs.each do |run|
+            found = out.index(run, at)
+            assert found, "#{what} shows lines the command does not print (after offset #{at}):\n#{run}"
+            assert found.zero? || out[found - 1] == "\n", "#{what} cuts a line:\n#{run}"
+            at = found + run.size
+          end
+          runs.size
+        end
+      end
+
       # A document, or a section of one: its text, and the parts of it
       # tests check. Lines inside fenced code blocks are never headings.
       class Text

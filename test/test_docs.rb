@@ -20,6 +20,15 @@ module Syskit
       end
     end
 
+    def test_the_error_corpus_count_is_the_number_of_cases
+      said = SelfTest::Docs.guide('troubleshooting')
+                           .text[%r{under `test/fixtures/broken/` \(one broken app per case, (\d+)\s}, 1]
+      refute_nil said, "the troubleshooting guide no longer gives the corpus's size"
+      cases = Dir.children(File.join(GEM_ROOT, 'test', 'fixtures', 'broken'))
+                 .count { |c| File.directory?(File.join(GEM_ROOT, 'test', 'fixtures', 'broken', c)) }
+      assert_equal cases, Integer(said)
+    end
+
     def test_the_plan_guide_shows_the_whole_plan
       shown = SelfTest::Docs.guide('plan').output_of('bundle exec bin/syskit plan --app examples/awesome_robot')
       out, err, status = run_cli('plan', '--app', 'examples/awesome_robot')

@@ -19,14 +19,6 @@ module Syskit
       assert_equal ['bundle install', 'bundle exec rake lint', 'bundle exec rake test'], ci
     end
 
-    def test_the_error_corpus_count_is_the_number_of_cases
-      said = README.text[%r{under `test/fixtures/broken/` \(one broken app per case, (\d+)\s}, 1]
-      refute_nil said, "the README no longer gives the corpus's size"
-      cases = Dir.children(File.join(GEM_ROOT, 'test', 'fixtures', 'broken'))
-                 .count { |c| File.directory?(File.join(GEM_ROOT, 'test', 'fixtures', 'broken', c)) }
-      assert_equal cases, Integer(said)
-    end
-
     # The tour's plan is an excerpt of what the command prints.
     def test_the_tour_plan_is_an_excerpt_of_what_the_command_prints
       shown = README.output_of('bundle exec bin/syskit plan --app examples/awesome_robot')

@@ -4,9 +4,9 @@ require 'docs_helper'
 require 'json'
 
 module Syskit
-  # What the README's bus traffic section shows is what the commands print.
+  # What the bus traffic guide shows is what the commands print.
   class TestBusDoc < Minitest::Test
-    DOC = SelfTest::Docs.readme.section(/\ABus traffic/)
+    DOC = SelfTest::Docs.guide('bus-tools')
     COMMAND = 'bundle exec bin/syskit '
 
     # The output shown under "$ COMMAND", and the command's arguments.

@@ -3,9 +3,9 @@
 require 'docs_helper'
 
 module Syskit
-  # What the README's CAN bus timing section shows is what the commands print.
+  # What the CAN bus timing guide shows is what the commands print.
   class TestTimingDoc < Minitest::Test
-    DOC = SelfTest::Docs.readme.section(/\ACAN bus timing/)
+    DOC = SelfTest::Docs.guide('can-timing')
     COMMAND = 'bundle exec bin/syskit '
 
     def examples
@@ -24,7 +24,7 @@ module Syskit
     def test_the_declarations_shown_are_the_example_apps
       profile = File.read(File.join(GEM_ROOT, 'examples/awesome_robot/models/profiles/live/base.rb'))
       DOC.code_block('ruby').lines.grep(/\.frame|\.bitrate/).each do |line|
-        assert_includes profile, line.sub(/ +#.*/, '').strip, 'the README shows the example app'
+        assert_includes profile, line.sub(/ +#.*/, '').strip, 'the guide shows the example app'
       end
     end
   end

@@ -1,10 +1,11 @@
 # frozen_string_literal: true
 
 require 'docs_helper'
+require 'syskit/doc/markdown'
 
 module Syskit
   # What every document (README.md, doc/**/*.md) shows of the example app
-  # is in the example app.
+  # is in the example app, and its links lead somewhere.
   class TestDocs < Minitest::Test
     EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
 
@@ -18,6 +19,21 @@ module Syskit
         assert File.file?(file), "#{doc.path}'s snippet of #{path}: the example app has no such file"
         assert_excerpt File.readlines(file), body, "#{doc.path}'s snippet of #{path}"
       end
+    end
+
+    # Relative links lead to a file of the gem and, given an anchor, to a
+    # heading of that Markdown file (GitHub's anchors, Doc::Markdown's).
+    def test_every_relative_link_leads_to_a_file_and_its_anchor
+      checked = 0
+      SelfTest::Docs.all.each do |doc|
+        doc.links.each do |target, line|
+          next if target.match?(/\A[a-z][a-z+.-]*:/i) # https:, mailto:
+
+          assert_link_resolves(doc, target, "#{doc.path}:#{line}: #{target}")
+          checked += 1
+        end
+      end
+      assert_operator checked, :>=, 40
     end
 
     def test_the_error_corpus_count_is_the_number_of_cases
@@ -37,6 +53,19 @@ module Syskit
     end
 
     private
+
+    def assert_link_resolves(doc, target, where)
+      path, anchor = target.split('#', 2)
+      source = File.join(GEM_ROOT, doc.path)
+      file = path.empty? ? source : File.expand_path(path, File.dirname(source))
+      assert file.start_with?("#{GEM_ROOT}/"), "#{where}: outside the gem"
+      assert File.exist?(file), "#{where}: no such file"
+      return unless anchor
+
+      assert file.end_with?('.md'), "#{where}: an anchor into a file that is not Markdown"
+      ids = Doc::Markdown.new(File.read(file)).headings.map(&:id)
+      assert_includes ids, anchor, "#{where}: no such heading"
+    end
 
     def assert_excerpt(lines, body, what)
       lines = lines.map { |l| code_of(l) }

@@ -19,6 +19,14 @@ module Syskit
       assert_equal ['bundle install', 'bundle exec rake lint', 'bundle exec rake test'], ci
     end
 
+    def test_the_version_shown_is_what_the_command_prints
+      shown = README.output_of('syskit version')
+      out, err, status = run_cli('version')
+      assert_equal 0, status, err
+      assert_equal shown, out.sub(/ from #{Regexp.escape(GEM_ROOT)}$/, ' from /path/of/the/gem')
+                             .sub(/\Asyskit #{Regexp.escape(VERSION)}$/, 'syskit 0.1.0')
+    end
+
     # The tour's plan is an excerpt of what the command prints.
     def test_the_tour_plan_is_an_excerpt_of_what_the_command_prints
       shown = README.output_of('bundle exec bin/syskit plan --app examples/awesome_robot')

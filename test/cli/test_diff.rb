@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 require 'json'
 
 module Syskit
@@ -108,9 +108,10 @@ module Syskit
       assert_equal 1, run_cli('diff', 'old.json', 'new.json', '--exit-code', chdir: @app).last
     end
 
-    # The README's example, on a copy of the example app.
-    def test_the_readme_example
-      shown = File.read(File.join(GEM_ROOT, 'README.md'))[/^\$ syskit plan Live::Base --diff plan.json\n(.*?)^```/m, 1]
+    # The plan guide's example, on a copy of the example app.
+    def test_the_example_of_the_plan_guide
+      shown = SelfTest::Docs.guide('plan').section('Reviewing a change: plan diffs')
+                            .output_of('syskit plan Live::Base --diff plan.json')
       app = File.join(Dir.mktmpdir('syskit-diff'), 'awesome_robot')
       (@tmpdirs ||= []) << File.dirname(app)
       FileUtils.cp_r(File.join(GEM_ROOT, 'examples', 'awesome_robot'), app)

@@ -23,7 +23,8 @@ module Syskit
       root = my_app("device MyApp::Devices::IMU, as: 'imu'")
       out, err, status = run_cli('doc', '--app', root)
       assert_equal [0, ''], [status, err]
-      assert_equal "wrote 12 pages to #{root}/doc/site\nopen #{root}/doc/site/index.html\n", out
+      pages = 12 + GUIDES.size # the index, the app's 11 entries and the guides
+      assert_equal "wrote #{pages} pages to #{root}/doc/site\nopen #{root}/doc/site/index.html\n", out
       assert File.file?(File.join(root, 'doc', 'site', 'profiles', 'MyApp.Profiles.Base.html'))
     end
 

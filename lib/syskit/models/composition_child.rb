@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/child_port'
+require 'syskit/models/port_lookup'
 
 module Syskit
   module Models
@@ -12,6 +13,8 @@ module Syskit
     # The statements that refine requirements change the child in place and
     # return it, as in Syskit: +add(Srv, as: 'x').with_arguments(speed: 2)+.
     class CompositionChild
+      include PortLookup
+
       attr_reader :composition_model, :child_name, :requirements, :declared_at
 
       def initialize(composition_model, child_name, requirements, location, optional: false)
@@ -94,32 +97,6 @@ module Syskit
           end
           found.freeze
         end
-      end
-
-      def find_port(name)
-        ports[name.to_s]
-      end
-
-      def find_output_port(name)
-        port = find_port(name)
-        port if port&.output?
-      end
-
-      def find_input_port(name)
-        port = find_port(name)
-        port if port&.input?
-      end
-
-      def each_output_port(&)
-        ports.each_value.select(&:output?).each(&)
-      end
-
-      def each_input_port(&)
-        ports.each_value.select(&:input?).each(&)
-      end
-
-      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-        !find_port(name).nil?
       end
 
       # The child seen through +service_model+, one of the models it

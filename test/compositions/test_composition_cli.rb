@@ -9,21 +9,6 @@ module Syskit
   class TestCompositionCLI < Minitest::Test
     include CompositionTestHelper
 
-    WATCH = <<~RUBY
-      require 'models/devices/rover'
-      using_task_library 'rig'
-      module Rig
-        module Compositions
-          class Watch < Syskit::Composition
-            add Services::Pose, as: 'pose'
-            add OroGen.rig.Follower, as: 'follower'
-            pose_child.pose_port.connect_to follower_child.pose_port
-            export follower_child.command_port, as: 'speed'
-          end
-        end
-      end
-    RUBY
-
     PROFILE = <<~RUBY
       profile 'Base' do
         robot do

@@ -8,20 +8,6 @@ module Syskit
   class TestProfileDefinitions < Minitest::Test
     include CompositionTestHelper
 
-    WATCH = <<~RUBY
-      require 'models/devices/rover'
-      using_task_library 'rig'
-      module Rig
-        module Compositions
-          class Watch < Syskit::Composition
-            add Services::Pose, as: 'pose'
-            add OroGen.rig.Follower, as: 'follower'
-            pose_child.pose_port.connect_to follower_child.pose_port
-          end
-        end
-      end
-    RUBY
-
     def watch_app(profile)
       load_rig({ 'models/compositions/watch.rb' => WATCH }, profile: profile, requires: ['models/compositions/watch'])
     end

@@ -82,11 +82,13 @@ module Syskit
       end
 
       # The ports of the child, by name: those of its component model (its
-      # exported ports for a composition), or of its service models.
+      # exported ports for a composition), or of its service models. A
+      # composition child given selections (+add(Cmp.use(...), as:)+) has
+      # the ports of the specialization they select, as in Syskit.
       def ports
         @ports ||= begin
           found = {}
-          models.each do |model|
+          port_models.each do |model|
             model.ports.each_value do |port|
               found[port.name] ||= ChildPort.new(self, port, model)
             end
@@ -150,6 +152,15 @@ module Syskit
       alias short_name to_s
 
       private
+
+      # The models whose ports the child has: a composition model narrowed
+      # to the specialization the child's own selections select.
+      def port_models
+        return models unless requirements.composition? && !requirements.selections.empty?
+
+        narrowed = requirements.narrow_model
+        models.map { |m| m.equal?(requirements.component_model) ? narrowed : m }
+      end
 
       # +x_port+ for each port and +x_srv+ for each service of the
       # component model, as singleton methods (no method_missing).

@@ -272,8 +272,11 @@ module Syskit
       def with_composition_conf(composition, name, requirements)
         return requirements if requirements.conf_given?
 
-        sections = composition.conf.filter_map { |c| composition.model.configurations.dig(c, name) }.last
-        sections ? requirements.with_conf(*sections) : requirements
+        model = composition.model
+        conf = composition.conf.reverse.find { |c| model.configurations.dig(c, name) }
+        return requirements unless conf
+
+        requirements.with_conf(*model.configurations.dig(conf, name), location: model.configuration_location(conf))
       end
 
       def stub_task(requirements, path, parent)

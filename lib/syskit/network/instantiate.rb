@@ -314,9 +314,13 @@ module Syskit
       end
 
       # Errors point at the root requirement's declaration (the definition,
-      # where a +use+ fixes them), else at the child's.
+      # where a +use+ fixes them), else at the child's; a tag of a profile
+      # this one uses, at the use_profile statement that selects for it.
       def error_location(requirements)
-        @root&.declared_at || requirements.declared_at
+        tag_profile = requirements.profile if requirements.name&.end_with?('_tag')
+        planned = @context.profile
+        used_at = planned.use_profile_location(tag_profile) if tag_profile && planned && !planned.equal?(tag_profile)
+        used_at || @root&.declared_at || requirements.declared_at
       end
 
       def sibling_cycle(composition, pending)

@@ -84,6 +84,10 @@ module Syskit
         ports[name.to_s]
       end
 
+      def each_port(&)
+        ports.each_value(&)
+      end
+
       def find_output_port(name)
         port = find_port(name)
         port if port&.output?

@@ -1,0 +1,31 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # The second example app, examples/arm_lab: compositions and profiles as
+  # Syskit users write them, which the compositions guide shows (its
+  # tests run with rake test in TestHarness).
+  class TestArmLab < Minitest::Test
+    ARM_LAB = File.join(GEM_ROOT, 'examples', 'arm_lab')
+
+    def test_check_passes
+      out, err, status = run_cli('check', '--app', ARM_LAB)
+      assert_equal 0, status, "#{out}#{err}"
+      assert_equal "ArmLab: 0 error(s), 0 warning(s)\n", out
+    end
+
+    # Lab leaves its target tag to the profiles using it: Bench selects it,
+    # so that every definition plans there.
+    def test_every_definition_plans_where_its_tags_are_selected
+      app = load_app(ARM_LAB)
+      bench = app.profiles.fetch('ArmLab::Profiles::Bench')
+      names = bench.definitions.keys
+      assert_equal %w[right_hold right_hold_gentle follow_wand reach_target], names
+      names.each do |name|
+        plan = Network::Generator.plan_profile(app, bench, actions: ["#{name}_def"]).plan
+        assert_equal name, plan.compositions.first.name
+      end
+    end
+  end
+end

@@ -195,10 +195,15 @@ module Syskit
       declare_deployment(name, true, Location.of_caller)
     end
 
-    # Dependency injection (see DependencyInjection).
+    # Dependency injection (see DependencyInjection). The children it
+    # names must be children of the composition.
     def use(*mappings)
       location = Location.of_caller
-      copy(selections: selections.add(mappings, location), declared_at: declared_at || location)
+      injection = selections.add(mappings, location)
+      if composition?
+        component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
+      end
+      copy(selections: injection, declared_at: declared_at || location)
     end
 
     # Which specializations to prefer when several apply.

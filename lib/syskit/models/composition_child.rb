@@ -145,6 +145,19 @@ module Syskit
         self
       end
 
+      # Why +name+ is not a method of the child, when it is a port's or a
+      # service's reader (+x_port+, +x_srv+); nil otherwise (see
+      # UserCode.explain).
+      def explain_missing(name)
+        kind = { '_port' => 'port', '_srv' => 'service' }.find { |suffix, _| name.end_with?(suffix) }
+        return unless kind
+
+        wanted = name.delete_suffix(kind[0])
+        names = kind[1] == 'port' ? ports.keys.sort : service_names
+        ["#{self} has no #{kind[1]} '#{wanted}'#{Naming.did_you_mean(wanted, names)}",
+         names.empty? ? "#{model} has no #{kind[1]}s" : "its #{kind[1]}s: #{names.join(', ')}"]
+      end
+
       def to_s
         "#{composition_model.short_name}.#{child_name}_child"
       end
@@ -160,6 +173,11 @@ module Syskit
 
         narrowed = requirements.narrow_model
         models.map { |m| m.equal?(requirements.component_model) ? narrowed : m }
+      end
+
+      def service_names
+        model = requirements.component_model
+        model ? model.each_data_service.select(&:master?).map(&:name).sort : []
       end
 
       # +x_port+ for each port and +x_srv+ for each service of the

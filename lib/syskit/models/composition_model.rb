@@ -3,6 +3,7 @@
 require 'syskit/models/composition_child'
 require 'syskit/models/composition_ports'
 require 'syskit/models/composition_specializations'
+require 'syskit/models/composition_lookups'
 
 module Syskit
   # The class-level side of components (see Composition).
@@ -26,6 +27,7 @@ module Syskit
       include ComponentModel
       include CompositionPorts
       include CompositionSpecializations
+      include CompositionLookups
 
       # Options of +add+ that only matter to Roby's runtime (what the
       # child's events mean to the composition): accepted, not modelled.

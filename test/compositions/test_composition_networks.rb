@@ -182,6 +182,7 @@ module Syskit
       errors = assert_raises(ErrorList) { plan_of(app, 'slow_def') }.errors
       assert_reported errors[0], /no section 'slow' in rig::Follower.yml/, at: 'models/compositions/follow.rb:17',
                                                                            root: app.root
+      assert_equal "add '--- name:slow' to rig::Follower.yml", errors[0].hint # default is asked for too
       assert_reported errors[1], /rig::Splitter 'splitter' asks for sections fast but rig::Splitter has no conf/,
                       at: 'models/compositions/follow.rb:18', root: app.root
     end

@@ -293,12 +293,12 @@ module Syskit
       def unknown_section(name, location, with_default: false)
         known = section_names
         file = File.basename(path)
+        hint = "add '--- name:#{name}' to #{file}"
+        hint += "; with_conf replaces ['default'], so write with_conf('default', '#{name}') to apply both" unless
+          with_default
         ConfigurationError.new(
           "no section '#{name}' in #{file}#{Naming.did_you_mean(name, known)} (sections: #{known.join(', ')})",
-          location: location,
-          hint: "add '--- name:#{name}' to #{file}" +
-                (with_default ? '' : "; with_conf replaces ['default'], so write with_conf('default', '#{name}') " \
-                                     'to apply both')
+          location: location, hint: hint
         )
       end
     end

@@ -27,5 +27,33 @@ module Syskit
         assert_equal name, plan.compositions.first.name
       end
     end
+
+    # What the compositions guide says of the selections in the app.
+    def test_selection_rules_the_guide_states
+      app = load_app(ARM_LAB)
+      lab = ArmLab::Profiles::Lab
+      # By name before by model: Reach's own use('controller' => ...) wins
+      # over the profile's use(Services::JointsController => ...).
+      assert_equal 'arm_control::CartesianController', controller_of(app, lab.follow_wand_def)
+      assert_equal 'arm_control::JointPositionController', controller_of(app, lab.right_hold_def)
+      # Two defaults providing Services::Pose select neither.
+      ambiguous = ArmLab::Compositions::Reach.use(lab.wand_dev, OroGen.arm_control.WaypointPlayer,
+                                                  'control.arm' => lab.left_arm_dev)
+      error = assert_raises(NetworkError) { plan(app, ambiguous) }
+      assert_match(/\Athe child 'target' of ArmLab::Compositions::Reach .* nothing selects/, error.message)
+    end
+
+    private
+
+    def plan(app, requirements)
+      Network::Generator.new(app, [requirements], profile: ArmLab::Profiles::Lab.syskit_profile,
+                                                  robot_config: app.robot_config('default')).generate.plan
+    end
+
+    def controller_of(app, definition)
+      plan = plan(app, definition)
+      name = plan.compositions.find { |c| c.children.key?('controller') }.children['controller']
+      plan.tasks.find { |t| t.name == name }.model
+    end
   end
 end

@@ -7,12 +7,14 @@ module ArmLab
     # when something tracks one.
     class Reach < Syskit::Composition
       add Services::Pose, as: 'target'
+      add OroGen.arm_control.TargetFilter, as: 'filter'
       add_optional Services::Pose, as: 'obstacle'
       add(ArmControl, as: 'control')
         .use('controller' => OroGen.arm_control.CartesianController)
         .with_conf('gentle')
 
-      target_child.pose_samples_port.connect_to control_child.target_port
+      target_child.pose_samples_port.connect_to filter_child.raw_port
+      filter_child.smoothed_port.connect_to control_child.target_port
       obstacle_child.pose_samples_port.connect_to control_child.obstacle_port
 
       export control_child.status_port

@@ -1,21 +1,25 @@
 # frozen_string_literal: true
 
 require 'docs_helper'
+require 'psych'
 require 'syskit/doc/markdown'
 
 module Syskit
-  # What every document (README.md, doc/**/*.md) shows of the example app
-  # is in the example app, and its links lead somewhere.
+  # What every document (README.md, doc/**/*.md) shows of the example apps
+  # is in them, and its links lead somewhere.
   class TestDocs < Minitest::Test
     EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
+    CORPUS = File.join(GEM_ROOT, 'test', 'fixtures', 'broken')
 
     # Snippets headed by a file of the example app are excerpts of that
-    # file: each line, in order (comments after code aside).
-    def test_snippets_headed_by_a_file_are_excerpts_of_the_example_app
+    # file: each line, in order (comments after code aside). A path
+    # starting with examples/NAME/ is a file of another example app.
+    def test_snippets_headed_by_a_file_are_excerpts_of_the_example_apps
       snippets = SelfTest::Docs.all.flat_map { |doc| doc.file_snippets.map { |path, body| [doc, path, body] } }
-      assert_operator snippets.size, :>=, 8
+      assert_operator snippets.size, :>=, 14
+      assert_operator snippets.count { |_, path, _| path.start_with?('examples/arm_lab/') }, :>=, 6
       snippets.each do |doc, path, body|
-        file = File.join(EXAMPLE, path)
+        file = path.start_with?('examples/') ? File.join(GEM_ROOT, path) : File.join(EXAMPLE, path)
         assert File.file?(file), "#{doc.path}'s snippet of #{path}: the example app has no such file"
         assert_excerpt File.readlines(file), body, "#{doc.path}'s snippet of #{path}"
       end
@@ -45,6 +49,28 @@ module Syskit
       assert_equal cases, Integer(said)
     end
 
+    def test_the_compositions_guide_shows_a_definition_s_plan
+      command = 'bundle exec bin/syskit plan --app examples/arm_lab Bench reach_target_def'
+      shown = SelfTest::Docs.guide('compositions').output_of(command)
+      out, err, status = run_cli(*command.split.drop(3))
+      assert_equal 0, status, err
+      assert_equal out, shown
+    end
+
+    # The errors the compositions guide shows are printed, as shown, by
+    # the cases of the error corpus located at their first line.
+    def test_the_compositions_guide_shows_errors_as_printed
+      blocks = SelfTest::Docs.guide('compositions').section('Errors').code_blocks('')
+      assert_operator blocks.size, :>=, 8
+      blocks.each do |shown|
+        printed = corpus_cases_at(shown.lines.first).map do |kase|
+          out, err, = run_cli(kase['command'], *Array(kase['args']).map(&:to_s), '--app', kase['dir'])
+          (kase['command'] == 'check' ? out : err).lines.first(2).join
+        end
+        assert_includes printed, shown, 'no case of the error corpus prints it'
+      end
+    end
+
     def test_the_plan_guide_shows_the_whole_plan
       shown = SelfTest::Docs.guide('plan').output_of('bundle exec bin/syskit plan --app examples/awesome_robot')
       out, err, status = run_cli('plan', '--app', 'examples/awesome_robot')
@@ -53,6 +79,18 @@ module Syskit
     end
 
     private
+
+    # The cases of the error corpus whose expected location and message
+    # are those of +line+ ("file:line: message").
+    def corpus_cases_at(line)
+      location, message = line.chomp.split(': ', 2)
+      found = Dir[File.join(CORPUS, '*', 'expected.yml')].filter_map do |path|
+        kase = { 'command' => 'check' }.merge(Psych.safe_load(File.read(path)), 'dir' => File.dirname(path))
+        kase if kase['location'] == location && message.match?(Regexp.new(kase['message']))
+      end
+      refute_empty found, "no case of the error corpus is expected to print #{line}"
+      found
+    end
 
     def assert_link_resolves(doc, target, where)
       path, anchor = target.split('#', 2)

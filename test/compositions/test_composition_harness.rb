@@ -209,6 +209,31 @@ module Syskit
       end
     RUBY
 
+    # A profile leaving its tag to the profiles that use it.
+    GENERIC = <<~RUBY
+      require 'models/compositions/follow'
+      module Rig
+        module Profiles
+          profile 'Generic' do
+            tag 'localization', Services::Pose
+            define 'follow', Compositions::Follow.use('pose' => localization_tag)
+          end
+        end
+      end
+    RUBY
+
+    GENERIC_TEST = <<~RUBY
+      require 'models/profiles/generic'
+      module Rig
+        module Profiles
+          describe Generic do
+            it { is_self_contained }
+            it { can_instanciate }
+          end
+        end
+      end
+    RUBY
+
     def harness_app
       rig_app({ 'models/compositions/follow.rb' => FOLLOW, 'models/profiles/base.rb' => PROFILE,
                 'test/compositions/test_follow.rb' => COMPOSITION_TEST, 'test/profiles/test_base.rb' => PROFILE_TEST })
@@ -247,6 +272,17 @@ module Syskit
       assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
       out, err, status = syskit_test(app, 'test/compositions/test_conf.rb', '--seed', '2')
       assert status.success?, "#{out}\n#{err}"
+    end
+
+    # As in Syskit: is_self_contained accepts the profile's own tags, the
+    # assertions that need a concrete network do not.
+    def test_is_self_contained_leaves_a_profile_s_own_tags_to_the_profiles_using_it
+      app = rig_app({ 'models/compositions/follow.rb' => FOLLOW, 'models/profiles/generic.rb' => GENERIC,
+                      'test/profiles/test_generic.rb' => GENERIC_TEST })
+      out, err, status = syskit_test(app, 'test/profiles/test_generic.rb')
+      refute status.success?
+      assert_match(/2 runs, \d+ assertions, 1 failures, 0 errors, 0 skips/, out, err)
+      assert_match(%r{test_generic.rb:6\]:\nmodels/profiles/generic.rb:6: .*localization_tag selects nothing}, out)
     end
 
     def test_profile_assertions_cover_definitions

@@ -78,7 +78,7 @@ module Syskit
           section = sections[name]
           next values if section.nil? && name == 'default'
 
-          raise unknown_section(name, location) unless section
+          raise unknown_section(name, location, with_default: names.include?('default')) unless section
 
           ConfFile.deep_merge(values, section.settings)
         end
@@ -288,14 +288,17 @@ module Syskit
         Location.new(path, offset ? header_line + 1 + offset : [header_line, 1].max)
       end
 
-      def unknown_section(name, location)
+      # +with_default+: whether 'default' is asked for too (else the hint
+      # reminds that with_conf replaces it).
+      def unknown_section(name, location, with_default: false)
         known = section_names
+        file = File.basename(path)
+        hint = "add '--- name:#{name}' to #{file}"
+        hint += "; with_conf replaces ['default'], so write with_conf('default', '#{name}') to apply both" unless
+          with_default
         ConfigurationError.new(
-          "no section '#{name}' in #{File.basename(path)}#{Naming.did_you_mean(name, known)} " \
-          "(sections: #{known.join(', ')})",
-          location: location,
-          hint: "add '--- name:#{name}' to #{File.basename(path)}; with_conf replaces ['default'], " \
-                "so write with_conf('default', '#{name}') to apply both"
+          "no section '#{name}' in #{file}#{Naming.did_you_mean(name, known)} (sections: #{known.join(', ')})",
+          location: location, hint: hint
         )
       end
     end

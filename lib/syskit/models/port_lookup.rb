@@ -23,6 +23,10 @@ module Syskit
         ports.key?(name.to_s)
       end
 
+      def each_port(&)
+        ports.each_value(&)
+      end
+
       # Its input (output) ports, in declaration order.
       def each_input_port(&)
         ports.each_value.select(&:input?).each(&)

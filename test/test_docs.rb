@@ -57,6 +57,17 @@ module Syskit
       assert_equal out, shown
     end
 
+    # Bench's definitions are alternatives: its plan is the devices'.
+    def test_the_compositions_guide_shows_why_the_whole_profile_is_the_devices_plan
+      command = 'bundle exec bin/syskit plan --app examples/arm_lab Bench 2>&1 >/dev/null'
+      shown = SelfTest::Docs.guide('compositions').output_of(command)
+      out, err, status = run_cli('plan', '--app', 'examples/arm_lab', 'Bench')
+      assert_equal 0, status, err
+      assert_match(/^Tasks \(3\)$/, out)
+      refute_match(/^Compositions/, out)
+      assert_equal shown, err
+    end
+
     # The errors the compositions guide shows are printed, as shown, by
     # the cases of the error corpus located at their first line.
     def test_the_compositions_guide_shows_errors_as_printed

@@ -20,9 +20,8 @@ module Syskit
       # robot's declaration of it.
       CanBus = Struct.new(:bus, :timing, :device)
 
-      # +apart+: when the definitions cannot all be planned with the
-      # devices but each can on its own, why not together (the errors);
-      # the plan is then the devices'.
+      # +apart+: see Network::ProfilePlan#apart (the plan is then the
+      # devices').
       attr_reader :profile, :catalog, :robot, :plan, :error, :apart
 
       # +dot+: the path of Graphviz's dot, nil when it is not installed.
@@ -128,40 +127,11 @@ module Syskit
       end
 
       def generate
-        @plan = Network::Generator.plan_profile(catalog.app, profile, robot: robot).plan
+        result = Network::ProfilePlan.new(catalog.app, profile, robot: robot)
+        @plan = result.plan
+        @apart = result.apart
       rescue Syskit::Error => e
         @error = e.is_a?(ErrorList) ? e.errors : [e]
-        plan_apart
-      end
-
-      # Definitions are what the robot can run, not all at once (two may
-      # command the same arm): when they cannot all be planned together,
-      # the page shows the devices' plan if each definition plans on its
-      # own, as syskit check plans them (one that only needs the profile's
-      # own tags is left to the profiles that use it).
-      def plan_apart
-        return if profile.definitions.empty?
-
-        devices = generate_plan(profile.device_requirements)
-        return unless profile.definition_requirements.all? { |d| plans_alone?(d) }
-
-        @apart = @error
-        @error = nil
-        @plan = devices
-      rescue Syskit::Error
-        nil
-      end
-
-      def plans_alone?(definition)
-        generate_plan([definition])
-        true
-      rescue Syskit::Error => e
-        UnselectedTag.only_tags_of?(e, profile)
-      end
-
-      def generate_plan(requirements)
-        app = catalog.app
-        Network::Generator.new(app, requirements, profile: profile, robot_config: app.robot_config(robot)).generate.plan
       end
 
       def timing_frames(bus)

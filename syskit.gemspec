@@ -19,7 +19,10 @@ Gem::Specification.new do |spec|
   spec.homepage = 'https://www.rock-robotics.org'
   spec.required_ruby_version = '>= 3.1'
 
-  spec.files = Dir['lib/**/*.rb', 'bundles/**/*', 'templates/**/*', 'bin/*', 'README.md', 'CHANGELOG.md', 'LICENSE']
+  # The guides (doc/**/*.md) are read at run time too: syskit doc makes a
+  # page of each, in the order the README lists them.
+  spec.files = Dir['lib/**/*.rb', 'bundles/**/*', 'templates/**/*', 'bin/*', 'doc/**/*.md', 'README.md',
+                   'CHANGELOG.md', 'LICENSE']
   spec.bindir = 'bin'
   spec.executables = ['syskit']
   spec.require_paths = ['lib']

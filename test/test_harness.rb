@@ -21,10 +21,12 @@ module Syskit
       end
     end
 
-    def test_rake_test_in_the_example_app
-      out, err, status = rake_process('test', chdir: File.join(GEM_ROOT, 'examples', 'awesome_robot'))
-      assert status.success?, "#{out}\n#{err}"
-      assert_match(/\d+ runs, \d+ assertions, 0 failures, 0 errors/, out)
+    def test_rake_test_in_the_example_apps
+      %w[awesome_robot arm_lab].each do |app|
+        out, err, status = rake_process('test', chdir: File.join(GEM_ROOT, 'examples', app))
+        assert status.success?, "#{app}:\n#{out}\n#{err}"
+        assert_match(/\d+ runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out, app)
+      end
     end
 
     BROKEN_PROFILE = {

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 
 module Syskit
   # `syskit test` running test files as Syskit writes them (SPEC 12):
@@ -31,6 +31,14 @@ module Syskit
       assert_match(/^1 runs, /, out)
       out, = syskit_test('test/orogen/test_can_hub.rb', '--exclude=/ArgumentError/', chdir: ROVER)
       assert_match(/^3 runs, /, out)
+    end
+
+    # The testing guide's command runs the test it selects, and passes.
+    def test_the_guides_example
+      args = SelfTest::Docs.guide('testing').text[%r{^\$ bundle exec bin/syskit test (.*)$}, 1].split
+      out, err, status = syskit_test(*args)
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/^1 runs, \d+ assertions, 0 failures, 0 errors, 0 skips$/, out)
     end
 
     def test_rake_test_in_an_app_runs_its_files_as_syskit_test_does

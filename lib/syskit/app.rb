@@ -8,6 +8,8 @@ require 'syskit/app/bundles'
 require 'syskit/app/settings_yaml'
 require 'syskit/app/settings'
 require 'syskit/app/everything'
+require 'syskit/app/conf_files'
+require 'syskit/app/init_file'
 require 'syskit/types/typekit_search'
 require 'syskit/config/robot_config_loader'
 
@@ -20,6 +22,7 @@ module Syskit
   class App
     include Files
     include Everything
+    include ConfFiles
 
     CONFIG_FILE = 'config/syskit.yml'
     BUNDLED_MODELS = File.join(BundleSearch::BUNDLED.root, 'models')
@@ -117,10 +120,14 @@ module Syskit
     # Syskit: the drivers a profile can use are the ones its files ask for.
     # With +everything: true+ (syskit check), every task library and typekit
     # of the app is loaded afterwards too, so that their problems are found.
-    def load(robots: ['default'], everything: false)
+    #
+    # With +models: false+, the files under models/ are loaded only when
+    # something requires them (a Rock app whose config/init.rb sets
+    # auto_load_models to false, see InitFile, runs its tests so).
+    def load(robots: ['default'], everything: false, models: true)
       activate
       load_bundled_models
-      load_model_files
+      load_model_files if models
       load_robot_configs(robots)
       collect_problems { resolve_devices }
       load_everything if everything
@@ -212,19 +219,6 @@ module Syskit
     # import_types_from (see Types::TypekitSearch#import).
     def import_types(name, location: Location.of_caller)
       @typekits.import(name, location: location)
-    end
-
-    # The configuration of +task_model+ (config/orogen/<lib>::<Task>.yml),
-    # nil when there is none. As in Rock, the files of the bundles and of
-    # the app are all read, the app's last: its sections replace the
-    # bundles' of the same name (or merge into them, with merge:true).
-    def conf_file(task_model)
-      @conf_files ||= {}
-      return @conf_files[task_model.name] if @conf_files.key?(task_model.name)
-
-      file = "#{task_model.name}.yml"
-      paths = bundle_roots.map { |r| File.join(r, 'config', 'orogen', file) }.select { |p| File.file?(p) }
-      @conf_files[task_model.name] = paths.reverse.reduce(nil) { |base, path| Config::ConfFile.new(path, base: base) }
     end
 
     # Whether +path+ is a file of the app or of one of its bundles.

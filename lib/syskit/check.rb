@@ -68,19 +68,23 @@ module Syskit
 
     # The devices together (they all run on the robot), then each
     # definition on its own (definitions are what the robot can run, not
-    # all at once).
+    # all at once). A definition that only misses what the profile's own
+    # tags stand for is checked in the profiles that use this one and
+    # select them, as Syskit's is_self_contained does.
     def generate(profile, robot)
       config = app.robot_config(robot)
       generate_requirements(profile, config, profile.device_requirements)
-      profile.definition_requirements.each { |definition| generate_requirements(profile, config, [definition]) }
+      profile.definition_requirements.each do |definition|
+        generate_requirements(profile, config, [definition], generic: true)
+      end
     end
 
-    def generate_requirements(profile, config, requirements)
+    def generate_requirements(profile, config, requirements, generic: false)
       Network::Generator.new(app, requirements, profile: profile, robot_config: config).generate
-    rescue ErrorList => e
-      @problems.concat(e.errors)
     rescue Syskit::Error => e
-      @problems << e
+      return if generic && UnselectedTag.only_tags_of?(e, profile)
+
+      e.is_a?(ErrorList) ? @problems.concat(e.errors) : @problems << e
     end
   end
 end

@@ -91,7 +91,10 @@ module Syskit
       Generates the network of PROFILE (all its devices and definitions, or
       the given actions, e.g. gps_dev or arm_control_def) on a robot and
       prints the plan: compositions, tasks, deployments, configuration,
-      ports, connections and the configure/start order.
+      ports, connections and the configure/start order. When a profile's
+      definitions cannot all run at once but each plans on its own, the plan
+      is its devices' and a warning says which definitions to plan one at a
+      time.
 
       PROFILE is the profile's name or its end (Live::Base), or the path form
       of gen profile (live/base); Base is Profiles::Base when there is one.
@@ -140,10 +143,16 @@ module Syskit
         Render.const_get(RENDERERS.fetch(format))
       end
 
-      # A profile planned whole puts all its definitions in one network,
-      # where they may not fit together: a failure says which to plan.
+      # A profile planned whole whose definitions cannot all run at once
+      # prints its devices' plan (see Network::ProfilePlan); when one of
+      # them does not plan on its own either, the error says which to plan.
       def plan_actions(app, profile, actions)
-        Network::Generator.plan_profile(app, profile, actions: actions, robot: options[:robot])
+        robot = options[:robot]
+        return Network::Generator.plan_profile(app, profile, actions: actions, robot: robot) unless actions.empty?
+
+        result = Network::ProfilePlan.new(app, profile, robot: robot)
+        warn Style.for($stderr).report(result.apart_warning, app.root) if result.apart?
+        result
       rescue Syskit::Error => e
         definitions = profile.definitions.keys
         raise e unless actions.empty? && definitions.size > 1

@@ -3,6 +3,7 @@
 require 'syskit/compat/ignored'
 require 'syskit/compat/delayed_argument'
 require 'syskit/compat/not_modelled_value'
+require 'syskit/compat/eigen'
 require 'syskit/compat/roby'
 require 'syskit/compat/core_extensions'
 require 'syskit/compat/task_statements'
@@ -124,8 +125,8 @@ module Syskit
     # A module of classes that take any call with a warning (see
     # NotModelledCalls), named as Rock code writes them; with +values:+,
     # classes of values made with constructor arguments (NotModelledValue).
-    def self.not_modelled_namespace(shown_name, class_names, values: false)
-      namespace = Module.new
+    def self.not_modelled_namespace(shown_name, class_names, values: false, into: Module.new)
+      namespace = into
       class_names.each do |name|
         klass = (values ? Class.new(NotModelledValue) : Class.new).extend(NotModelledCalls)
         full_name = "#{shown_name}::#{name}"
@@ -183,9 +184,9 @@ module Syskit
     %i[Simple Timeout Virtual Group Parallel Sequence ExternalProcess Thread].each do |name|
       not_modelled_class(Roby::Tasks, name, 'Roby task')
     end
-    # Rock's Ruby bindings of Eigen (Eigen::Vector3.new(1, 2, 3)).
-    Eigen = not_modelled_namespace('Eigen', %i[Vector3 Quaternion Isometry3 AngleAxis MatrixX VectorX Affine3],
-                                   values: true)
+    # Rock's Ruby bindings of Eigen: vectors and quaternions are modelled
+    # (see Compat::Eigen), the other classes make values that are not.
+    not_modelled_namespace('Eigen', %i[Isometry3 AngleAxis MatrixX VectorX Matrix4 Affine3], values: true, into: Eigen)
     Roby.const_set(:Schedulers, Module.new)
     not_modelled_class(Roby::Schedulers, :Temporal, 'Roby scheduler')
     Roby.const_set(:Actions, Module.new)

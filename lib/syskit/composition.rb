@@ -92,15 +92,18 @@ module Syskit
     # The task and port name that +port+ (a port of one of the model's
     # children) is in the network: the child task's port it maps to,
     # followed through the exports of a child composition. Nil when the
-    # child was left out.
+    # child was left out (or the export's own child was). A port the
+    # selected component does not map keeps its name, so that the
+    # connection reports the missing port rather than vanish.
     def resolve_child_port(port)
       task = @children[port.child_name]
       return unless task
 
       name = Composition.port_name_in(@child_selections[port.child_name], task.model, port.owner, port.owner_port)
-      return unless name
+      name ||= port.owner_port
+      return task.resolve_export(name) if task.is_a?(Composition) && task.model.exports.key?(name)
 
-      task.is_a?(Composition) ? task.resolve_export(name) : [task, name]
+      [task, name]
     end
 
     # The name of the port of +model+ (the component selected with

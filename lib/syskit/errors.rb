@@ -130,6 +130,25 @@ module Syskit
   # A generator that refuses to run.
   class GeneratorError < Error; end
 
+  # A tag of +profile+ that nothing selects: an error where the tag is
+  # used, but not for the profile declaring it, which leaves it to the
+  # profiles using it (Syskit's generic profiles).
+  class UnselectedTag < NetworkError
+    attr_reader :profile
+
+    def initialize(message, profile:, **options)
+      super(message, **options)
+      @profile = profile
+    end
+
+    # Whether +error+ (one error or several) is only tags of +profile+
+    # nothing selects.
+    def self.only_tags_of?(error, profile)
+      errors = error.respond_to?(:errors) ? error.errors : [error]
+      errors.all? { |e| e.is_a?(UnselectedTag) && e.profile.equal?(profile) }
+    end
+  end
+
   # Several errors found in one pass (loading an app, one generation step).
   class ErrorList < Error
     attr_reader :errors

@@ -16,13 +16,14 @@ module Syskit
     NO_ARGUMENTS = {}.freeze
     NO_HINTS = [].freeze
     DEFAULT_CONF = ['default'].freeze
-    FIELDS = %i[models device service profile name arguments conf deployment_hints deployment
+    FIELDS = %i[models device service profile name arguments conf conf_location deployment_hints deployment
                 selections specialization_hints declared_at instance].freeze
 
     # +instance+: a task of the network being generated, when these
-    # requirements select it (a composition's child given to another).
+    # requirements select it (a composition's child given to another);
+    # +conf_location+: where the sections were chosen (with_conf).
     attr_reader :device, :service, :profile, :name, :arguments, :deployment, :selections,
-                :specialization_hints, :declared_at, :instance
+                :specialization_hints, :declared_at, :instance, :conf_location
 
     # What stands for requirements besides models and lists of them (see
     # .from): requirements, a model's service, a device, a tag, a
@@ -62,8 +63,9 @@ module Syskit
     end
 
     def initialize(models = nil, device: nil, service: nil, profile: nil, name: nil, arguments: NO_ARGUMENTS,
-                   conf: nil, deployment_hints: nil, deployment: nil, selections: DependencyInjection::EMPTY,
-                   specialization_hints: NO_HINTS, declared_at: nil, instance: nil, open: false)
+                   conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil,
+                   selections: DependencyInjection::EMPTY, specialization_hints: NO_HINTS, declared_at: nil,
+                   instance: nil, open: false)
       @models = models&.freeze
       @device = device
       @service = service
@@ -71,6 +73,7 @@ module Syskit
       @name = name
       @arguments = arguments.frozen? ? arguments : arguments.dup.freeze
       @conf = conf&.freeze
+      @conf_location = conf_location
       @deployment_hints = deployment_hints&.freeze
       @deployment = deployment
       @selections = selections
@@ -154,15 +157,16 @@ module Syskit
     end
     alias fulfills? fullfills?
 
-    # Configuration sections, replacing ['default'] as in Syskit.
-    def with_conf(*names)
+    # Configuration sections, replacing ['default'] as in Syskit;
+    # +location+: where they are chosen, for errors about them.
+    def with_conf(*names, location: Location.of_caller)
       names = names.flatten.map(&:to_s)
       if names.empty?
         raise DeclarationError.new('with_conf needs at least one section name',
-                                   location: Location.of_caller, hint: "write with_conf('default', 'forward')")
+                                   location: location, hint: "write with_conf('default', 'forward')")
       end
 
-      copy(conf: names)
+      copy(conf: names, conf_location: location)
     end
 
     # Task arguments (see ComponentModel#argument).
@@ -191,10 +195,15 @@ module Syskit
       declare_deployment(name, true, Location.of_caller)
     end
 
-    # Dependency injection (see DependencyInjection).
+    # Dependency injection (see DependencyInjection). The children it
+    # names must be children of the composition.
     def use(*mappings)
       location = Location.of_caller
-      copy(selections: selections.add(mappings, location), declared_at: declared_at || location)
+      injection = selections.add(mappings, location)
+      if composition?
+        component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
+      end
+      copy(selections: injection, declared_at: declared_at || location)
     end
 
     # Which specializations to prefer when several apply.
@@ -248,7 +257,9 @@ module Syskit
         other.raw_models,
         device: other.device, service: other.service, profile: other.profile, name: other.name,
         arguments: other.arguments.empty? ? arguments : other.arguments,
-        conf: other.conf_given? ? other.conf : @conf, deployment_hints: other.raw_hints || @deployment_hints,
+        conf: other.conf_given? ? other.conf : @conf,
+        conf_location: other.conf_given? ? other.conf_location : conf_location,
+        deployment_hints: other.raw_hints || @deployment_hints,
         deployment: other.deployment || deployment, selections: merged_selections(other),
         specialization_hints: specialization_hints + other.specialization_hints,
         declared_at: other.declared_at || declared_at, instance: other.instance
@@ -282,12 +293,9 @@ module Syskit
     end
 
     def declare_deployment(name, unmanaged, location)
-      unless name.respond_to?(:to_str) && name.to_str.match?(/\A[\w.-]+\z/)
-        raise DeclarationError.new("invalid deployed task name #{name.inspect} for #{self}",
-                                   location: location, hint: "write deployed_as('name_of_the_task')")
-      end
-
-      copy(deployment: Robot::MasterDevice::DeclaredDeployment.new(name.to_str, unmanaged, location))
+      copy(deployment: Robot::MasterDevice::DeclaredDeployment.declare(
+        name, unmanaged, location, owner: self, hint: "write deployed_as('name_of_the_task')"
+      ))
     end
 
     def copy(**changes)

@@ -54,7 +54,8 @@ module Syskit
         @tags ||= {}
       end
 
-      # The profiles used with use_profile, with their tag selections.
+      # The profiles used with use_profile, with their tag selections and
+      # where each was used.
       def used_profiles
         @used_profiles ||= []
       end
@@ -148,7 +149,7 @@ module Syskit
         end
 
         tag_selections = resolve_tag_selection(profile, tags, location)
-        used_profiles << [profile, tag_selections]
+        used_profiles << [profile, tag_selections, location]
         robot.use_robot(profile.robot)
         profile.definitions.each_value do |definition|
           requirements = definition.requirements
@@ -168,6 +169,15 @@ module Syskit
           all_used_profiles.each { |p| context = context.with(p.selections) }
           context.with(selections)
         end
+      end
+
+      # Where this profile uses +other+: its use_profile statement of
+      # +other+, or of the profile through which it uses +other+.
+      def use_profile_location(other)
+        used_profiles.each do |(profile, _tags, location)|
+          return location if profile.equal?(other) || profile.all_used_profiles.include?(other)
+        end
+        nil
       end
 
       # Every profile used, directly or not, each once.

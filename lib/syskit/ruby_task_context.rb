@@ -28,16 +28,11 @@ module Syskit
       end
     end
 
-    class << self
+    # The class statements of task models declared in Ruby: ports and
+    # properties in the class body, a name given to new_submodel.
+    module Declarations
       # Where the model was declared.
       attr_reader :declared_at
-
-      def inherited(submodel)
-        super
-        submodel.instance_variable_set(:@declared_at, Location.of_caller)
-        submodel.send(:setup_model, Spec.new(submodel, spec))
-        Models.register_model(submodel)
-      end
 
       # A model made in Ruby: +Generator.new_submodel { output_port ... }+.
       def new_submodel(name: nil, &block)
@@ -69,7 +64,22 @@ module Syskit
         Orogen::PropertyModifiers.new(property)
       end
 
+      # Sets up +submodel+, a subclass of a model declared in Ruby or of
+      # an oroGen task model, as a model declared in Ruby.
+      def declared_in_ruby(submodel, location)
+        submodel.extend(Declarations)
+        submodel.instance_variable_set(:@declared_at, location)
+        submodel.send(:setup_model, Spec.new(submodel, submodel.superclass.spec))
+        Models.register_model(submodel)
+        submodel
+      end
+
       private
+
+      def inherited(submodel)
+        super
+        declared_in_ruby(submodel, Location.of_caller)
+      end
 
       def add_port(name, direction, type)
         name = check_name(name, "#{direction}_port")
@@ -89,6 +99,8 @@ module Syskit
                                    location: Location.of_caller, hint: 'give it another name')
       end
     end
+
+    extend Declarations
 
     setup_model(Spec.new(self, nil))
   end

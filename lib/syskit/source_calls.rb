@@ -52,6 +52,35 @@ module Syskit
       node.each { |child| walk(child, names, found) }
     end
 
+    # The values given to the attribute +name+ in +source+
+    # (+Roby.app.auto_load_models = false+), in source order: true, false,
+    # or nil for a value that is not one of these literals.
+    def assignments(source, name)
+      name = name.to_s
+      return [] unless source.include?(name)
+
+      require 'ripper'
+      found = []
+      walk_assignments(Ripper.sexp(source), name, found)
+      found
+    end
+
+    def walk_assignments(node, name, found)
+      return unless node.is_a?(Array)
+
+      if assignment_of?(node, name)
+        value = node[2]
+        found << (value[1][1] == 'true' if value[0] == :var_ref && value[1][0] == :@kw)
+      end
+      node.each { |child| walk_assignments(child, name, found) }
+    end
+
+    # [:assign, [:field, receiver, '.', [:@ident, name, position]], value]
+    def assignment_of?(node, name)
+      target = node[0] == :assign && node[1]
+      target.is_a?(Array) && target[0] == :field && target[3].is_a?(Array) && target[3][0..1] == [:@ident, name]
+    end
+
     # The text of a plain string literal ('x', "x", %q(x)): no
     # interpolation, no escape.
     def literal(node)

@@ -13,6 +13,19 @@ module Syskit
   class TaskContext < Component
     extend Models::TaskModel
 
+    # A task model made in Ruby, as Syskit's tests make them:
+    # +Syskit::TaskContext.new_submodel { input_port 'in', '/double' }+ is
+    # a RubyTaskContext; +OroGen.lib.Task.new_submodel { ... }+ a submodel
+    # of that task model, with the ports and properties its block adds.
+    def self.new_submodel(name: nil, &block)
+      return RubyTaskContext.new_submodel(name: name, &block) if equal?(TaskContext)
+
+      model = RubyTaskContext.declared_in_ruby(Class.new(self), Location.of_caller)
+      model.instance_variable_set(:@given_name, name) if name
+      model.class_eval(&block) if block
+      model
+    end
+
     # Most tasks never create a port: they share this until they do.
     NO_PORTS = {}.freeze
     NO_CALLS = [].freeze

@@ -86,7 +86,8 @@ module Syskit
         end
 
         app = App.new(root)
-        app.load(robots: [robot], everything: true)
+        auto_load = App::InitFile.auto_load_models?(root)
+        app.load(robots: [robot], everything: auto_load, models: auto_load)
         report_load_problems(app) unless app.errors.empty?
         app
       end

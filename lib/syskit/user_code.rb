@@ -7,7 +7,7 @@ module Syskit
   #
   # Objects that users call methods on (namespaces, DSL contexts, devices,
   # properties) explain a missing method through +explain_missing(name)+,
-  # which returns +[message, hint]+.
+  # which returns +[message, hint]+ (or nil, to leave it to Ruby's message).
   module UserCode
     # instance_eval of a string, made at the top level: the file's constants
     # resolve as in a file Ruby loads (+Robot+ is ::Robot), not from the
@@ -141,7 +141,9 @@ module Syskit
     # Ruby's message with spelling suggestions.
     def explain(exception)
       receiver = receiver_of(exception)
-      return receiver.explain_missing(exception.name.to_s) if exception.name && receiver.respond_to?(:explain_missing)
+      name = exception.name
+      explained = receiver.explain_missing(name.to_s) if name && receiver.respond_to?(:explain_missing)
+      return explained if explained
       return not_a_task_model(receiver) if made_by_a_class_statement?(receiver)
 
       message = original_message(exception).sub(/ for #<[^>]*>\z/, '')

@@ -1,19 +1,17 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 require 'json'
 
 module Syskit
-  # What doc/bus-traffic.md (the README's bus traffic section) shows is what
-  # the commands print.
+  # What the bus traffic guide shows is what the commands print.
   class TestBusDoc < Minitest::Test
-    DOC = File.read(File.join(GEM_ROOT, 'README.md'))[/^## Bus traffic.*?(?=^## )/m]
+    DOC = SelfTest::Docs.guide('bus-tools')
     COMMAND = 'bundle exec bin/syskit '
 
     # The output shown under "$ COMMAND", and the command's arguments.
     def example(command)
-      text = DOC[/^\$ #{Regexp.escape(COMMAND + command)}\n(.*?)^```/m, 1] || flunk("no example of #{command}")
-      [command.split, text]
+      [command.split, DOC.output_of(COMMAND + command)]
     end
 
     def test_the_replay_example
@@ -33,7 +31,7 @@ module Syskit
     end
 
     def test_the_json_example
-      shown = JSON.parse(DOC[/^```json\n(.*?)^```/m, 1])
+      shown = JSON.parse(DOC.code_block('json'))
       out, = run_cli('bus', 'replay', 'Live::Base', '--bus', 'can0', 'examples/awesome_robot/logs/can0.log',
                      '--app', 'examples/awesome_robot', '--format', 'json')
       n2k = JSON.parse(out)['devices'].find { |d| d['name'] == 'n2k' }

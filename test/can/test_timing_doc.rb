@@ -1,15 +1,15 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 
 module Syskit
-  # What the README's CAN bus timing section shows is what the commands print.
+  # What the CAN bus timing guide shows is what the commands print.
   class TestTimingDoc < Minitest::Test
-    DOC = File.read(File.join(GEM_ROOT, 'README.md'))[/^## CAN bus timing.*?(?=^## )/m]
+    DOC = SelfTest::Docs.guide('can-timing')
     COMMAND = 'bundle exec bin/syskit '
 
     def examples
-      DOC.scan(/^\$ #{Regexp.escape(COMMAND)}([^\n]*)\n(.*?)^```/m)
+      DOC.commands(COMMAND)
     end
 
     def test_every_example_is_what_the_command_prints
@@ -23,8 +23,8 @@ module Syskit
 
     def test_the_declarations_shown_are_the_example_apps
       profile = File.read(File.join(GEM_ROOT, 'examples/awesome_robot/models/profiles/live/base.rb'))
-      DOC[/^```ruby\n(.*?)^```/m, 1].lines.grep(/\.frame|\.bitrate/).each do |line|
-        assert_includes profile, line.sub(/ +#.*/, '').strip, 'the README shows the example app'
+      DOC.code_block('ruby').lines.grep(/\.frame|\.bitrate/).each do |line|
+        assert_includes profile, line.sub(/ +#.*/, '').strip, 'the guide shows the example app'
       end
     end
   end

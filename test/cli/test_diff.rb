@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 require 'json'
 
 module Syskit
@@ -108,9 +108,10 @@ module Syskit
       assert_equal 1, run_cli('diff', 'old.json', 'new.json', '--exit-code', chdir: @app).last
     end
 
-    # The README's example, on a copy of the example app.
-    def test_the_readme_example
-      shown = File.read(File.join(GEM_ROOT, 'README.md'))[/^\$ syskit plan Live::Base --diff plan.json\n(.*?)^```/m, 1]
+    # The plan guide's example, on a copy of the example app.
+    def test_the_example_of_the_plan_guide
+      shown = SelfTest::Docs.guide('plan').section('Reviewing a change: plan diffs')
+                            .output_of('syskit plan Live::Base --diff plan.json')
       app = File.join(Dir.mktmpdir('syskit-diff'), 'awesome_robot')
       (@tmpdirs ||= []) << File.dirname(app)
       FileUtils.cp_r(File.join(GEM_ROOT, 'examples', 'awesome_robot'), app)
@@ -146,6 +147,9 @@ module Syskit
                            "~ drive\n      arguments.max_speed: 0.5 -> 0.8\n"
     end
 
+    # What follows is the JSON parser's own words, which its versions change.
+    NOT_JSON = /\Abroken\.json: this is not a JSON plan: (unexpected|expected).*\n  hint: a plan file is/
+
     def test_files_that_are_not_plans
       File.write(File.join(@app, 'empty.json'), '')
       File.write(File.join(@app, 'broken.json'), '{"tasks": [')
@@ -153,8 +157,7 @@ module Syskit
       hint = "\n  hint: a plan file is what syskit plan PROFILE --format json > plan.json writes\n"
       { %w[diff nothing.json old.json] => "no plan file 'nothing.json'#{hint}",
         %w[diff old.json empty.json] => "empty.json: this plan file is empty#{hint}",
-        # The JSON library's own words, which differ between its versions.
-        %w[plan --diff broken.json] => /\Abroken\.json: this is not a JSON plan: unexpected (token|end of input)/,
+        %w[plan --diff broken.json] => NOT_JSON,
         %w[diff other.json old.json] => 'other.json: this is JSON but not a plan (it has no profile, robot and ' \
                                         "tasks)#{hint}",
         %w[plan --diff old.json --format dot] => "--diff prints the difference as text or json, not dot\n  " \

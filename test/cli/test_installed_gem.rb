@@ -41,6 +41,7 @@ module Syskit
       assert_app_tests_pass(app)
       out, = run!(syskit, 'check', chdir: app)
       assert_equal "Bot: 0 error(s), 0 warning(s)\n", out
+      assert_site_has_the_guides(syskit, app)
     end
 
     # Made from a checkout, an app names it in its Gemfile: its tests run
@@ -54,6 +55,16 @@ module Syskit
     end
 
     private
+
+    # The installed gem ships its guides: the site has a page of each,
+    # listed in the README's order.
+    def assert_site_has_the_guides(syskit, app)
+      run!(syskit, 'doc', chdir: app)
+      guides = Dir.glob('*.md', base: File.join(GEM_ROOT, 'doc', 'guides')).map { |f| f.sub(/\.md\z/, '.html') }
+      assert_equal guides.sort, Dir.children(File.join(app, 'doc', 'site', 'guides')).sort
+      index = File.read(File.join(app, 'doc', 'site', 'index.html'))
+      assert_match %r{<section class="kind" id="guides">\n<h2>Guides .*href="guides/devices-and-buses\.html"}m, index
+    end
 
     # Builds the gem from this tree and installs it in a GEM_HOME of its
     # own (its dependencies come from the gems already installed); returns

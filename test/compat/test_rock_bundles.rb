@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 require 'json'
 
 module Syskit
@@ -9,12 +9,22 @@ module Syskit
   # classes, configures a bus through an operation, and has the robot
   # configurations, compositions and actions real bundles have.
   class TestRockBundles < Minitest::Test
+    include SelfTest::Docs::Assertions
+
     ROVER = File.join(FIXTURES, 'rock', 'rover')
 
     def plan_json(*args)
       out, err, status = run_cli('plan', '--app', ROVER, '--format', 'json', *args)
       assert_equal 0, status, err
       JSON.parse(out)
+    end
+
+    # The rock bundles guide's example is an excerpt of what check prints.
+    def test_the_guides_example
+      shown = SelfTest::Docs.guide('rock-bundles').output_of('syskit check --app test/fixtures/rock/rover')
+      out, err, status = run_cli('check', '--app', ROVER)
+      assert_equal 0, status, err
+      assert_equal 2, assert_shown_excerpt(shown, out, 'the rock bundles guide')
     end
 
     def test_check_accepts_the_bundle_and_warns_once_per_construct_it_does_not_model

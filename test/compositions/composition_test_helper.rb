@@ -143,6 +143,23 @@ module Syskit
 
     # The app with +files+ added (a profile in models/profiles/base.rb is
     # wrapped in the Rig::Profiles module, after the requires).
+    # A composition following what its abstract pose child gives, its
+    # command exported as 'speed'.
+    WATCH = <<~RUBY
+      require 'models/devices/rover'
+      using_task_library 'rig'
+      module Rig
+        module Compositions
+          class Watch < Syskit::Composition
+            add Services::Pose, as: 'pose'
+            add OroGen.rig.Follower, as: 'follower'
+            pose_child.pose_port.connect_to follower_child.pose_port
+            export follower_child.command_port, as: 'speed'
+          end
+        end
+      end
+    RUBY
+
     def rig_app(files = {}, profile: nil, requires: [])
       files = FILES.merge(files)
       if profile

@@ -196,5 +196,26 @@ module Syskit
       assert_equal({ 'type' => 'buffer', 'size' => 20 }, policies['left'])
       assert_equal({ 'type' => 'buffer', 'size' => 50 }, policies['right'])
     end
+
+    # A misspelled child or port reader says what the composition has.
+    def test_a_misspelled_port_is_explained
+      assert_typo_explained 'follower_child.comand_port',
+                            "Rig::Compositions::Follow.follower_child has no port 'comand' (did you mean 'command'?)",
+                            'its ports: command, pose'
+    end
+
+    def test_a_misspelled_child_is_explained
+      assert_typo_explained 'folower_child.command_port',
+                            "Rig::Compositions::Follow has no child 'folower' (did you mean 'follower'?)",
+                            'its children: pose, follower, split, left, right'
+    end
+
+    def assert_typo_explained(typo, message, hint)
+      follow = FOLLOW.sub("export follower_child.command_port, as: 'speed'", "export #{typo}, as: 'speed'")
+      root = rig_app({ 'models/compositions/follow.rb' => follow }, requires: ['models/compositions/follow'])
+      error = load_problem(root)
+      assert_reported error, /\A#{Regexp.escape(message)}\z/, at: 'models/compositions/follow.rb:16', root: root
+      assert_equal hint, error.hint
+    end
   end
 end

@@ -9,21 +9,6 @@ module Syskit
   class TestCompositionCLI < Minitest::Test
     include CompositionTestHelper
 
-    WATCH = <<~RUBY
-      require 'models/devices/rover'
-      using_task_library 'rig'
-      module Rig
-        module Compositions
-          class Watch < Syskit::Composition
-            add Services::Pose, as: 'pose'
-            add OroGen.rig.Follower, as: 'follower'
-            pose_child.pose_port.connect_to follower_child.pose_port
-            export follower_child.command_port, as: 'speed'
-          end
-        end
-      end
-    RUBY
-
     PROFILE = <<~RUBY
       profile 'Base' do
         robot do
@@ -61,6 +46,57 @@ module Syskit
                    err)
       assert_match(/warning: the 3 definitions of Rig::Profiles::Base were planned together, with its devices/, err)
       assert_match(/plan one at a time: syskit plan Rig::Profiles::Base watch_def/, err)
+    end
+
+    # Two definitions that need the one follower differently are
+    # alternatives: the whole profile prints its devices' plan.
+    def test_plan_of_a_profile_whose_definitions_are_alternatives_is_the_devices_plan
+      profile = <<~RUBY
+        profile 'Base' do
+          robot do
+            device Devices::GPS, as: 'gps'
+          end
+          define 'watch', Compositions::Watch.use('pose' => gps_dev)
+          define 'watch_slowly', watch_def.use('follower' => OroGen.rig.Follower.with_conf('slow'))
+        end
+      RUBY
+      app = rig_app({ 'models/compositions/watch.rb' => WATCH,
+                      'config/orogen/rig::Follower.yml' => "--- name:default\n--- name:slow\n" },
+                    profile: profile, requires: ['models/compositions/watch'])
+      out, err, status = run_cli('plan', '--app', app, 'Base', '--format', 'json')
+      assert_equal 0, status, err
+      doc = JSON.parse(out)
+      assert_equal(%w[gps], doc['tasks'].map { |t| t['name'] })
+      assert_empty doc['compositions']
+      assert_match(%r{^models/profiles/base.rb:\d+: warning: the 2 definitions of Rig::Profiles::Base }, err)
+      assert_match(/cannot all run at once: /, err)
+      assert_match(/1 problem when planned together \(the first: .*follower/, err)
+      assert_match(/hint: plan one definition at a time: syskit plan Rig::Profiles::Base watch_def /, err)
+      assert_match(/\(its definitions: watch_def, watch_slowly_def\)/, err)
+
+      out, err, status = run_cli('plan', '--app', app, 'Base', 'watch_slowly_def')
+      assert_equal 0, status, err
+      assert_match(/follower  rig::Follower  \(deployment follower, conf slow\)/, out)
+    end
+
+    def test_plan_of_a_generic_profile_is_the_devices_plan
+      profile = <<~RUBY
+        profile 'Base' do
+          tag 'pose', Services::Pose
+          robot do
+            device Devices::GPS, as: 'gps'
+          end
+          define 'watch', Compositions::Watch.use('pose' => pose_tag)
+        end
+      RUBY
+      app = rig_app({ 'models/compositions/watch.rb' => WATCH }, profile: profile,
+                                                                 requires: ['models/compositions/watch'])
+      out, err, status = run_cli('plan', '--app', app, 'Base')
+      assert_equal 0, status, err
+      assert_match(/^Tasks \(1\)\n  gps  /, out)
+      assert_match(/warning: Rig::Profiles::Base leaves what its tags stand for to the profiles using it \(the first: /,
+                   err)
+      assert_match(/hint: plan a profile that selects them, or one definition: /, err)
     end
 
     def test_check_generates_each_definition_on_its_own

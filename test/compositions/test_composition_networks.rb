@@ -163,5 +163,28 @@ module Syskit
       assert_match(/^  cascade  Rig::Compositions::Cascade  \(Rig::Profiles::Base.cascade_def, conf default\)$/, text)
       assert_match(/^    cascade.follow  Rig::Compositions::Follow  \(conf default\)$/, text)
     end
+
+    # Sections a child cannot have are reported where they were chosen:
+    # the composition's conf statement, the child's with_conf.
+    def test_missing_sections_of_children_are_reported_where_they_are_chosen
+      follow = FOLLOW.sub("export follower_child.command_port, as: 'speed'",
+                          "export follower_child.command_port, as: 'speed'\n" \
+                          "conf 'slow', follower_child => %w[default slow]\n" \
+                          "split_child.with_conf('fast')")
+      files = { 'models/compositions/follow.rb' => follow,
+                'config/orogen/rig::Follower.yml' => "--- name:default\ngain: 1.0\n" }
+      app = follow_app(<<~RUBY, files)
+        profile 'Base' do
+        #{ROBOT.lines.map { |l| "  #{l}" }.join}
+          define 'slow', Compositions::Follow.use('pose' => gps_dev, #{WHEELS}).with_conf('slow')
+        end
+      RUBY
+      errors = assert_raises(ErrorList) { plan_of(app, 'slow_def') }.errors
+      assert_reported errors[0], /no section 'slow' in rig::Follower.yml/, at: 'models/compositions/follow.rb:17',
+                                                                           root: app.root
+      assert_equal "add '--- name:slow' to rig::Follower.yml", errors[0].hint # default is asked for too
+      assert_reported errors[1], /rig::Splitter 'splitter' asks for sections fast but rig::Splitter has no conf/,
+                      at: 'models/compositions/follow.rb:18', root: app.root
+    end
   end
 end

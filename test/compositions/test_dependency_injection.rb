@@ -73,6 +73,20 @@ module Syskit
       assert_match(/use cannot select for 42: keys are child names or models/, error.message)
     end
 
+    # As in Syskit, +use+ checks that its names are children (the first
+    # part of a dotted name; a child a specialization adds counts).
+    def test_use_names_children_of_the_composition
+      error = assert_raises(DeclarationError) { @watch.use('pos' => OroGen.rig.Tracker) }
+      assert_equal "pos is not a child of Watch (did you mean 'pose'?)", error.message
+      assert_equal 'its children: pose, follower', error.hint
+      assert_equal File.expand_path(__FILE__), error.location.path
+      error = assert_raises(DeclarationError) { @watch.use('folower.pose' => OroGen.rig.Tracker) }
+      assert_match(/\Afolower is not a child of Watch \(did you mean 'follower'\?\) \(in use\('folower.pose'/,
+                   error.message)
+      @watch.specialize(@watch.pose_child => Rig::Services::Odometry) { add OroGen.rig.Logger, as: 'log' }
+      assert @watch.use('log' => OroGen.rig.Logger, 'pose.x' => OroGen.rig.Tracker)
+    end
+
     def test_chains_of_selections_are_followed
       with_gain = OroGen.rig.Follower.with_arguments(gain: 3.0)
       ctx = context({ Rig::Services::Pose => OroGen.rig.Tracker.front_pose_srv, OroGen.rig.Follower => with_gain })

@@ -8,20 +8,6 @@ module Syskit
   class TestProfileDefinitions < Minitest::Test
     include CompositionTestHelper
 
-    WATCH = <<~RUBY
-      require 'models/devices/rover'
-      using_task_library 'rig'
-      module Rig
-        module Compositions
-          class Watch < Syskit::Composition
-            add Services::Pose, as: 'pose'
-            add OroGen.rig.Follower, as: 'follower'
-            pose_child.pose_port.connect_to follower_child.pose_port
-          end
-        end
-      end
-    RUBY
-
     def watch_app(profile)
       load_rig({ 'models/compositions/watch.rb' => WATCH }, profile: profile, requires: ['models/compositions/watch'])
     end
@@ -111,7 +97,27 @@ module Syskit
         Network::Generator.plan_profile(app, Rig::Profiles::Unselected.syskit_profile, actions: ['watch_def'])
       end
       assert_match(/Rig::Profiles::Generic.localization_tag selects nothing/, error.message)
-      assert_match(/use_profile Profile, 'localization' => Model/, error.hint)
+      assert_match(/use_profile Rig::Profiles::Generic, 'localization' => Model/, error.hint)
+      assert_equal 'models/profiles/base.rb:20', error.location.to_s(app.root) # use_profile Generic
+    end
+
+    # As in Syskit, a profile may leave its own tags to the profiles using
+    # it: `syskit check` checks its definitions there, not in it.
+    def test_check_leaves_a_profile_s_own_tags_to_the_profiles_using_it
+      root = rig_app({ 'models/compositions/watch.rb' => WATCH }, requires: ['models/compositions/watch'],
+                                                                  profile: <<~RUBY)
+                                                                    profile 'Generic' do
+                                                                      tag 'localization', Services::Pose
+                                                                      define 'watch', Compositions::Watch.use('pose' => localization_tag)
+                                                                    end
+                                                                    profile 'Base' do
+                                                                      use_profile Generic
+                                                                    end
+                                                                  RUBY
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal 1, status
+      assert_equal 1, out.lines.grep(/^\S+:\d+: /).size, out
+      assert_match(%r{^models/profiles/base.rb:11: .*Rig::Profiles::Generic.localization_tag selects nothing}, out)
     end
 
     def test_use_profile_brings_devices_and_definitions

@@ -52,6 +52,20 @@ module Syskit
       assert_equal ['speed_setpoint.out -> left_wheel.cmd'], connection_lines(plan)
     end
 
+    def test_a_ruby_task_without_deployment_is_told_to_use_ruby_tasks
+      app = load_rig({ 'models/compositions/cruise.rb' => GENERATOR },
+                     profile: <<~RUBY, requires: ['models/compositions/cruise'])
+                       profile 'Base' do
+                       #{ROBOT.lines.map { |l| "  #{l}" }.join}
+                         define 'cruise', Compositions::Cruise.use('wheel' => left_wheel_dev)
+                       end
+                     RUBY
+      error = plan_error(app, 'cruise_def')
+      assert_match(/no deployed task can run Rig::Compositions::SpeedGenerator, needed by cruise.speed/, error.message)
+      assert_equal 'add to config/robots/default.rb: ' \
+                   "Syskit.conf.use_ruby_tasks Rig::Compositions::SpeedGenerator => 'cruise_speed'", error.hint
+    end
+
     def test_new_submodel_of_a_ruby_task
       load_rig
       model = RubyTaskContext.new_submodel(name: 'Generator') { output_port 'out', '/double' }

@@ -65,6 +65,7 @@ module Syskit
       narrowed = @model.narrow('pose' => source, 'speed' => splitter)
       assert_equal [odometry, speed], narrowed.applied_specializations
       assert_equal %w[left odometry], narrowed.ports.keys.sort
+      assert_equal %w[left odometry], narrowed.each_port.map(&:name).sort
     end
 
     def test_a_constraint_makes_two_specializations_ambiguous

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 require 'rexml/document'
 
 module Syskit
@@ -9,6 +9,8 @@ module Syskit
     # command users type, and ways to read its pages.
     module SiteHelper
       EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
+      # syskit's guides, each a page of every site.
+      GUIDES = Dir.glob('*.md', base: File.join(GEM_ROOT, 'doc', 'guides')).map { |f| File.basename(f, '.md') }.sort
 
       # [directory, what syskit doc printed] of the example app's site.
       def self.example_site

@@ -23,7 +23,8 @@ module Syskit
       root = my_app("device MyApp::Devices::IMU, as: 'imu'")
       out, err, status = run_cli('doc', '--app', root)
       assert_equal [0, ''], [status, err]
-      assert_equal "wrote 12 pages to #{root}/doc/site\nopen #{root}/doc/site/index.html\n", out
+      pages = 12 + GUIDES.size # the index, the app's 11 entries and the guides
+      assert_equal "wrote #{pages} pages to #{root}/doc/site\nopen #{root}/doc/site/index.html\n", out
       assert File.file?(File.join(root, 'doc', 'site', 'profiles', 'MyApp.Profiles.Base.html'))
     end
 
@@ -82,6 +83,23 @@ module Syskit
       assert_match(%r{\Amodels/profiles/base\.rb:10 no deployed task}, error)
       assert_match(/hint: /, error)
       assert_empty REXML::XPath.match(doc, "//section[@id='tasks']")
+    end
+
+    # Definitions are alternatives (examples/arm_lab has two for the same
+    # arm, and a generic profile leaving a tag to another): when each
+    # plans on its own, the page shows the devices' plan and says why.
+    def test_definitions_that_cannot_run_together_are_planned_apart
+      output = output_dir
+      _, err, status = run_cli('doc', '--app', File.join(GEM_ROOT, 'examples', 'arm_lab'), '--output', output)
+      assert_equal [0, ''], [status, err]
+      doc = page('profiles/ArmLab.Profiles.Bench.html', output)
+      assert_empty REXML::XPath.match(doc, "//div[@class='error']")
+      assert_match(/\AThis is the plan of its devices: its definitions cannot all be planned with them \(.*/,
+                   texts(doc, "//section[@id='plan']/p[@class='notice']").first)
+      assert_equal %w[left_arm right_arm wand], texts(doc, "//section[@id='tasks']/table[1]/tbody/tr/td[1]")
+      lab = page('profiles/ArmLab.Profiles.Lab.html', output)
+      assert_match(/those using its tags in the profiles that select them\.\z/,
+                   texts(lab, "//section[@id='plan']/p[@class='notice']").first)
     end
 
     def test_without_graphviz_the_profile_page_says_how_to_get_it

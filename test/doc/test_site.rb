@@ -14,15 +14,65 @@ module Syskit
       assert_equal "wrote #{html_pages(dir).size} pages to #{dir}\nopen #{dir}/index.html\n", out
     end
 
+    # The count the site guide shows is the example site's.
+    def test_the_site_guide_shows_what_the_command_prints
+      shown = SelfTest::Docs.guide('site').output_of('bundle exec bin/syskit doc --app examples/awesome_robot ' \
+                                                     '--output /tmp/site')
+      assert_equal "wrote #{html_pages(example_site).size} pages to /tmp/site\nopen /tmp/site/index.html\n", shown
+    end
+
     def test_the_index_lists_every_kind_and_marks_what_comes_from_a_bundle
       index = page('index.html')
       assert_equal ['Device models 7', 'Bus models 2', 'Data services 1', 'Task libraries 10', 'Task models 13',
-                    'Compositions 2', 'Profiles 1'], texts(index, '//section/h2')
+                    'Compositions 2', 'Profiles 1', "Guides #{GUIDES.size}"], texts(index, '//section/h2')
       can = REXML::XPath.first(index, "//li[@data-name='commonmodels::devices::bus::can']")
       assert_equal "CommonModels::Devices::Bus::CAN common_models (syskit's own) Controller Area Network.", squeeze(can)
       f9 = REXML::XPath.first(index, "//li[@data-name='awesomerobot::devices::gps::ublox::f9']")
       assert_equal 'devices/AwesomeRobot.Devices.GPS.Ublox.F9.html', REXML::XPath.first(f9, 'a').attributes['href']
       assert_nil REXML::XPath.first(f9, ".//span[@class='badge origin']")
+    end
+
+    # Each guide is a page, listed last on the index in the order of the
+    # README's "Where to read on", with its line there.
+    def test_every_guide_is_a_page_listed_on_the_index
+      read_on = SelfTest::Docs.readme.section('Where to read on').links.map(&:first)
+                              .grep(%r{\Adoc/guides/}).map { |l| File.basename(l, '.md') }
+      assert_equal GUIDES, read_on.sort, "the README's Where to read on lists every guide, once"
+      items = REXML::XPath.match(page('index.html'), "//section[@id='guides']/ul/li")
+      assert_equal(read_on.map { |name| "guides/#{name}.html" }, items.map { |li| li.elements['a'].attributes['href'] })
+      assert_equal 'Devices, buses and drivers model files, configuration files, configure methods and stubs, ' \
+                   'and the API, one line per call.', squeeze(items.first)
+      GUIDES.each { |name| assert_guide_page(name) }
+    end
+
+    # The page of a guide: its title, and where it is.
+    def assert_guide_page(name)
+      title = SelfTest::Docs.guide(name).headings.first[1]
+      guide = page("guides/#{name}.html")
+      assert_equal Doc::Markdown.plain(title), texts(guide, '//article/h1').first, name
+      assert_equal %w[AwesomeRobot Guides Guides], texts(guide, '//header/a | //header/span')
+    end
+
+    # Links between guides lead to their pages and anchors; links to files
+    # the site does not have (the README, the code) are their text alone.
+    def test_the_links_of_the_guide_pages_resolve_in_the_site
+      dir = example_site
+      checked = 0
+      GUIDES.each do |name|
+        REXML::XPath.match(page("guides/#{name}.html"), '//main//a/@href').map(&:value).each do |href|
+          path, anchor = href.split('#', 2)
+          target = path.empty? ? "guides/#{name}.html" : File.join('guides', path)
+          assert File.file?(File.join(dir, target)), "guides/#{name}.html links to #{href}: no such page"
+          ids = REXML::XPath.match(page(target), '//@id').map(&:value)
+          assert_includes ids, anchor, "guides/#{name}.html links to #{href}" if anchor
+          checked += 1
+        end
+      end
+      assert_operator checked, :>=, 10
+      compositions = page('guides/compositions.html')
+      assert_match(/\AA composition puts components together .* as the README's tour shows/,
+                   texts(compositions, '//article/p').first)
+      assert_equal ['The plan', 'Testing an app'], texts(compositions, '//article/p[1]/a')
     end
 
     def test_every_page_is_well_formed_with_unique_ids_and_no_external_resource

@@ -75,12 +75,13 @@ module Syskit
     def test_the_filter_narrows_the_index
       page = browser.open(url('index.html'))
       all = visible(page)
-      assert_equal 36, all.size
-      assert_equal '36 entries', page.evaluate("document.getElementById('search-count').textContent")
+      entries = 36 + GUIDES.size
+      assert_equal entries, all.size
+      assert_equal "#{entries} entries", page.evaluate("document.getElementById('search-count').textContent")
 
       shown = filter(page, 'gps')
       assert_equal %w[awesomerobot::devices::gps::ublox::f9 gps_ublox gps_ublox::f9task], shown
-      assert_equal '3 of 36', page.evaluate("document.getElementById('search-count').textContent")
+      assert_equal "3 of #{entries}", page.evaluate("document.getElementById('search-count').textContent")
       assert_equal %w[devices libraries tasks], page.evaluate(<<~JS)
         [...document.querySelectorAll('section.kind')].filter(s => s.offsetParent !== null).map(s => s.id)
       JS

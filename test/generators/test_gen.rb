@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'helper'
+require 'docs_helper'
 require 'minitest/mock'
 require 'open3'
 require 'rbconfig'
@@ -27,14 +27,13 @@ module Syskit
       end
     RUBY
 
-    # What the README shows `syskit gen app awesome_robot` prints.
-    README_APP_LISTING = File.read(File.join(SelfTest::GEM_ROOT, 'README.md'))[
-      /^\$ syskit gen app awesome_robot\n(.*?\n)\$ /m, 1
-    ]
+    GUIDE = SelfTest::Docs.guide('generators')
+    # What the generators guide shows `syskit gen app awesome_robot` prints.
+    APP_LISTING = GUIDE.output_of('syskit gen app awesome_robot')
 
     def test_a_new_app_and_every_generated_model_load_and_their_tests_pass
       app, out = new_app
-      assert_equal README_APP_LISTING, out
+      assert_equal APP_LISTING, out
 
       generate_every_model(app)
       assert_generated_ruby(app)
@@ -303,14 +302,45 @@ module Syskit
       assert_equal [0, "SeaBot: 0 error(s), 0 warning(s)\n"], [status, out], err
     end
 
-    # The README's session of generators prints what the commands print.
-    def test_the_readme_session
-      session = File.read(File.join(GEM_ROOT, 'README.md'))[/^\$ cd awesome_robot\n(.*?)^\$ rake test/m, 1]
+    # The generators guide's session prints what the commands print, the
+    # device model it shows is the one generated, the app's tests pass as
+    # counted, and its refusals are the messages users get.
+    def test_the_guides_session
+      session = GUIDE.text[/^\$ cd awesome_robot\n(.*?)^\$ rake test/m, 1]
       app, = new_app
-      session.scan(/^\$ syskit gen (.*)\n((?:[^$].*\n)*)/).each do |args, output|
-        assert_equal output, gen(*args.split, chdir: app), "syskit gen #{args}"
+      commands = session.scan(/^\$ syskit gen (.*)\n((?:[^$].*\n)*)/)
+      assert_operator commands.size, :>=, 7
+      commands.each { |args, output| assert_equal output, gen(*args.split, chdir: app), "syskit gen #{args}" }
+      assert_shown_device_model(app)
+
+      out, err, status = rake_test(app)
+      assert status.success?, "#{out}\n#{err}"
+      assert_equal GUIDE.output_of('rake test').lines.last, out.lines.grep(/ runs, /).last
+      assert_shown_refusals(app)
+    end
+
+    # The Safety section's commands print what it shows (the bundled
+    # library's path shown as '...').
+    def assert_shown_refusals(app)
+      commands = GUIDE.section('Safety').commands('syskit gen ')
+      assert_equal 4, commands.size
+      commands.each do |args, shown|
+        out, err, = run_cli('gen', *args.split, chdir: app)
+        assert_equal shown, (out + err).gsub(File.join(GEM_ROOT, 'bundles', 'common_models'), '...'), args
       end
-      assert_operator session.scan('$ syskit gen').size, :>=, 7
+    end
+
+    # The generated device model the guide shows: its lines, in order,
+    # where "..." stands for lines left out.
+    def assert_shown_device_model(app)
+      shown = GUIDE.code_blocks('ruby').find { |body| body.include?("device_type 'F9'") }
+      lines = File.readlines(File.join(app, 'models', 'devices', 'gps', 'ublox', 'f9.rb'))
+      at = 0
+      shown.lines.reject { |l| l.strip.match?(/\A(# )?\.\.\.\z/) }.each do |line|
+        found = lines[at..].index(line)
+        assert found, "the generators guide shows '#{line.chomp}', not in the generated device model"
+        at += found + 1
+      end
     end
 
     # What git should not track in an app: Bundler's files of this machine.

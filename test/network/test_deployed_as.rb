@@ -57,5 +57,18 @@ module Syskit
       assert_reported load_problem(root), /invalid deployed task name nil for device 'imu'/,
                       at: 'models/profiles/base.rb:9', hint: /deployed_as\('imu'\)/, root: root
     end
+
+    def test_a_name_on_two_lines
+      root = my_app("device(Devices::IMU, as: 'imu').deployed_as(\"imu\\nmain\")\n", FILES)
+      assert_reported load_problem(root), /invalid deployed task name "imu\\nmain" for device 'imu'/,
+                      at: 'models/profiles/base.rb:9', root: root
+    end
+
+    # Orocos takes any text on a line: Rock's tests name tasks after the
+    # process and the test ("4242-test_0001_reads the depth").
+    def test_a_name_is_any_text_on_one_line
+      plan = generate("device(Devices::IMU, as: 'imu').deployed_as('4242-test_0001_reads the depth')\n").plan
+      assert_equal '4242-test_0001_reads the depth', plan.find_task('4242-test_0001_reads the depth').deployment
+    end
   end
 end

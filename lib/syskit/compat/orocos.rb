@@ -18,6 +18,35 @@ module Syskit
 
       extend NotModelledCalls
 
+      # orocos.rb's test helpers.
+      module Test
+        # oroGen packages' own component tests (+include
+        # Orocos::Test::Component+, then +start 'task', 'lib::Task' =>
+        # 'task'+, +reader+, +writer+ in the test class): they start the
+        # component, so each of their tests skips, saying so.
+        module Component
+          REASON = "Orocos::Test::Component starts components: needs Orocos' runtime"
+
+          def self.included(base)
+            super
+            base.extend(ClassMethods)
+          end
+
+          # The class statements that declare what the tests start and
+          # read: accepted, nothing is started.
+          module ClassMethods
+            %i[start reader writer logger_task].each do |name|
+              define_method(name) { |*_args, **_options, &_block| nil }
+            end
+          end
+
+          def before_setup
+            super
+            skip(REASON)
+          end
+        end
+      end
+
       class << self
         # Calls that would block on a component are allowed in the block:
         # it runs (there is no component to block on).

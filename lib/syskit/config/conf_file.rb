@@ -41,6 +41,28 @@ module Syskit
         parse(UserFile.read(path))
       end
 
+      # A file without sections, for a task model that has none (+path+ is
+      # only its name in messages).
+      def self.empty(path)
+        file = allocate
+        file.instance_variable_set(:@path, path)
+        file.instance_variable_set(:@sections, {})
+        file
+      end
+
+      # A copy whose sections +names+ have +data+ merged into them (made
+      # when missing), declared at +location+: what a test stubs.
+      def with_sections(names, data, location)
+        copy = ConfFile.empty(path)
+        stubbed = sections.dup
+        names.each do |name|
+          settings = ConfFile.deep_merge(stubbed[name]&.settings || {}, data.transform_keys(&:to_s))
+          stubbed[name] = Section.new(name, settings, location.lineno, '', location.path)
+        end
+        copy.instance_variable_set(:@sections, stubbed)
+        copy
+      end
+
       def section_names
         sections.keys
       end
@@ -56,7 +78,7 @@ module Syskit
           section = sections[name]
           next values if section.nil? && name == 'default'
 
-          raise unknown_section(name, location) unless section
+          raise unknown_section(name, location, with_default: names.include?('default')) unless section
 
           ConfFile.deep_merge(values, section.settings)
         end
@@ -266,14 +288,17 @@ module Syskit
         Location.new(path, offset ? header_line + 1 + offset : [header_line, 1].max)
       end
 
-      def unknown_section(name, location)
+      # +with_default+: whether 'default' is asked for too (else the hint
+      # reminds that with_conf replaces it).
+      def unknown_section(name, location, with_default: false)
         known = section_names
+        file = File.basename(path)
+        hint = "add '--- name:#{name}' to #{file}"
+        hint += "; with_conf replaces ['default'], so write with_conf('default', '#{name}') to apply both" unless
+          with_default
         ConfigurationError.new(
-          "no section '#{name}' in #{File.basename(path)}#{Naming.did_you_mean(name, known)} " \
-          "(sections: #{known.join(', ')})",
-          location: location,
-          hint: "add '--- name:#{name}' to #{File.basename(path)}; with_conf replaces ['default'], " \
-                "so write with_conf('default', '#{name}') to apply both"
+          "no section '#{name}' in #{file}#{Naming.did_you_mean(name, known)} (sections: #{known.join(', ')})",
+          location: location, hint: hint
         )
       end
     end

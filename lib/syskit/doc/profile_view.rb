@@ -20,7 +20,9 @@ module Syskit
       # robot's declaration of it.
       CanBus = Struct.new(:bus, :timing, :device)
 
-      attr_reader :profile, :catalog, :robot, :plan, :error
+      # +apart+: see Network::ProfilePlan#apart (the plan is then the
+      # devices').
+      attr_reader :profile, :catalog, :robot, :plan, :error, :apart
 
       # +dot+: the path of Graphviz's dot, nil when it is not installed.
       def initialize(catalog, profile, robot:, dot:)
@@ -125,11 +127,11 @@ module Syskit
       end
 
       def generate
-        @plan = Network::Generator.plan_profile(catalog.app, profile, robot: robot).plan
-      rescue Syskit::ErrorList => e
-        @error = e.errors
+        result = Network::ProfilePlan.new(catalog.app, profile, robot: robot)
+        @plan = result.plan
+        @apart = result.apart
       rescue Syskit::Error => e
-        @error = [e]
+        @error = e.is_a?(ErrorList) ? e.errors : [e]
       end
 
       def timing_frames(bus)

@@ -9,11 +9,13 @@ require 'syskit/doc/model_view'
 require 'syskit/doc/task_model_view'
 require 'syskit/doc/profile_view'
 require 'syskit/doc/composition_view'
+require 'syskit/doc/guides'
 
 module Syskit
   module Doc
     # Writes the site of a loaded app: an index, a page per entry of the
-    # Catalog, and the assets (one style sheet, one script). Pages are
+    # Catalog, a page per guide of syskit (Guides), and the assets (one
+    # style sheet, one script). Pages are
     # written into a directory beside the output and moved in place once
     # all are written, so a failure never leaves half a site.
     class Site
@@ -27,15 +29,16 @@ module Syskit
       # profiles that could not be planned (with their errors).
       Result = Struct.new(:output, :pages, :unplanned, :dot)
 
-      attr_reader :app, :catalog, :robot
+      attr_reader :app, :catalog, :robot, :guides
 
       # +dot+: the path of Graphviz's dot, or nil (the pages then say how
       # to get it).
-      def initialize(app, robot: 'default', dot: nil)
+      def initialize(app, robot: 'default', dot: nil, guides: Guides.new)
         @app = app
         @robot = robot
         @dot = dot
         @catalog = Catalog.new(app)
+        @guides = guides
         @templates = {}
       end
 
@@ -63,8 +66,17 @@ module Syskit
       # The HTML of the page of +entry+ (or of the index when nil).
       def page_html(entry, view = entry && view_for(entry))
         page = Page.new(self, entry ? entry.path : 'index.html')
-        body = entry ? page.render(entry.kind.template, entry: entry, view: view) : page.render('index')
-        page.render('layout', title: entry ? entry.name : app.name, body: body, entry: entry)
+        return page.render('layout', title: app.name, body: page.render('index'), crumb: nil) unless entry
+
+        page.render('layout', title: entry.name, body: page.render(entry.kind.template, entry: entry, view: view),
+                              crumb: [entry.kind.title, "index.html##{entry.kind.dir}"])
+      end
+
+      # The HTML of the page of +guide+ (a Guides::Guide).
+      def guide_html(guide)
+        page = Page.new(self, guide.path)
+        page.render('layout', title: guide.title, body: page.render('guide', guide: guide),
+                              crumb: ['Guides', 'index.html#guides'])
       end
 
       # What the template of +entry+ reads: its kind's view, or the object.
@@ -84,6 +96,10 @@ module Syskit
           write_file(dir, entry.path, page_html(entry, view))
           pages += 1
           unplanned << [entry.object, view.error] if view.is_a?(ProfileView) && view.error
+        end
+        guides.each do |guide|
+          write_file(dir, guide.path, guide_html(guide))
+          pages += 1
         end
         ASSETS.each { |asset| write_file(dir, "assets/#{asset}", File.read(File.join(TEMPLATES, asset))) }
         Result.new(output, pages + 1, unplanned, @dot)

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/child_port'
+require 'syskit/models/port_lookup'
 
 module Syskit
   module Models
@@ -12,6 +13,8 @@ module Syskit
     # The statements that refine requirements change the child in place and
     # return it, as in Syskit: +add(Srv, as: 'x').with_arguments(speed: 2)+.
     class CompositionChild
+      include PortLookup
+
       attr_reader :composition_model, :child_name, :requirements, :declared_at
 
       def initialize(composition_model, child_name, requirements, location, optional: false)
@@ -82,11 +85,13 @@ module Syskit
       end
 
       # The ports of the child, by name: those of its component model (its
-      # exported ports for a composition), or of its service models.
+      # exported ports for a composition), or of its service models. A
+      # composition child given selections (+add(Cmp.use(...), as:)+) has
+      # the ports of the specialization they select, as in Syskit.
       def ports
         @ports ||= begin
           found = {}
-          models.each do |model|
+          port_models.each do |model|
             model.ports.each_value do |port|
               found[port.name] ||= ChildPort.new(self, port, model)
             end
@@ -94,32 +99,6 @@ module Syskit
           end
           found.freeze
         end
-      end
-
-      def find_port(name)
-        ports[name.to_s]
-      end
-
-      def find_output_port(name)
-        port = find_port(name)
-        port if port&.output?
-      end
-
-      def find_input_port(name)
-        port = find_port(name)
-        port if port&.input?
-      end
-
-      def each_output_port(&)
-        ports.each_value.select(&:output?).each(&)
-      end
-
-      def each_input_port(&)
-        ports.each_value.select(&:input?).each(&)
-      end
-
-      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-        !find_port(name).nil?
       end
 
       # The child seen through +service_model+, one of the models it
@@ -143,6 +122,19 @@ module Syskit
         self
       end
 
+      # Why +name+ is not a method of the child, when it is a port's or a
+      # service's reader (+x_port+, +x_srv+); nil otherwise (see
+      # UserCode.explain).
+      def explain_missing(name)
+        kind = { '_port' => 'port', '_srv' => 'service' }.find { |suffix, _| name.end_with?(suffix) }
+        return unless kind
+
+        wanted = name.delete_suffix(kind[0])
+        names = kind[1] == 'port' ? ports.keys.sort : service_names
+        ["#{self} has no #{kind[1]} '#{wanted}'#{Naming.did_you_mean(wanted, names)}",
+         names.empty? ? "#{model} has no #{kind[1]}s" : "its #{kind[1]}s: #{names.join(', ')}"]
+      end
+
       def to_s
         "#{composition_model.short_name}.#{child_name}_child"
       end
@@ -150,6 +142,20 @@ module Syskit
       alias short_name to_s
 
       private
+
+      # The models whose ports the child has: a composition model narrowed
+      # to the specialization the child's own selections select.
+      def port_models
+        return models unless requirements.composition? && !requirements.selections.empty?
+
+        narrowed = requirements.narrow_model
+        models.map { |m| m.equal?(requirements.component_model) ? narrowed : m }
+      end
+
+      def service_names
+        model = requirements.component_model
+        model ? model.each_data_service.select(&:master?).map(&:name).sort : []
+      end
 
       # +x_port+ for each port and +x_srv+ for each service of the
       # component model, as singleton methods (no method_missing).

@@ -3,6 +3,7 @@
 require 'syskit/models/composition_child'
 require 'syskit/models/composition_ports'
 require 'syskit/models/composition_specializations'
+require 'syskit/models/composition_lookups'
 
 module Syskit
   # The class-level side of components (see Composition).
@@ -26,6 +27,7 @@ module Syskit
       include ComponentModel
       include CompositionPorts
       include CompositionSpecializations
+      include CompositionLookups
 
       # Options of +add+ that only matter to Roby's runtime (what the
       # child's events mean to the composition): accepted, not modelled.
@@ -184,6 +186,7 @@ module Syskit
 
           [child_name, Array(confs).map(&:to_s).freeze]
         end
+        (@configuration_locations ||= {})[name.to_s] = location
         (@configurations ||= {})[name.to_s] = sections.freeze
       end
 
@@ -191,6 +194,12 @@ module Syskit
       def configurations
         inherited = superclass.respond_to?(:configurations) ? superclass.configurations : {}
         inherited.merge(@configurations || {})
+      end
+
+      # Where the named configuration +name+ is declared.
+      def configuration_location(name)
+        @configuration_locations&.[](name) ||
+          (superclass.configuration_location(name) if superclass.respond_to?(:configuration_location))
       end
 
       # Requirements of this model (see InstanceRequirements).
@@ -247,6 +256,7 @@ module Syskit
         merged = existing.requirements.merge_selection(requirements)
         InstanceRequirements.new(models, arguments: existing.arguments.merge(requirements.arguments),
                                          conf: requirements.conf_given? ? requirements.conf : nil,
+                                         conf_location: requirements.conf_location,
                                          deployment_hints: merged.deployment_hints, deployment: merged.deployment,
                                          selections: merged.selections, declared_at: location)
       end

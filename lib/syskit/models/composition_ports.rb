@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/models/port_lookup'
+
 module Syskit
   module Models
     # The dataflow of composition models: the ports a composition exports
@@ -7,6 +9,8 @@ module Syskit
     # as: 'cmd'+) and the connections between its children. Part of
     # CompositionModel.
     module CompositionPorts
+      include PortLookup
+
       # A port of a child that the composition exports under +name+.
       Export = Struct.new(:name, :port, :location)
       # A connection between two children's ports, with its policy.
@@ -78,32 +82,6 @@ module Syskit
         cached(:ports) do
           exports.transform_values { |e| Port.new(e.name, e.port.direction, e.port.type) }.freeze
         end
-      end
-
-      def find_port(name)
-        ports[name.to_s]
-      end
-
-      def find_output_port(name)
-        port = find_port(name)
-        port if port&.output?
-      end
-
-      def find_input_port(name)
-        port = find_port(name)
-        port if port&.input?
-      end
-
-      def each_output_port(&)
-        ports.each_value.select(&:output?).each(&)
-      end
-
-      def each_input_port(&)
-        ports.each_value.select(&:input?).each(&)
-      end
-
-      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-        ports.key?(name.to_s)
       end
 
       # Compositions are not oroGen components.

@@ -3,6 +3,7 @@
 require 'syskit/port'
 require 'syskit/models/provided_ports'
 require 'syskit/models/model_hierarchy'
+require 'syskit/models/port_lookup'
 
 module Syskit
   # The plain model objects the DSL records declarations into.
@@ -14,6 +15,7 @@ module Syskit
     # does for any module (+Device = DeviceModel.new+ is then called Device).
     class DataServiceModel < Module
       include ModelHierarchy
+      include PortLookup
 
       attr_reader :ports, :parents, :declared_at
       attr_accessor :doc
@@ -152,23 +154,6 @@ module Syskit
       # Declares an output port: +output_port 'samples', '/base/Pose'+.
       def output_port(name, type)
         add_port(name, :output, type)
-      end
-
-      def find_port(name)
-        ports[name.to_s]
-      end
-
-      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-        ports.key?(name.to_s)
-      end
-
-      # Its input (output) ports, in declaration order.
-      def each_input_port(&)
-        ports.each_value.select(&:input?).each(&)
-      end
-
-      def each_output_port(&)
-        ports.each_value.select(&:output?).each(&)
       end
 
       # Timing information real bundles write (+worstcase_processing_time 0.2+):

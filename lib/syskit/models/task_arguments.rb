@@ -21,6 +21,8 @@ module Syskit
 
         (@argument_declarations ||= {})[name] = [default, location]
         define_method(name) { arguments.fetch(name) { self.class.argument_default(name, Location.of_caller) } }
+        # As on a Roby task, tests set arguments on an instance (+task.x = 1+).
+        define_method("#{name}=") { |value| @arguments = arguments.merge(name => value) }
         name
       end
 

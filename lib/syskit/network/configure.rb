@@ -36,13 +36,14 @@ module Syskit
       private
 
       def apply_sections(task, device)
-        location = device && (device.conf_location || device.declared_at)
+        location = sections_location(task, device)
         file = @context.app.conf_file(task.model)
         unless file
           return if task.conf == ['default']
 
           raise ConfigurationError.new(
-            "#{device} asks for sections #{task.conf.join(', ')} but #{task.model.name} has no configuration file",
+            "#{device || task} asks for sections #{task.conf.join(', ')} but #{task.model.name} " \
+            'has no configuration file',
             location: location,
             hint: "create config/orogen/#{task.model.name}.yml with a '--- name:#{task.conf.last}' section"
           )
@@ -51,6 +52,16 @@ module Syskit
         file.merged(task.conf, location: location).each do |key, value|
           apply_value(task, file, key, value)
         end
+      end
+
+      # Where the task's sections were chosen: the device's with_conf, else
+      # the requirement's (a composition's +conf+ or a child's with_conf),
+      # else the definition the task was made for.
+      def sections_location(task, device)
+        return device.conf_location || device.declared_at if device
+
+        requirement = task.requirement
+        requirement&.conf_location || requirement&.declared_at || task.root_location
       end
 
       # Locations of keys are only looked up for errors.

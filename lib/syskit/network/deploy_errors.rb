@@ -44,7 +44,7 @@ module Syskit
           "on #{@context.robot_config}",
           location: device_location(requirement, task),
           hint: "add to config/robots/#{@context.robot_config.name}.rb: " \
-                "Syskit.conf.use_deployment OroGen.#{task.model.name.gsub('::', '.')} => '#{name}'" \
+                "Syskit.conf.#{deploy_statement(task.model)} #{Naming.dsl_reference(task.model)} => '#{name}'" \
                 "#{alternatives}"
         )
       end

@@ -276,8 +276,11 @@ module Syskit
       def with_composition_conf(composition, name, requirements)
         return requirements if requirements.conf_given?
 
-        sections = composition.conf.filter_map { |c| composition.model.configurations.dig(c, name) }.last
-        sections ? requirements.with_conf(*sections) : requirements
+        model = composition.model
+        conf = composition.conf.reverse.find { |c| model.configurations.dig(c, name) }
+        return requirements unless conf
+
+        requirements.with_conf(*model.configurations.dig(conf, name), location: model.configuration_location(conf))
       end
 
       def stub_task(requirements, path, parent)
@@ -315,9 +318,13 @@ module Syskit
       end
 
       # Errors point at the root requirement's declaration (the definition,
-      # where a +use+ fixes them), else at the child's.
+      # where a +use+ fixes them), else at the child's; a tag of a profile
+      # this one uses, at the use_profile statement that selects for it.
       def error_location(requirements)
-        @root&.declared_at || requirements.declared_at
+        tag_profile = requirements.profile if requirements.name&.end_with?('_tag')
+        planned = @context.profile
+        used_at = planned.use_profile_location(tag_profile) if tag_profile && planned && !planned.equal?(tag_profile)
+        used_at || @root&.declared_at || requirements.declared_at
       end
 
       def sibling_cycle(composition, pending)

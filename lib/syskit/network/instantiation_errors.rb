@@ -13,18 +13,18 @@ module Syskit
         tag = requirements.name if requirements.name&.end_with?('_tag')
         role = path.split('.').last
         where = parent ? "the child '#{role}' of #{parent.model} (#{path})" : path
-        NetworkError.new(
-          "#{where} needs a #{what}, which is abstract, and nothing selects a component for it" \
-          "#{" (#{requirements.profile&.name}.#{tag} selects nothing)" if tag}",
-          location: location,
-          hint: abstract_hint(requirements, role, parent, tag, model)
-        )
+        message = "#{where} needs a #{what}, which is abstract, and nothing selects a component for it" \
+                  "#{" (#{requirements.profile&.name}.#{tag} selects nothing)" if tag}"
+        hint = abstract_hint(requirements, role, parent, tag, model)
+        return UnselectedTag.new(message, profile: requirements.profile, location: location, hint: hint) if tag
+
+        NetworkError.new(message, location: location, hint: hint)
       end
 
       def abstract_hint(requirements, role, parent, tag, model)
         if tag
           "select one in the profile: use(#{requirements.profile&.name}.#{tag} => Model), " \
-            "or when using the profile: use_profile Profile, '#{tag.delete_suffix('_tag')}' => Model"
+            "or where it is used: use_profile #{requirements.profile&.name}, '#{tag.delete_suffix('_tag')}' => Model"
         elsif model
           "use a concrete submodel of #{model}, or select children that one of its specializations applies to"
         elsif parent

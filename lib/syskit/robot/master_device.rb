@@ -9,7 +9,19 @@ module Syskit
       # A deployment declared on the device: its driver runs as the task
       # +name+ of a deployment of the same name, with no line in the robot
       # configuration; an unmanaged one is started outside of Syskit.
-      DeclaredDeployment = Struct.new(:name, :unmanaged, :location)
+      DeclaredDeployment = Struct.new(:name, :unmanaged, :location) do
+        # The deployment +deployed_as(name)+ declares for +owner+ (a device,
+        # a requirement). A task name is any text on one line, as Orocos
+        # takes it (Rock's tests write "#{Process.pid}-#{name}").
+        def self.declare(name, unmanaged, location, owner:, hint:)
+          unless name.respond_to?(:to_str) && name.to_str.match?(/\A[^\x00-\x1f\x7f]+\z/) && !name.to_str.strip.empty?
+            raise DeclarationError.new("invalid deployed task name #{name.inspect} for #{owner}",
+                                       location: location, hint: hint)
+          end
+
+          new(name.to_str, unmanaged, location)
+        end
+      end
 
       NO_SLAVES = {}.freeze
       private_constant :NO_SLAVES
@@ -141,12 +153,8 @@ module Syskit
       private
 
       def declare_deployment(name, unmanaged, location)
-        unless name.respond_to?(:to_str) && name.to_str.match?(/\A[\w.-]+\z/)
-          raise DeclarationError.new("invalid deployed task name #{name.inspect} for #{self}",
-                                     location: location, hint: "write deployed_as('#{self.name}')")
-        end
-
-        @declared_deployment = DeclaredDeployment.new(name.to_str, unmanaged, location)
+        @declared_deployment = DeclaredDeployment.declare(name, unmanaged, location,
+                                                          owner: self, hint: "write deployed_as('#{self.name}')")
         self
       end
 

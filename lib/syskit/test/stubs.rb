@@ -101,6 +101,20 @@ module Syskit
         @syskit_stub_result&.plan
       end
 
+      # Merges +data+ into the configuration sections +conf+ of +task_model+
+      # (made when missing) for this test, as Syskit's syskit_stub_conf:
+      # +syskit_stub_conf(OroGen.lib.Task, 'default', data: { 'gain' => 2 })+.
+      def syskit_stub_conf(task_model, *conf, data: {})
+        app = Syskit.app || flunk('syskit_stub_conf needs a loaded app')
+        @syskit_stubbed_conf = true
+        app.stub_conf(task_model, conf, data, Location.of_caller)
+      end
+
+      def after_teardown
+        Syskit.app&.clear_conf_stubs if @syskit_stubbed_conf
+        super
+      end
+
       # What syskit_stub_device sets on the device, as Syskit's does.
       STUB_SETTINGS = %i[doc period burst sample_size].freeze
 

@@ -250,9 +250,9 @@ module Syskit
         when Array then value.map { |v| from_ruby(v) }
         when String then text(value)
         when Symbol then text(value).to_sym
-        # A value of Rock's Ruby bindings this gem does not model
-        # (Eigen::Vector3.new(1, 2, 3) for a /base/Vector3d) is kept as it is.
-        when Integer, true, false, nil, Compat::NotModelledValue then value
+        # A value of Rock's Ruby bindings (Eigen::Vector3.new(1, 2, 3) for
+        # a /base/Vector3d), modelled or not, is kept as it is.
+        when Integer, true, false, nil, Compat::NotModelledValue, Compat::Eigen::Value then value
         when Numeric then float(value)
         else mismatch(value, 'plain data (hash, array, string, number)')
         end
@@ -263,6 +263,7 @@ module Syskit
         when Hash then value.to_h { |k, v| [to_plain(k), to_plain(v)] }
         when Array then value.map { |v| to_plain(v) }
         when Compat::NotModelledValue then value.to_s
+        when Compat::Eigen::Value then value.to_a
         else value
         end
       end

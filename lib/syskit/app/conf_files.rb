@@ -1,0 +1,39 @@
+# frozen_string_literal: true
+
+require 'syskit/config/conf_file'
+
+module Syskit
+  class App
+    # The configuration files of the app's task models
+    # (config/orogen/<library>::<Task>.yml, the app's over its bundles'),
+    # and the sections a test stubs over them (syskit_stub_conf).
+    module ConfFiles
+      # The configuration of +task_model+ (config/orogen/<lib>::<Task>.yml),
+      # nil when there is none. As in Rock, the files of the bundles and of
+      # the app are all read, the app's last: its sections replace the
+      # bundles' of the same name (or merge into them, with merge:true).
+      def conf_file(task_model)
+        @conf_files ||= {}
+        return @conf_files[task_model.name] if @conf_files.key?(task_model.name)
+
+        file = "#{task_model.name}.yml"
+        paths = bundle_roots.map { |r| File.join(r, 'config', 'orogen', file) }.select { |p| File.file?(p) }
+        @conf_files[task_model.name] = paths.reverse.reduce(nil) { |base, path| Config::ConfFile.new(path, base: base) }
+      end
+
+      # Merges +data+ into the sections +names+ of +task_model+ (made when
+      # missing) until #clear_conf_stubs, as Syskit's syskit_stub_conf does.
+      def stub_conf(task_model, names, data, location)
+        file = conf_file(task_model) || Config::ConfFile.empty("#{task_model.name}.yml")
+        (@stubbed_conf ||= []) << task_model.name
+        @conf_files[task_model.name] = file.with_sections(names, data, location)
+      end
+
+      # Forgets the sections stubbed by #stub_conf: the files are read again.
+      def clear_conf_stubs
+        (@stubbed_conf || []).each { |name| @conf_files.delete(name) }
+        @stubbed_conf = nil
+      end
+    end
+  end
+end

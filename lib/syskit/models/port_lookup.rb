@@ -1,0 +1,40 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Models
+    # Syskit's port lookups on anything that has its ports by name in
+    # +ports+ (data services, composition models and their children).
+    module PortLookup
+      def find_port(name)
+        ports[name.to_s]
+      end
+
+      def find_output_port(name)
+        port = find_port(name)
+        port if port&.output?
+      end
+
+      def find_input_port(name)
+        port = find_port(name)
+        port if port&.input?
+      end
+
+      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        ports.key?(name.to_s)
+      end
+
+      def each_port(&)
+        ports.each_value(&)
+      end
+
+      # Its input (output) ports, in declaration order.
+      def each_input_port(&)
+        ports.each_value.select(&:input?).each(&)
+      end
+
+      def each_output_port(&)
+        ports.each_value.select(&:output?).each(&)
+      end
+    end
+  end
+end

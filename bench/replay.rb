@@ -2,14 +2,20 @@
 
 # Measures the bus traffic tools: dispatching frames through a 64-device bus
 # and replaying a 1,000,000-frame candump log end to end (parse, count,
-# report). Run as `ruby -Ilib bench/replay.rb [FRAMES]`; bench/run.rb calls
+# report), beside two peers on the same log when they are installed:
+# python-can (bench/python_can_replay.py: its CanutilsLogReader, and a dict
+# per mask for the same filters) and can-utils' log2asc (C). Run as
+# `ruby -Ilib bench/replay.rb [FRAMES]`; bench/run.rb calls
 # Syskit::Bench::Replay.run. Figures are measured on each run, never stored.
 
 require 'benchmark'
+require 'json'
+require 'open3'
 require 'tmpdir'
 require 'syskit'
 require 'syskit/bus/dispatcher'
 require 'syskit/bus/replay'
+require_relative 'replay_peers'
 
 module Syskit
   module Bench
@@ -18,6 +24,12 @@ module Syskit
       FRAMES = 1_000_000
       DEVICES = 64
       TARGETS = { dispatch: 500_000, end_to_end: 200_000 }.freeze
+      # The replay against its peers: at least this many times python-can's
+      # throughput, at most this many times log2asc's time.
+      PYTHON_CAN_FACTOR = 2.0
+      LOG2ASC_FACTOR = 1.5
+      PEER_RUNS = 3
+      PYTHON_CAN = File.join(__dir__, 'python_can_replay.py')
 
       module_function
 
@@ -36,8 +48,10 @@ module Syskit
           # of the replay mark a million-entry array.
           keys = nil
           results.update(measure_replay(devices, path, frames))
+          results[:peers] = Peers.new(dispatcher, path, results[:replay]).measure
         end
         print_table(io, frames, dispatcher, pool.size, results)
+        Peers.print(io, results[:peers], results[:replay])
         results
       end
 
@@ -51,12 +65,28 @@ module Syskit
           linear_scan: best_rate(tenth.size) { tenth.each { |k| scan.receivers(k) } } }
       end
 
-      # Parse + count + report of the log at +path+, as `syskit bus replay`.
+      # Parse + count + report of the log at +path+, as `syskit bus replay`:
+      # the best wall and CPU time of PEER_RUNS runs, and the report.
       def measure_replay(devices, path, frames)
-        rate = best_rate(frames, runs: 2) do
-          Syskit::Bus::Replay.new(Syskit::Bus::Dispatcher.new('can0', devices), path, progress_out: nil).run
+        report = nil
+        runs = Array.new(PEER_RUNS) do
+          GC.start
+          timed do
+            report = Syskit::Bus::Replay.new(Syskit::Bus::Dispatcher.new('can0', devices), path,
+                                             progress_out: nil).run
+          end
         end
-        { end_to_end: rate, log_mb: File.size(path) / 1e6 }
+        replay = { wall: runs.map(&:first).min, cpu: runs.map(&:last).min, report: report }
+        { end_to_end: frames / replay[:wall], log_mb: File.size(path) / 1e6, replay: replay }
+      end
+
+      # [wall, CPU] seconds of the block, in this process.
+      def timed
+        wall = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+        cpu = Process.clock_gettime(Process::CLOCK_PROCESS_CPUTIME_ID)
+        yield
+        [Process.clock_gettime(Process::CLOCK_MONOTONIC) - wall,
+         Process.clock_gettime(Process::CLOCK_PROCESS_CPUTIME_ID) - cpu]
       end
 
       # Frames per second of the block over +frames+ frames, the best of

@@ -1,24 +1,29 @@
 # frozen_string_literal: true
 
-# rake bench: load, generation (each phase) and rendering times, allocated
-# objects and peak RSS on synthetic robots of 100, 1,000 and 10,000 devices,
-# the wall time of the whole `syskit plan --format json` process, and the
-# scaling exponent between 1,000 and 10,000 devices, with the CPU caches
-# emptied before each phase and back to back; then the bus replay
-# (bench/replay.rb) and the CAN timing analysis (bench/can_timing.rb).
-# Every figure printed is measured on this run.
+# rake bench: start-up (bench/startup.rb); load, generation (each phase)
+# and rendering times, allocated objects and peak RSS on synthetic robots of
+# 1,000 to 10,000 devices, without and with compositions, the whole
+# `syskit plan --format json` and `syskit check` processes, and the scaling
+# exponents between sizes, with the CPU caches emptied before each phase and
+# back to back; then the bus replay beside its peers (bench/replay.rb) and
+# the CAN timing analysis (bench/can_timing.rb). Every figure printed is
+# measured on this run, with the machine's load average.
 
 require 'json'
 require 'rbconfig'
 require 'tmpdir'
 require_relative 'synthetic_app'
 require_relative 'worker'
+require_relative 'startup'
 
 module Syskit
   module Bench
     # Runs the generation benchmark and prints its table.
     module Generation
-      SIZES = (ENV['SYSKIT_BENCH_SIZES'] || '100,1000,10000').split(',').map { |s| Integer(s) }
+      SIZES = (ENV['SYSKIT_BENCH_SIZES'] || '1000,2000,5000,10000').split(',').map { |s| Integer(s) }
+      # The whole `syskit plan --format json` process on the largest robot
+      # without compositions, in seconds.
+      PLAN_TARGET = 0.6
       PHASES = Worker::PHASES
       RENDERERS = Worker::RENDERERS.keys
       # Each size's worker is asked for ROUNDS rounds of runs, in turn, and
@@ -36,16 +41,29 @@ module Syskit
 
       module_function
 
-      def run(out = $stdout)
-        out.puts "Network generation on #{RUBY_DESCRIPTION} " \
+      # The table of one kind of robot: devices alone, or +compositions+
+      # (each device also used by a definition; see SyntheticApp).
+      def run(out = $stdout, compositions: false)
+        what = compositions ? 'devices used by compositions, one definition per device' : 'devices'
+        out.puts "Network generation, #{what}, on #{RUBY_DESCRIPTION} " \
                  "(best of #{ROUNDS} interleaved rounds of at least #{ROUND_SECONDS} s per size)"
         rows = Dir.mktmpdir('syskit-bench') do |dir|
-          apps = SIZES.to_h { |n| [n, SyntheticApp.write(File.join(dir, "bench#{n}"), n)] }
+          apps = SIZES.to_h { |n| [n, SyntheticApp.write(File.join(dir, "bench#{n}"), n, compositions: compositions)] }
           measure_sizes(apps)
         end
         print_table(out, rows)
         print_exponents(out, rows)
+        print_target(out, rows) unless compositions
         rows
+      end
+
+      def print_target(out, rows)
+        largest = rows.max_by { |r| r['devices'] }
+        out.puts format('syskit plan --format json of %<n>s devices, whole process: %<s>.2f s (CPU %<cpu>.2f s), ' \
+                        'target %<t>.1f s: %<ok>s; syskit check: %<check>.2f s (CPU %<check_cpu>.2f s)',
+                        n: delimited(largest['devices']), s: largest['process'], cpu: largest['process cpu'],
+                        t: PLAN_TARGET, ok: largest['process'] < PLAN_TARGET ? 'ok' : 'SLOWER',
+                        check: largest['check'], check_cpu: largest['check cpu'])
       end
 
       # One worker per size (its own process: its peak RSS is its own),
@@ -79,12 +97,18 @@ module Syskit
       end
 
       # Loading in fresh processes (the worker's own load is one more) and
-      # the whole `syskit plan --format json` process.
+      # the whole `syskit plan --format json` and `syskit check` processes
+      # (wall and CPU).
       def processes(apps, rows)
         PROCESS_RUNS.times do |i|
           apps.each do |n, app_dir|
-            rows[n]['load'] = [rows[n]['load'], load_time(app_dir)].min unless i.zero?
-            rows[n]['process'] = [rows[n]['process'], process_wall_time(app_dir)].compact.min
+            row = rows[n]
+            row['load'] = [row['load'], load_time(app_dir)].min unless i.zero?
+            { 'process' => %w[plan --format json], 'check' => %w[check] }.each do |key, command|
+              wall, cpu = process_time(app_dir, command)
+              row[key] = [row[key], wall].compact.min
+              row["#{key} cpu"] = [row["#{key} cpu"], cpu].compact.min
+            end
           end
         end
       end
@@ -96,13 +120,17 @@ module Syskit
         worker&.stop
       end
 
-      # The whole `syskit plan --format json` process, Ruby start-up included.
-      def process_wall_time(app_dir)
+      # [wall, CPU] seconds of the whole `syskit COMMAND --app APP` process,
+      # Ruby start-up included.
+      def process_time(app_dir, command)
+        before = Process.times
         start = Process.clock_gettime(Process::CLOCK_MONOTONIC)
-        ok = system(RbConfig.ruby, BIN, 'plan', '--app', app_dir, '--format', 'json', out: File::NULL)
-        raise "syskit plan failed on #{app_dir}" unless ok
+        ok = system(RbConfig.ruby, BIN, *command, '--app', app_dir, out: File::NULL)
+        raise "syskit #{command.first} failed on #{app_dir}" unless ok
 
-        Process.clock_gettime(Process::CLOCK_MONOTONIC) - start
+        after = Process.times
+        [Process.clock_gettime(Process::CLOCK_MONOTONIC) - start,
+         (after.cutime - before.cutime) + (after.cstime - before.cstime)]
       end
 
       COLUMNS = [['devices', 'devices', '%d'], ['tasks', 'tasks', '%d'], %w[runs runs %d], ['load', 'load s', '%.3f']] +
@@ -111,7 +139,7 @@ module Syskit
                  ['filters', 'filters s', '%.4f'],
                  ['json', 'json s', '%.3f'],
                  ['text', 'text s', '%.3f'], ['dot', 'dot s', '%.3f'], ['rss_mb', 'peak RSS MB', '%.0f'],
-                 ['process', 'plan process s', '%.2f']].freeze
+                 ['process', 'plan process s', '%.2f'], ['check', 'check process s', '%.2f']].freeze
 
       def print_table(out, rows)
         cells = rows.map { |r| COLUMNS.map { |key, _, fmt| format(fmt, r.fetch(key)) } }
@@ -155,7 +183,16 @@ module Syskit
 end
 
 if $PROGRAM_NAME == __FILE__
+  # Whole processes are timed as users start them, without Bundler: under
+  # `bundle exec rake bench` each would inherit its RUBYOPT (-rbundler/setup)
+  # and load Bundler first (0.15 s more for every one, ruby -e 1 included).
+  ENV.replace(Bundler.unbundled_env) if defined?(Bundler)
+  puts "machine: #{Syskit::Bench::Startup.machine}"
+  Syskit::Bench::Startup.run
+  puts
   Syskit::Bench::Generation.run
+  puts
+  Syskit::Bench::Generation.run(compositions: true)
   replay = File.join(__dir__, 'replay.rb')
   if File.file?(replay)
     require replay
@@ -165,4 +202,6 @@ if $PROGRAM_NAME == __FILE__
   require_relative 'can_timing'
   puts
   Syskit::Bench::CanTiming.run
+  puts
+  puts "load average at the end: #{Syskit::Bench::Startup.load_average}"
 end

@@ -13,6 +13,14 @@ module Syskit
     # - every device told apart from the others of its model by
     #   prefer_deployed_tasks and given its own configuration sections;
     # - a robot configuration that deploys everything.
+    #
+    # With +compositions+, every device is also used by a definition of
+    # the profile, one per device: a composition of its kind whose first
+    # child is the device (by its device model, whose port the driver
+    # provides, or by its driver's task model) and whose second child
+    # processes its data (a task of its own, told apart by
+    # prefer_deployed_tasks), plus a clock child all compositions share
+    # (equal tasks: merged into one).
     class SyntheticApp
       PER_BUS = 32
       KINDS = [
@@ -22,13 +30,34 @@ module Syskit
         { model: 'Sync', task: 'SyncTask', options: ', bus_to_client: false' }
       ].freeze
 
-      def self.write(dir, devices)
-        new(dir, devices).write
+      # What each kind's composition holds: the device child (by device
+      # model or by driver task model), the processing child and the ports
+      # connected, data from the device or commands to it.
+      COMPOSITIONS = {
+        'Thermometer' => { device: 'Devices::Thermometer', task: 'FilterTask', from: 'sensor.temperature',
+                           to: 'process.value' },
+        'Pressure' => { device: 'OroGen.bench.PressureTask', task: 'FilterTask', from: 'sensor.pressure',
+                        to: 'process.value' },
+        'Motor' => { device: 'Devices::Motor', task: 'ControllerTask', from: 'process.command',
+                     to: 'sensor.command' },
+        'Sync' => { device: 'OroGen.bench.SyncTask', task: 'ControllerTask', from: 'process.command',
+                    to: 'sensor.command' }
+      }.freeze
+
+      # With compositions, thermometers and motors declare the port their
+      # composition connects (a child of a device model reaches its
+      # driver's port through the device's).
+      DEVICE_PORTS = { 'Thermometer' => "output_port 'temperature', '/double'",
+                       'Motor' => "input_port 'command', '/double'" }.freeze
+
+      def self.write(dir, devices, compositions: false)
+        new(dir, devices, compositions: compositions).write
       end
 
-      def initialize(dir, devices)
+      def initialize(dir, devices, compositions: false)
         @dir = dir
         @devices = devices
+        @compositions = compositions
         @buses = (devices + PER_BUS - 1) / PER_BUS
       end
 
@@ -42,6 +71,7 @@ module Syskit
         file('config/orogen/canbus::Task.yml', "--- name:default\ndeviceType: SOCKET\n")
         file('models/profiles/base.rb', profile_file)
         file('config/robots/default.rb', robot_file)
+        file('models/compositions/processing.rb', compositions_file) if @compositions
         @dir
       end
 
@@ -54,8 +84,30 @@ module Syskit
       end
 
       def devices_file
-        models = KINDS.map { |k| "    device_type '#{k[:model]}'" }.join("\n")
-        "module Bench\n  module Devices\n#{models}\n  end\nend\n"
+        models = KINDS.map do |k|
+          port = @compositions && DEVICE_PORTS[k[:model]]
+          port ? "    device_type '#{k[:model]}' do\n      #{port}\n    end" : "    device_type '#{k[:model]}'"
+        end
+        "module Bench\n  module Devices\n#{models.join("\n")}\n  end\nend\n"
+      end
+
+      def compositions_file
+        models = KINDS.map do |k|
+          c = COMPOSITIONS.fetch(k[:model])
+          from_child, from_port = c[:from].split('.')
+          to_child, to_port = c[:to].split('.')
+          <<~RUBY.gsub(/^/, '    ')
+            class #{k[:model]}Processing < Syskit::Composition
+              add #{c[:device]}, as: 'sensor'
+              add OroGen.bench.#{c[:task]}, as: 'process'
+              add OroGen.bench.ClockTask, as: 'clock'
+              #{from_child}_child.#{from_port}_port.connect_to #{to_child}_child.#{to_port}_port
+              clock_child.tick_port.connect_to process_child.tick_port
+            end
+          RUBY
+        end
+        "require 'models/devices/sensors'\nusing_task_library 'bench'\n\nmodule Bench\n  module Compositions\n" \
+          "#{models.join("\n")}  end\nend\n"
       end
 
       def spec_file
@@ -81,16 +133,38 @@ module Syskit
             property 'gain', 'double', 1.0
             input_port('can_in', '/canbus/Message').needs_reliable_connection
             output_port 'can_out', '/canbus/Message'
+          #{"  input_port 'command', '/double'" if @compositions}
           end
 
           task_context 'SyncTask' do
             output_port 'can_out', '/canbus/Message'
+          #{"  input_port 'command', '/double'" if @compositions}
           end
+          #{processing_tasks if @compositions}
 
           # A bus driver that does not demultiplex.
           task_context 'BusTask' do
             input_port('can_in', '/canbus/Message').multiplexes.needs_reliable_connection
             output_port 'can_out', '/canbus/Message'
+          end
+        RUBY
+      end
+
+      def processing_tasks
+        <<~RUBY
+          task_context 'FilterTask' do
+            input_port 'value', '/double'
+            input_port 'tick', '/double'
+            output_port 'filtered', '/double'
+          end
+
+          task_context 'ControllerTask' do
+            input_port 'tick', '/double'
+            output_port 'command', '/double'
+          end
+
+          task_context 'ClockTask' do
+            output_port 'tick', '/double'
           end
         RUBY
       end
@@ -125,8 +199,9 @@ module Syskit
       end
 
       def profile_file
-        out = +"using_task_library 'canbus'\nusing_task_library 'bench'\n\nmodule Bench\n  module Profiles\n    " \
-               "profile 'Base' do\n      robot do\n"
+        out = +"using_task_library 'canbus'\nusing_task_library 'bench'\n"
+        out << "require 'models/compositions/processing'\n" if @compositions
+        out << "\nmodule Bench\n  module Profiles\n    profile 'Base' do\n      robot do\n"
         @buses.times do |b|
           driver = b.even? ? 'OroGen.canbus.Task' : 'OroGen.bench.BusTask'
           out << "        com_bus(CommonModels::Devices::Bus::CAN, as: 'can#{b}', using: #{driver})" \
@@ -135,7 +210,16 @@ module Syskit
           ((b * PER_BUS)...[(b + 1) * PER_BUS, @devices].min).each { |i| out << device_line(i) }
           out << "        end\n"
         end
-        out << "      end\n    end\n  end\nend\n"
+        out << "      end\n"
+        @devices.times { |i| out << definition_line(i) } if @compositions
+        out << "    end\n  end\nend\n"
+      end
+
+      def definition_line(index)
+        kind = KINDS[index % KINDS.size]
+        process = "OroGen.bench.#{COMPOSITIONS.fetch(kind[:model])[:task]}.prefer_deployed_tasks('process#{index}')"
+        "      define 'process#{index}', Compositions::#{kind[:model]}Processing\n        " \
+          ".use('sensor' => dev#{index}_dev, 'process' => #{process})\n"
       end
 
       def device_line(index)
@@ -144,6 +228,14 @@ module Syskit
         "          device(Devices::#{kind[:model]}, as: 'dev#{index}'#{kind[:options]})" \
           ".can_id(0x#{(0x100 + (index % PER_BUS)).to_s(16)}, 0x7ff)" \
           ".prefer_deployed_tasks('dev#{index}')#{conf}.period(0.01)\n"
+      end
+
+      def processing_deployments(out)
+        out << "Syskit.conf.use_deployment OroGen.bench.ClockTask => 'clock'\n"
+        @devices.times do |i|
+          task = COMPOSITIONS.fetch(KINDS[i % KINDS.size][:model])[:task]
+          out << "Syskit.conf.use_deployment OroGen.bench.#{task} => 'process#{i}'\n"
+        end
       end
 
       def robot_file
@@ -155,6 +247,7 @@ module Syskit
         @devices.times do |i|
           out << "Syskit.conf.use_deployment OroGen.bench.#{KINDS[i % KINDS.size][:task]} => 'dev#{i}'\n"
         end
+        processing_deployments(out) if @compositions
         out
       end
     end

@@ -3,6 +3,11 @@
 require 'minitest/autorun'
 require 'syskit'
 require 'syskit/cli'
+# What the commands load when they run (syskit/cli.rb loads only the
+# command line): the tests use all of it.
+%w[check doc render/text render/json render/dot render/svg cli/plan_files test/runner]
+  .each { |path| require "syskit/#{path}" }
+Syskit::CLI::Gen::GENERATORS.each { |path| require path }
 require 'fileutils'
 require 'open3'
 require 'rbconfig'

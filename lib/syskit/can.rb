@@ -47,15 +47,18 @@ module Syskit
     # that can never match is stored too (the seed's own test writes
     # +can_id(10, 20)+): `syskit check` warns about it (Checks::CanFilters).
     def filter_value(id, mask)
-      { 'id' => id, 'mask' => mask }.each do |what, value|
-        raise ArgumentError, "the #{what} must be an integer, got #{value.inspect}" unless value.is_a?(Integer)
-        next if value.between?(0, EXTENDED_ID_MAX)
-
-        raise ArgumentError, format('the %<what>s 0x%<v>X does not fit in 29 bits (CAN ids are 11-bit standard ' \
-                                    'or 29-bit extended, at most 0x%<max>X)',
-                                    what: what, v: value, max: EXTENDED_ID_MAX)
-      end
+      check_filter_part('id', id)
+      check_filter_part('mask', mask)
       [id, mask]
+    end
+
+    def check_filter_part(what, value)
+      raise ArgumentError, "the #{what} must be an integer, got #{value.inspect}" unless value.is_a?(Integer)
+      return if value.between?(0, EXTENDED_ID_MAX)
+
+      raise ArgumentError, format('the %<what>s 0x%<v>X does not fit in 29 bits (CAN ids are 11-bit standard ' \
+                                  'or 29-bit extended, at most 0x%<max>X)',
+                                  what: what, v: value, max: EXTENDED_ID_MAX)
     end
   end
 end

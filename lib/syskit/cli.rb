@@ -1,27 +1,37 @@
 # frozen_string_literal: true
 
-require 'set'
+# Only what every command needs is loaded here: the command classes, their
+# descriptions and options. What a command does (the model layer, the
+# renderers, the generators...) is loaded when it runs (see Support and
+# LIBRARIES): `syskit help` and `syskit --version` answer without it.
 require 'thor'
-require 'syskit'
-require 'syskit/printable'
-require 'syskit/check'
-require 'syskit/render/text'
-require 'syskit/render/json'
-require 'syskit/render/dot'
-require 'syskit/render/svg'
-require 'syskit/doc'
+require 'syskit/version'
 require 'syskit/cli/support'
 require 'syskit/cli/command_line'
 require 'syskit/cli/style'
 require 'syskit/cli/help'
-require 'syskit/cli/plan_files'
-require 'syskit/test/runner'
+require 'syskit/cli/terminal_width'
 
 module Syskit
   # `syskit`: thin Thor commands that parse options, call one function of the
   # library and print its result.
   class CLI < Thor
-    RENDERERS = { 'text' => Render::Text, 'json' => Render::JSON, 'dot' => Render::Dot, 'svg' => Render::Svg }.freeze
+    # The formats of `syskit plan`, each the name of its renderer
+    # (syskit/render/NAME.rb, Render::...), loaded when used.
+    RENDERERS = { 'text' => :Text, 'json' => :JSON, 'dot' => :Dot, 'svg' => :Svg }.freeze
+
+    # What each command loads before it runs (see Help#libraries); the
+    # others load the model layer, syskit, and the rest as they go. `gen`
+    # and `bus` are groups: their commands say what they need.
+    LIBRARIES = {
+      'version' => [], 'gen' => [], 'bus' => [],
+      'diff' => %w[syskit syskit/cli/plan_files], 'check' => %w[syskit syskit/check],
+      'doc' => %w[syskit syskit/doc], 'test' => %w[syskit syskit/test/runner]
+    }.freeze
+
+    def self.libraries(command_name)
+      LIBRARIES.fetch(command_name) { super }
+    end
 
     def self.exit_on_failure?
       true
@@ -73,8 +83,7 @@ module Syskit
 
     desc 'version', 'print the version (also: syskit --version, syskit -v)'
     def version
-      puts "syskit #{Syskit::VERSION}"
-      puts "#{Syskit::ABOUT}, from #{GEM_ROOT}"
+      $stdout.write(Syskit.version_text)
     end
 
     desc 'plan [PROFILE] [ACTION...]', 'print the connection plan of a profile'
@@ -119,7 +128,7 @@ module Syskit
           print_diff(old, PlanFiles.plain(result.plan), new_name: "syskit plan #{[profile.name, *actions].join(' ')}")
         else
           picture = %w[dot svg].include?(options[:format]) ? { all_ports: options[:all_ports] } : {}
-          RENDERERS.fetch(options[:format]).write(result.plan, $stdout, **picture)
+          renderer(options[:format]).write(result.plan, $stdout, **picture)
         end
         note_warnings(app)
         note_missed_deadlines(profile)
@@ -128,6 +137,12 @@ module Syskit
     end
 
     no_commands do
+      # The renderer of +format+ (a key of RENDERERS).
+      def renderer(format)
+        require "syskit/render/#{format}"
+        Render.const_get(RENDERERS.fetch(format))
+      end
+
       # A profile planned whole whose definitions cannot all run at once
       # prints its devices' plan (see Network::ProfilePlan); when one of
       # them does not plan on its own either, the error says which to plan.
@@ -263,6 +278,7 @@ module Syskit
     def read_old_plan
       return unless options[:diff]
 
+      require 'syskit/cli/plan_files'
       unless %w[text json].include?(options[:format])
         raise Error.new("--diff prints the difference as text or json, not #{options[:format]}",
                         hint: 'leave out --format, or give --format json')
@@ -301,6 +317,7 @@ module Syskit
     end
 
     def print_check(app, report)
+      require 'set'
       return print_check_json(app, report) if options[:format] == 'json'
 
       # Files in the order their first problem was found, which puts the

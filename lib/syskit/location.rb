@@ -13,12 +13,13 @@ module Syskit
     # The first frame of the current call stack that is outside the gem's
     # library code, i.e. the user's DSL call that led here.
     def self.of_caller
-      # The user's frame is usually the DSL method's caller, two frames up:
-      # look there first, then further a batch at a time, instead of
-      # materializing the whole stack on every call (a 10,000-device robot
-      # makes ~40,000 of these calls while loading).
-      start = 1
-      length = 2
+      # Only the gem's methods call this: frame 1, their own, is never the
+      # user's. The user's frame is usually the next one, the DSL method's
+      # caller: it is asked for alone (one frame object, where a 10,000-
+      # device robot makes ~40,000 of these calls while loading), then the
+      # stack further up a batch at a time, never materialized whole.
+      start = 2
+      length = 1
       while (batch = caller_locations(start, length)) && !batch.empty?
         batch.each { |loc| return from(loc) if user_frame?(loc) }
         start += batch.size

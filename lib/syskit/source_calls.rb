@@ -1,7 +1,5 @@
 # frozen_string_literal: true
 
-require 'ripper'
-
 module Syskit
   # Calls of given methods in a Ruby source, found by Ruby's own parser
   # before the file runs (register_app in robot configurations, deployment
@@ -29,8 +27,17 @@ module Syskit
     # The calls of the methods +names+ in +source+, in source order; none
     # when Ruby cannot parse it (its evaluation reports that).
     def find(source, names)
+      names = names.map(&:to_s)
+      # A call has its name in the text: a source without any is not
+      # parsed (Ripper takes 0.4 s on a robot configuration of 10,000
+      # deployments, none of which registers an app).
+      return [] if names.none? { |name| source.include?(name) }
+
+      # Loaded here: most sources have no such call, and most commands
+      # parse none.
+      require 'ripper'
       found = []
-      walk(Ripper.sexp(source), names.map(&:to_s), found)
+      walk(Ripper.sexp(source), names, found)
       found.sort_by(&:line)
     end
 
@@ -49,8 +56,12 @@ module Syskit
     # (+Roby.app.auto_load_models = false+), in source order: true, false,
     # or nil for a value that is not one of these literals.
     def assignments(source, name)
+      name = name.to_s
+      return [] unless source.include?(name)
+
+      require 'ripper'
       found = []
-      walk_assignments(Ripper.sexp(source), name.to_s, found)
+      walk_assignments(Ripper.sexp(source), name, found)
       found
     end
 

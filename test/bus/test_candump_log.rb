@@ -146,6 +146,53 @@ module Syskit
         assert_equal [7, 1_436_509_053_249_000, 1_436_509_053_251_200, 500], ids[0x123]
       end
 
+      # Lines of every spelling, in and out of time order, of several
+      # interfaces, some malformed, some cut short: the reader's fast path
+      # (lines as candump -l writes them) and its other paths together
+      # count what the full parser reads.
+      def test_the_fast_reader_on_a_log_of_every_kind_of_line
+        random = Random.new(28)
+        time = 1_436_509_053_000_000
+        lines = Array.new(4000) do
+          time += random.rand(-40..300)
+          random_line(random, time)
+        end
+        text = "#{lines.join("\n")}\n"
+        fast = summary(*read_fast(text))
+        assert_equal summary(*read_frames(text)), fast
+        assert_operator fast[1], :>, 1500, 'many lines are frames of can0'
+        assert_operator fast[8], :>, 100, 'some lines are malformed'
+      end
+
+      def random_line(random, time)
+        id, data = random_frame(random)
+        seconds = random.rand(20).zero? ? (time / 1_000_000 % 1000).to_s : format('%010d', time / 1_000_000)
+        interface = %w[can0 can0 can0 can1 vcan0].sample(random: random)
+        padding = random.rand(15).zero? ? '  ' : ' '
+        line = "(#{seconds}.#{format('%06d', time % 1_000_000)})#{padding}#{interface} #{id}##{data}" \
+               "#{' R' if random.rand(20).zero?}"
+        random.rand(60).zero? ? line[0, random.rand(line.size)] : line
+      end
+
+      # Ids in and out of range, error frames; data of every kind, some bad.
+      def random_frame(random)
+        [[format('%03X', random.rand(0x900)), format('%08X', random.rand(0x4000_0000)),
+          format('%03X', random.rand(0x800)), format('%08X', random.rand(0x2000_0000))].sample(random: random),
+         ['R', "R#{random.rand(10)}", "#1#{'AB' * [0, 8, 12, 13].sample(random: random)}", 'ZZ', '12.34',
+          'A5' * random.rand(10), 'A5' * random.rand(9), '5A' * random.rand(9)].sample(random: random)]
+      end
+
+      def test_progress_comes_with_the_traffic_up_to_date
+        text = Array.new(10) { |i| format("(1436509053.%06d) can0 123#00\n", i) }.join
+        traffic = Traffic.new
+        seen = []
+        CandumpLog.new('test.log').read(StringIO.new(text), traffic, every: 4) do |frames|
+          seen << [frames, traffic.frames]
+        end
+        assert_equal [[4, 4], [8, 8]], seen
+        assert_equal 10, traffic.frames
+      end
+
       def test_the_bits_frames_take_on_the_wire
         _, traffic = read_fast(<<~LOG)
           (1.000000) can0 123#DEADBEEF

@@ -185,6 +185,35 @@ module Syskit
       assert_match(/no profile named 'Nope'/, err)
     end
 
+    # syskit/cli.rb loads the command line only; each command loads what
+    # it needs when it runs: each works in a process of its own.
+    def test_each_command_loads_what_it_needs
+      out, err, status = syskit_process('--version')
+      assert_equal [0, "syskit #{VERSION}\n#{ABOUT}, from #{GEM_ROOT}\n", ''], [status.exitstatus, out, err]
+      Dir.mktmpdir do |dir|
+        plan = File.join(dir, 'plan.json')
+        File.write(plan, syskit_process('plan', '--app', EXAMPLE, '--format', 'json').first)
+        out, err, status = syskit_process('plan', '--app', EXAMPLE, '--diff', plan)
+        assert_equal 0, status.exitstatus, err
+        assert_match(/^the plans are the same$/, out)
+        out, err, status = syskit_process('diff', plan, plan)
+        assert_equal 0, status.exitstatus, err
+        assert_match(/^the plans are the same$/, out)
+      end
+    end
+
+    # What the help and the version print needs no model: they load none.
+    def test_help_and_version_load_no_model
+      [%w[help], %w[help plan], %w[gen help dev], %w[--version], %w[plna]].each do |args|
+        script = "ARGV.replace(#{args.inspect}); " \
+                 "at_exit { warn \"model layer: \#{defined?(Syskit::App).inspect}\" }; " \
+                 "load #{File.join(GEM_ROOT, 'bin', 'syskit').inspect}"
+        out, err, = Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-e', script, unsetenv_others: true)
+        assert_match(/syskit/, out + err, args)
+        assert_match(/^model layer: nil$/, err, args)
+      end
+    end
+
     private
 
     # What syskit writes on a terminal (a pseudo-terminal: stdout and

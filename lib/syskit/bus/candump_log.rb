@@ -2,6 +2,7 @@
 
 require 'syskit/bus/frame'
 require 'syskit/bus/candump_line'
+require 'syskit/bus/candump_fields'
 
 module Syskit
   module Bus
@@ -13,6 +14,8 @@ module Syskit
     # replay. Frames of other interfaces than the one read are counted per
     # interface and skipped.
     class CandumpLog
+      include CandumpFields
+
       # A line that is not a candump frame.
       Malformed = Struct.new(:lineno, :message, :text)
       # The first line whose time is before the line read before it (a log
@@ -20,18 +23,12 @@ module Syskit
       Backwards = Struct.new(:lineno, :time, :previous_time, :lines)
       # How many malformed lines are kept for the report.
       KEEP_MALFORMED = 5
-      # A line as candump writes it, checked whole without captures (no
-      # allocation): lines that pass are read by index arithmetic, the
-      # others (rare: malformed or unusual spellings) by CandumpLine.
-      WRITTEN = /\A\(\d+\.\d{6}\) +[^ \n]+ (?:\h{3}|\h{8})#(?:R[0-8]?|#\h(?:\h\h){0,64}|(?:\h\h){0,8})(?: [RT])?\n?\z/
       # The longest line candump writes is under 300 bytes (a CAN FD frame
       # of 64 bytes). Lines are read in pieces of at most this many bytes, a
       # longer line is skipped piece by piece: memory stays bounded whatever
       # the file holds (a binary file, /dev/zero).
       MAX_LINE = 4096
-      SPACE = 32
-      FD_MARK = 35 # '#'
-      RTR_MARK = 82 # 'R'
+      HASH_MARK = 35 # '#'
 
       # +backwards+: a Backwards when the log is not in time order, else nil.
       attr_reader :path, :interface, :other_interfaces, :malformed, :malformed_count, :lines, :backwards
@@ -51,12 +48,126 @@ module Syskit
       end
 
       # Counts every frame of the selected interface read from +io+ into
-      # +traffic+ (a Traffic); yields after each line, for progress.
-      def read(io, traffic)
-        each_line(io) do |line|
-          count_written(line, traffic) || count_parsed(line, traffic) if line
-          yield if block_given?
+      # +traffic+ (a Traffic); yields the number of frames counted so far
+      # after every +every+ lines (or pieces of an overlong line), for
+      # progress, with +traffic+ up to date.
+      #
+      # One loop on purpose: it runs for every line of logs of millions,
+      # and every call and object made per line shows in the replay's speed
+      # (doc/performance.md). Lines as candump -l writes them for the
+      # interface read are checked whole by one regexp (#fast_line) and
+      # read by position; the others go through #line_fields. The figures
+      # are kept in locals and handed to +traffic+ every +every+ lines and
+      # at the end; the per-key tallies are updated in place.
+      # rubocop:disable-next Metrics -- one loop, see above
+      def read(io, traffic, every: 1)
+        tallies = traffic.tallies
+        # Read by position once a first frame has set the times it needs.
+        fast = @previous_time && traffic.last_time && fast_line
+        id_start = fast && (@interface.bytesize + 21)
+        frames = extended = fd_frames = fd_extended = rtr_frames = errors = bytes_total = 0
+        first_time = traffic.first_time
+        last_time = traffic.last_time
+        previous = @previous_time
+        lines = @lines
+        pieces = 0
+        commit = lambda do
+          traffic.add_totals(frames: frames, extended: extended, fd_frames: fd_frames, fd_extended: fd_extended,
+                             rtr: rtr_frames, errors: errors, bytes: bytes_total,
+                             first_time: first_time, last_time: last_time)
+          frames = extended = fd_frames = fd_extended = rtr_frames = errors = bytes_total = 0
+          @previous_time = previous
+          @lines = lines
         end
+        long = false # in an overlong line, read in pieces (see #each_line)
+        seconds_prefix = nil # "(SSSSSSSSSS." of the last line read by position
+        seconds = 0
+        io.each_line(MAX_LINE) do |line|
+          if !long && fast&.match?(line)
+            # (SSSSSSSSSS.UUUUUU) IFACE III#DD.. or IIIIIIII#DD..
+            lines += 1
+            frames += 1
+            if line.getbyte(id_start + 3) == HASH_MARK
+              key = line.byteslice(id_start, 3).to_i(16)
+              bytes_total += (line.bytesize - id_start - 5) >> 1
+            else
+              key = line.byteslice(id_start, 8).to_i(16) | Frame::EFF_FLAG
+              extended += 1
+              bytes_total += (line.bytesize - id_start - 10) >> 1
+            end
+            # Thousands of lines in a row share their second.
+            unless seconds_prefix && line.start_with?(seconds_prefix)
+              seconds_prefix = line.byteslice(0, 12)
+              seconds = line.byteslice(1, 10).to_i * 1_000_000
+            end
+            time = seconds + line.byteslice(12, 6).to_i
+            # Traffic#count and #stretch, inline (times are never nil here).
+            tally = tallies[key]
+            if tally.nil? then tallies[key] = [1, time, time, 0]
+            else
+              tally[0] += 1
+              last = tally[2]
+              if time >= last
+                tally[3] = time - last if time - last > tally[3]
+                tally[2] = time
+              elsif time < tally[1] then tally[1] = time
+              end
+            end
+            if time >= last_time then last_time = time
+            elsif time < first_time then first_time = time
+            end
+            if time < previous
+              @lines = lines
+              out_of_order(time, previous)
+            end
+            previous = time
+          else
+            whole = line.bytesize < MAX_LINE || line.end_with?("\n")
+            unless long
+              @lines = lines += 1
+              whole ? (fields = line_fields(line)) : too_long(line)
+            end
+            long = !whole
+            if fields
+              key, time, fd, rtr, bytes = fields
+              frames += 1
+              if key == ERROR
+                errors += 1 # counted in the totals, never dispatched
+              else
+                extended += 1 if key >= Frame::EFF_FLAG
+                rtr_frames += 1 if rtr
+                if fd
+                  fd_frames += 1
+                  fd_extended += 1 if key >= Frame::EFF_FLAG
+                else
+                  bytes_total += bytes
+                end
+                tally = tallies[key]
+                tally ? traffic.stretch(tally, time) : tallies[key] = [1, time, time, 0]
+                tally[0] += 1 if tally
+              end
+              if last_time.nil? then first_time = last_time = time
+              elsif time >= last_time then last_time = time
+              elsif time < first_time then first_time = time
+              end
+              if previous && time < previous
+                @lines = lines
+                out_of_order(time, previous)
+              end
+              previous = time
+              # From the first frame on, lines as candump writes them are
+              # read by position.
+              fast = fast_line
+              id_start = fast && (@interface.bytesize + 21)
+            end
+          end
+          next unless (pieces += 1) == every
+
+          pieces = 0
+          commit.call
+          yield traffic.frames if block_given?
+        end
+        commit.call
         self
       end
 
@@ -94,87 +205,22 @@ module Syskit
                          "#{piece.byteslice(0, 40).inspect}...")
       end
 
-      # Counts a line that matched WRITTEN, reading its fields by position;
-      # false when its values need CandumpLine's checks and messages. One
-      # method on purpose: it runs for every line of logs of millions, and
-      # every call and string made here shows in the replay's speed.
-      # rubocop:disable-next Metrics/AbcSize, Metrics/CyclomaticComplexity, Metrics/PerceivedComplexity -- one method, see above
-      def count_written(line, traffic)
-        return false unless line.match?(WRITTEN)
+      # The regexp of lines as candump -l writes them for the interface
+      # read, which #read reads by position: 10 digits of seconds, a
+      # standard id up to 7FF or an extended one without the error flag,
+      # and 0 to 8 data bytes (nil until the interface is known).
+      def fast_line
+        return unless @interface&.ascii_only?
 
-        close = line.index(')')
-        # The id is the 3 or 8 digits before the first '#' after the time.
-        hash = line.index('#', close)
-        extended = line.getbyte(hash - 4) != SPACE
-        id_start = extended ? hash - 8 : hash - 3
-        id = line.byteslice(id_start, hash - id_start).to_i(16)
-        return false if id > (extended ? 0x3FFF_FFFF : Frame::SFF_MASK)
-
-        mark = line.getbyte(hash + 1)
-        fd = mark == FD_MARK
-        bytes = 0 # a remote request carries none
-        if fd
-          bytes = fd_length(line, hash)
-          return false unless Frame::CANFD_LENGTHS.include?(bytes)
-        elsif mark != RTR_MARK
-          # Half the characters after #, whether an end of line follows or
-          # not; one less when the " R"/" T" flags of candump -x do.
-          bytes = (line.bytesize - hash - 1) >> 1
-          bytes -= 1 if line.getbyte(hash + bytes + bytes - 1) == SPACE
-        end
-        return true unless selected_at?(line, close + 2, id_start - 1)
-
-        time = (line.byteslice(1, close - 8).to_i * 1_000_000) + line.byteslice(close - 6, 6).to_i
-        in_order(time)
-        if extended && id & Frame::ERR_FLAG != 0 then traffic.count_error(time)
-        else traffic.count(extended ? id | Frame::EFF_FLAG : id, time, fd, mark == RTR_MARK, bytes)
-        end
-        true
+        @fast_line ||= /\A\(\d{10}\.\d{6}\) #{Regexp.escape(@interface)} (?:[0-7]\h\h|[01]\h{7})#(?:\h\h){0,8}\n\z/
       end
 
-      # #selected? for the interface name between +start+ (maybe padding
-      # spaces) and +stop+, compared in place: no string is made for the
-      # name of the interface being read.
-      def selected_at?(line, start, stop)
-        start += 1 while line.getbyte(start) == SPACE
-        iface = @interface
-        return true if iface && stop - start == iface.bytesize && line.index(iface, start) == start
-
-        selected?(line.byteslice(start, stop - start))
-      end
-
-      def count_parsed(line, traffic)
-        frame, iface = parse(line)
-        return unless frame && selected?(iface)
-
-        in_order(frame.time)
-        traffic.add(frame)
-      end
-
-      # Notes a frame time earlier than the one before it: gaps and periods
-      # are measured in log order, which is then not time order.
-      def in_order(time)
-        previous = @previous_time
-        @previous_time = time
-        return if previous.nil? || time >= previous
-
+      # Notes a frame at +time+, earlier than the one before it (at
+      # +previous+): gaps and periods are measured in log order, which is
+      # then not time order.
+      def out_of_order(time, previous)
         @backwards ||= Backwards.new(@lines, time, previous, 0)
         @backwards.lines += 1
-      end
-
-      # Data bytes of a CAN FD line: from after ##F to the end of the frame.
-      def fd_length(line, hash)
-        stop = line.index(' ', hash) || (line.bytesize - (line.end_with?("\n") ? 1 : 0))
-        (stop - hash - 3) / 2
-      end
-
-      def parse(line)
-        CandumpLine.parse(line)
-      rescue CandumpLine::Malformed => e
-        # Only the last line of a file can lack its end of line: a log cut
-        # short while candump was writing it.
-        message = line.end_with?("\n") ? e.message : "last line cut short (no end of line): #{e.message}"
-        record_malformed(message, line.chomp)
       end
 
       def record_malformed(message, text)

@@ -42,9 +42,7 @@ module Syskit
         File.open(@path, 'rb') do |io|
           progress = Progress.for(io.size, out: @progress_out, min_bytes: @progress_min_bytes)
           begin
-            log.read(io, traffic) do
-              progress.update(io.pos, traffic.frames) if progress && (log.lines % PROGRESS_EVERY).zero?
-            end
+            log.read(io, traffic, every: PROGRESS_EVERY) { |frames| progress&.update(io.pos, frames) }
           ensure
             progress&.finish
           end

@@ -22,10 +22,22 @@ module Syskit
       EXTENDED_BITS = CAN::Timing::Frame::EXTENDED_BITS
       BITS_PER_BYTE = CAN::Timing::Frame::BITS_PER_BYTE
 
-      attr_reader :ids, :frames, :extended, :fd, :rtr, :errors, :first_time, :last_time
+      # The index of each figure in a tally (see #tallies).
+      FRAMES = 0
+      FIRST_TIME = 1
+      LAST_TIME = 2
+      MAX_GAP = 3
+
+      attr_reader :frames, :extended, :fd, :rtr, :errors, :first_time, :last_time,
+                  # Per key, [frames, first_time, last_time, max_gap] (the
+                  # figures of IdStats, at the indexes above): arrays, which
+                  # a log reader updates in place, without a call per frame
+                  # (see CandumpLog#read and #add_totals).
+                  :tallies
 
       def initialize
-        @ids = {}
+        @tallies = {}
+        @ids = nil
         @frames = 0
         @extended = 0
         @fd = 0
@@ -35,6 +47,26 @@ module Syskit
         @fd_extended = 0
         @first_time = nil
         @last_time = nil
+      end
+
+      # Per key, its IdStats.
+      def ids
+        @ids ||= @tallies.transform_values { |tally| IdStats.new(*tally) }
+      end
+
+      # Adds the totals of frames a reader counted in #tallies itself, and
+      # the span of their times (microseconds, nil when none).
+      def add_totals(frames:, extended:, fd_frames:, fd_extended:, rtr:, errors:, bytes:, first_time:, last_time:)
+        @ids = nil
+        @frames += frames
+        @extended += extended
+        @fd += fd_frames
+        @fd_extended += fd_extended
+        @rtr += rtr
+        @errors += errors
+        @bytes += bytes
+        span(first_time) if first_time
+        span(last_time) if last_time
       end
 
       # Counts +frame+ (a Frame).
@@ -57,12 +89,13 @@ module Syskit
           @bytes += bytes
         end
         @rtr += 1 if rtr
-        stats = @ids[key]
-        if stats
-          stats.frames += 1
-          stretch(stats, time) if time
+        @ids = nil
+        tally = @tallies[key]
+        if tally
+          tally[FRAMES] += 1
+          stretch(tally, time) if time
         else
-          @ids[key] = IdStats.new(1, time, time, 0)
+          @tallies[key] = [1, time, time, 0]
         end
         span(time) if time
       end
@@ -92,21 +125,22 @@ module Syskit
         (STANDARD_BITS * classic_standard) + (EXTENDED_BITS * classic_extended) + (BITS_PER_BYTE * @bytes)
       end
 
-      private
-
-      # Same as #span, for the times of one key.
-      def stretch(stats, time)
+      # Same as #span, for the times of one key's tally; public for the log
+      # readers that update tallies themselves (see CandumpLog#read).
+      def stretch(tally, time)
         # Logs are in time order: the last frame is the latest, except in
         # logs merged from several sources.
-        last = stats.last_time
-        if last.nil? then stats.first_time = stats.last_time = time
+        last = tally[LAST_TIME]
+        if last.nil? then tally[FIRST_TIME] = tally[LAST_TIME] = time
         elsif time >= last
           gap = time - last
-          stats.max_gap = gap if gap > stats.max_gap
-          stats.last_time = time
-        elsif time < stats.first_time then stats.first_time = time
+          tally[MAX_GAP] = gap if gap > tally[MAX_GAP]
+          tally[LAST_TIME] = time
+        elsif time < tally[FIRST_TIME] then tally[FIRST_TIME] = time
         end
       end
+
+      private
 
       def span(time)
         if @last_time.nil? then @first_time = @last_time = time

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'thor'
+require 'syskit/printable'
 require 'syskit/cli/command_table'
 
 module Syskit

@@ -1,15 +1,5 @@
 # frozen_string_literal: true
 
-require 'syskit/generators/app_generator'
-require 'syskit/generators/device_generator'
-require 'syskit/generators/bus_generator'
-require 'syskit/generators/orogen_generator'
-require 'syskit/generators/profile_generator'
-require 'syskit/generators/service_generator'
-require 'syskit/generators/composition_generator'
-require 'syskit/generators/orogen_conf_generator'
-require 'syskit/generators/task_library_generator'
-
 module Syskit
   # The `syskit` command line (see syskit/cli.rb), here given its `gen` subcommand.
   class CLI < Thor
@@ -19,6 +9,14 @@ module Syskit
     class Gen < Thor
       extend Help
       include Support
+
+      # Loaded when a generator runs (see Help#libraries).
+      GENERATORS = %w[app device bus orogen profile service composition orogen_conf task_library]
+                   .map { |name| "syskit/generators/#{name}_generator" }.freeze
+
+      def self.libraries(_command_name)
+        ['syskit', *GENERATORS]
+      end
 
       EXAMPLES = <<~TEXT
         Examples:

@@ -1,13 +1,17 @@
 # frozen_string_literal: true
 
-require 'delegate'
-
 module Syskit
   class CLI < Thor
     # How syskit's commands describe themselves (extended by `syskit`,
     # `syskit gen` and `syskit bus`): without Thor's own `tree` command,
     # and flags without the --no-/--skip- forms Thor adds to them.
     module Help
+      # What the command +command_name+ loads before it runs: the model
+      # layer, unless a command class says otherwise. Help loads nothing.
+      def libraries(_command_name)
+        %w[syskit]
+      end
+
       def printable_commands(all = true, subcommand = false) # rubocop:disable Style/OptionalBooleanParameter -- Thor's signature
         super.reject { |usage, _| usage.match?(/\A\S+(?: \S+)? tree\z/) }
       end
@@ -21,6 +25,7 @@ module Syskit
                              "runtime\n  hint: #{hint}"
         end
 
+        require 'syskit/naming'
         guess = Naming.suggest(command, all_commands.keys - ['tree']).first
         meant = guess ? " (did you mean 'syskit #{command_prefix}#{guess}'?)" : ''
         raise Thor::Error, "unknown command 'syskit #{full}'#{meant}\n  " \
@@ -41,14 +46,9 @@ module Syskit
       end
 
       def print_options(shell, options, group_name = nil)
+        # Loaded by the help of a command, which alone shows options.
+        require 'syskit/cli/help_flag'
         super(shell, options.map { |option| option.boolean? ? Flag.new(option) : option }, group_name)
-      end
-
-      # A boolean option as its help shows it: [--dry-run].
-      class Flag < SimpleDelegator
-        def usage(padding = 0)
-          __getobj__.usage(padding).gsub(/, \[--(?:no|skip)-[\w-]+\]/, '')
-        end
       end
     end
   end

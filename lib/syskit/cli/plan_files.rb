@@ -3,6 +3,7 @@
 require 'json'
 require 'syskit/network/plan_diff'
 require 'syskit/render/diff_text'
+require 'syskit/render/json'
 
 module Syskit
   class CLI < Thor

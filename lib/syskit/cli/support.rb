@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'thor'
+require 'syskit/errors'
 
 module Syskit
   class CLI < Thor
@@ -12,6 +13,17 @@ module Syskit
     # `file:line: message` then `  hint: ...`, with Ruby's backtrace only
     # under --trace, and exit status 1.
     module Support
+      # Thor runs every command through here: what the command needs is
+      # loaded first (see Help#libraries), so that `syskit help` and each
+      # command load only what they use. An unknown command (Thor's
+      # DynamicCommand) needs nothing to say so.
+      def invoke_command(command, *args)
+        unless command.name == 'help' || command.is_a?(Thor::DynamicCommand)
+          self.class.libraries(command.name).each { |path| require path }
+        end
+        super
+      end
+
       private
 
       # Runs the block; a Syskit error is printed for the user (paths

@@ -47,9 +47,13 @@ module Syskit
       # change a plan: those options are accepted and ignored.
       def use_deployment(*specs, prefix: nil, **options)
         location = Location.of_caller
-        # Ruby passes a trailing `Model => 'name'` as keywords.
-        mappings = options.reject { |key, _| key.is_a?(Symbol) }
-        check_options(options.keys.grep(Symbol), location)
+        # Ruby passes a trailing `Model => 'name'` as keywords. Most
+        # statements give no option: their keywords are all mappings.
+        mappings = options
+        if options.any? { |key, _| key.is_a?(Symbol) }
+          mappings = options.reject { |key, _| key.is_a?(Symbol) }
+          check_options(options.keys.grep(Symbol), location)
+        end
         specs.each { |spec| add_spec(spec, prefix, location) }
         mappings.each { |spec, value| add_mapping(spec, value, prefix, location) }
         self

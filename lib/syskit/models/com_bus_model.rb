@@ -75,14 +75,16 @@ module Syskit
       def extend_attached_device_configuration(&block)
         Arguments.block(block, statement: 'extend_attached_device_configuration',
                                example: 'extend_attached_device_configuration do dsl_attribute :can_id end')
-        @attached_device_configuration ||= DeviceConfigurationModule.new
+        @attached_device_configuration ||= DeviceConfigurationModule.new.tap { DataServiceModel.hierarchy_changed }
         @attached_device_configuration.module_eval(&block)
         @attached_device_configuration
       end
 
       def attached_device_configuration_modules
-        fullfilled_models.reverse.filter_map do |m|
-          m.instance_variable_get(:@attached_device_configuration) if m.is_a?(ComBusModel)
+        hierarchy_view(:attached_device_configuration_modules) do
+          fullfilled_models.reverse.filter_map do |m|
+            m.instance_variable_get(:@attached_device_configuration) if m.is_a?(ComBusModel)
+          end
         end
       end
 

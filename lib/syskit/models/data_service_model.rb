@@ -25,6 +25,17 @@ module Syskit
         'data service'
       end
 
+      # Bumped whenever a data service model gains a parent (+provides+) or
+      # a device configuration: the views cached on models (see
+      # #hierarchy_view) are then computed again.
+      def self.hierarchy_version
+        DataServiceModel.instance_variable_get(:@hierarchy_version) || 0
+      end
+
+      def self.hierarchy_changed
+        DataServiceModel.instance_variable_set(:@hierarchy_version, hierarchy_version + 1)
+      end
+
       # Defines the model +name+ in +namespace+ (the module the statement is
       # in), provides +root+, then evaluates the declaration block on it.
       def self.define(namespace, name, location:, root:, model_class: self, **options, &block)
@@ -167,6 +178,7 @@ module Syskit
         @parents[model] = adopted
         @fullfilled_models = nil
         @identity_mappings = nil
+        DataServiceModel.hierarchy_changed
         self
       end
 
@@ -206,6 +218,22 @@ module Syskit
             found ? at = found : chain.insert(at += 1, m)
           end
         end.freeze
+      end
+
+      # What the block computes from this model's hierarchy (frozen),
+      # computed again once any model's hierarchy changed: every device
+      # declaration asks its model and its bus model for their
+      # configuration modules, which do not change while a robot is
+      # declared.
+      def hierarchy_view(name)
+        version = DataServiceModel.hierarchy_version
+        views = (@hierarchy_views ||= {})
+        view = views[name]
+        return view.last if view && view.first == version
+
+        value = yield.freeze
+        views[name] = [version, value]
+        value
       end
 
       # Enumerates {#fullfilled_models}.

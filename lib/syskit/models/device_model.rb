@@ -25,7 +25,7 @@ module Syskit
       def extend_device_configuration(&block)
         Arguments.block(block, statement: 'extend_device_configuration',
                                example: 'extend_device_configuration do dsl_attribute :pgn end')
-        @device_configuration ||= DeviceConfigurationModule.new
+        @device_configuration ||= DeviceConfigurationModule.new.tap { DataServiceModel.hierarchy_changed }
         @device_configuration.module_eval(&block)
         @device_configuration
       end
@@ -33,8 +33,10 @@ module Syskit
       # The configuration modules of this model and the devices it provides,
       # the most generic first so that specific models override.
       def device_configuration_modules
-        fullfilled_models.reverse.filter_map do |m|
-          m.instance_variable_get(:@device_configuration) if m.is_a?(DeviceModel)
+        hierarchy_view(:device_configuration_modules) do
+          fullfilled_models.reverse.filter_map do |m|
+            m.instance_variable_get(:@device_configuration) if m.is_a?(DeviceModel)
+          end
         end
       end
 

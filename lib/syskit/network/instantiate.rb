@@ -25,6 +25,9 @@ module Syskit
         @drivers = Drivers.new(context)
         @stub_abstract = stub_abstract
         @building = []
+        # The requirements of the root tasks, to make each root once: a
+        # hash, since a profile of 10,000 devices has 10,000 roots.
+        @root_requirements = {}.compare_by_identity
         profile = context.profile
         @base = profile ? profile.dependency_injection_context : DependencyInjection::Context::EMPTY
       end
@@ -48,11 +51,12 @@ module Syskit
         end
 
         @root = requirement
-        return if @context.roots.any? { |t| t.requirement.equal?(requirement) }
+        return if @root_requirements.key?(requirement)
 
         context = @base.with(requirement.selections)
         task = instantiate(requirement, context, root_name(requirement), nil)
         @context.roots << task
+        @root_requirements[task.requirement] = true
       ensure
         @root = nil
       end

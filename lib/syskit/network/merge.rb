@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/network/kept_tasks'
+
 module Syskit
   module Network
     # Step 2: equal tasks made for different children become one, as
@@ -23,7 +25,7 @@ module Syskit
 
         replaced = {}.compare_by_identity
         loop do
-          inputs = input_sources(replaced)
+          inputs = input_sources(replaced, groups)
           break if groups.sum { |group| merge_group(group, inputs, replaced) }.zero?
 
           groups = groups.map { |g| g.reject { |t| replaced.key?(t) } }.select { |g| g.size > 1 }
@@ -39,22 +41,33 @@ module Syskit
              .values.select { |g| g.size > 1 }
       end
 
-      # For each task, its input ports' sources ([task, port] pairs), tasks
-      # already merged standing for the ones they replaced.
-      def input_sources(replaced)
+      # For each task of +groups+, its input ports' sources ([task, port]
+      # pairs), tasks already merged standing for the ones they replaced.
+      # Connections into other tasks are not resolved: most tasks of a
+      # large network merge with none.
+      def input_sources(replaced, groups)
+        wanted = {}.compare_by_identity
+        groups.each { |group| group.each { |task| wanted[task] = true } }
         sources = Hash.new { |h, task| h[task] = Hash.new { |ports, name| ports[name] = [] } }.compare_by_identity
         @context.compositions.each do |composition|
           composition.model.connections.each do |connection|
-            from = composition.resolve_child_port(connection.from)
-            to = composition.resolve_child_port(connection.to)
-            next unless from && to
+            into = composition.children_by_role[connection.to.child_name]
+            next unless into.is_a?(Composition) || wanted.key?(final(into, replaced))
 
-            source = [final(from[0], replaced).object_id, from[1]]
-            list = sources[final(to[0], replaced)][to[1]]
-            list << source unless list.include?(source)
+            add_source(sources, composition, connection, replaced)
           end
         end
         sources
+      end
+
+      def add_source(sources, composition, connection, replaced)
+        from = composition.resolve_child_port(connection.from)
+        to = composition.resolve_child_port(connection.to)
+        return unless from && to
+
+        source = [final(from[0], replaced).object_id, from[1]]
+        list = sources[final(to[0], replaced)][to[1]]
+        list << source unless list.include?(source)
       end
 
       def final(task, replaced)
@@ -63,20 +76,27 @@ module Syskit
       end
 
       # Merges what can be merged in +group+; returns how many tasks went.
+      # Each task merges into the first task kept before it whose inputs
+      # agree with its own (see #inputs), found through hashes (see
+      # KeptTasks) rather than by comparing it with every kept task: a
+      # group holds thousands of tasks when compositions differ only by
+      # what feeds them.
       def merge_group(group, inputs, replaced)
-        kept = []
+        kept = KeptTasks.new
         group.each do |task|
-          target = kept.find { |k| same_inputs?(k, task, inputs) }
-          target ? replaced[task] = target : kept << task
+          signature = inputs(task, inputs)
+          target = kept.first_agreeing(signature)
+          target ? replaced[task] = target : kept.add(task, signature)
         end
         group.size - kept.size
       end
 
-      def same_inputs?(one, other, inputs)
-        mine = inputs.fetch(one, {})
-        theirs = inputs.fetch(other, {})
-        (mine.keys & theirs.keys).all? do |port|
-          mine[port].sort == theirs[port].sort || one.find_port(port)&.multiplexes?
+      # The connected input ports of +task+ that do not multiplex, with
+      # their sources, sorted. Two tasks' inputs agree when every port both
+      # have is fed by the same sources (a multiplexing port takes any).
+      def inputs(task, inputs)
+        inputs.fetch(task, {}).each_with_object({}) do |(port, sources), signature|
+          signature[port] = sources.sort unless task.find_port(port)&.multiplexes?
         end
       end
 

@@ -183,10 +183,12 @@ module Syskit
                   (args.size == 1 ? args.first : args)
                 end
         dsl_attributes[attr] = value
-        # The frame that called the attribute's method: kept as Ruby gives
-        # it (a 10,000-device robot sets 10,000 can_ids), made a Location
-        # only when a check reports on the value.
-        (@dsl_attribute_frames ||= {})[attr] = caller_locations(2, 1).first
+        # The frame that called the attribute's method, if it is the user's
+        # (a Location: Ruby's frame objects would keep its backtrace alive,
+        # two objects the garbage collector cannot track cheaply, 20,000
+        # of them on a 10,000-device robot).
+        frame = caller_locations(2, 1).first
+        (@dsl_attribute_frames ||= {})[attr] = Location.user_frame?(frame) ? Location.from(frame) : nil
         self
       end
 
@@ -194,8 +196,7 @@ module Syskit
       # line), for the checks that judge its value; else where the device
       # is declared.
       def dsl_attribute_location(attr)
-        frame = @dsl_attribute_frames&.[](attr)
-        frame && Location.user_frame?(frame) ? Location.from(frame) : declared_at
+        @dsl_attribute_frames&.[](attr) || declared_at
       end
 
       # The value of an attribute called without arguments. In the robot

@@ -1,8 +1,6 @@
 # frozen_string_literal: true
 
 require 'compositions/composition_test_helper'
-require 'open3'
-require 'rbconfig'
 
 module Syskit
   # Composition and profile tests written as Syskit users write them, run
@@ -240,7 +238,7 @@ module Syskit
     end
 
     def syskit_test(app, *args)
-      Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'test', *args, chdir: app)
+      syskit_process('test', *args, chdir: app)
     end
 
     def test_composition_tests_run_with_the_stubs

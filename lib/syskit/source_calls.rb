@@ -28,28 +28,15 @@ module Syskit
     # when Ruby cannot parse it (its evaluation reports that).
     def find(source, names)
       names = names.map(&:to_s)
-      # A call has its name in the text: a source without any is not
-      # parsed (Ripper takes 0.4 s on a robot configuration of 10,000
-      # deployments, none of which registers an app).
-      return [] if names.none? { |name| source.include?(name) }
-
-      # Loaded here: most sources have no such call, and most commands
-      # parse none.
-      require 'ripper'
       found = []
-      walk(Ripper.sexp(source), names, found)
-      found.sort_by(&:line)
-    end
+      each_node(parse(source, names)) do |node|
+        name, arguments = SHAPES[node[0]]&.call(node)
+        next unless name.is_a?(Array) && name[0] == :@ident && names.include?(name[1])
 
-    def walk(node, names, found)
-      return unless node.is_a?(Array)
-
-      name, arguments = SHAPES[node[0]]&.call(node)
-      if name.is_a?(Array) && name[0] == :@ident && names.include?(name[1])
         first = arguments.is_a?(Array) && arguments[0] == :args_add_block ? arguments[1].first : nil
         found << Call.new(name[1], literal(first), name[2][0])
       end
-      node.each { |child| walk(child, names, found) }
+      found.sort_by(&:line)
     end
 
     # The values given to the attribute +name+ in +source+
@@ -57,22 +44,34 @@ module Syskit
     # or nil for a value that is not one of these literals.
     def assignments(source, name)
       name = name.to_s
-      return [] unless source.include?(name)
-
-      require 'ripper'
       found = []
-      walk_assignments(Ripper.sexp(source), name, found)
-      found
-    end
+      each_node(parse(source, [name])) do |node|
+        next unless assignment_of?(node, name)
 
-    def walk_assignments(node, name, found)
-      return unless node.is_a?(Array)
-
-      if assignment_of?(node, name)
         value = node[2]
         found << (value[1][1] == 'true' if value[0] == :var_ref && value[1][0] == :@kw)
       end
-      node.each { |child| walk_assignments(child, name, found) }
+      found
+    end
+
+    # Ruby's syntax tree of +source+, nil when the source names none of
+    # +names+: a call or an assignment has its name in the text, and a
+    # source without any is not parsed (Ripper takes 0.4 s on a robot
+    # configuration of 10,000 deployments, none of which registers an
+    # app). Ripper is loaded here: most commands parse no source.
+    def parse(source, names)
+      return if names.none? { |name| source.include?(name) }
+
+      require 'ripper'
+      Ripper.sexp(source)
+    end
+
+    # Every node of +tree+, depth first in source order.
+    def each_node(node, &block)
+      return unless node.is_a?(Array)
+
+      yield node
+      node.each { |child| each_node(child, &block) }
     end
 
     # [:assign, [:field, receiver, '.', [:@ident, name, position]], value]

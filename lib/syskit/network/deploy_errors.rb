@@ -44,8 +44,7 @@ module Syskit
           "on #{@context.robot_config}",
           location: device_location(requirement, task),
           hint: "add to config/robots/#{@context.robot_config.name}.rb: " \
-                "Syskit.conf.#{deploy_statement(task.model)} #{Naming.dsl_reference(task.model)} => '#{name}'" \
-                "#{alternatives}"
+                "#{deploy_statement(task.model, name)}#{alternatives}"
         )
       end
 
@@ -98,15 +97,16 @@ module Syskit
           'deploy one task per device (usually named after the device) and tell them apart ' \
             "with .prefer_deployed_tasks(/#{name}/)"
         else
-          "deploy another one (Syskit.conf.#{deploy_statement(task.model)} #{Naming.dsl_reference(task.model)} => " \
-            "'#{name}') and " \
+          "deploy another one (#{deploy_statement(task.model, name)}) and " \
             "#{prefer(task, requirement, "'#{name}'").sub(/\Achoose one/, 'choose it')}"
         end
       end
 
-      # How a robot configuration deploys a task of +model+.
-      def deploy_statement(model)
-        model <= RubyTaskContext ? 'use_ruby_tasks' : 'use_deployment'
+      # The statement of a robot configuration deploying a task of +model+
+      # as +name+.
+      def deploy_statement(model, name)
+        method = model <= RubyTaskContext ? 'use_ruby_tasks' : 'use_deployment'
+        "Syskit.conf.#{method} #{Naming.dsl_reference(model)} => '#{name}'"
       end
 
       def describe(task)

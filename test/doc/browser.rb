@@ -3,7 +3,6 @@
 require 'json'
 require 'tmpdir'
 require 'fileutils'
-require 'zlib'
 require 'base64'
 require 'timeout'
 require 'io/nonblock'
@@ -165,13 +164,33 @@ module Syskit
         FileUtils.rm_rf(@profile)
       end
 
-      # Whether a PNG shows something: more than 1 % of its pixels differ
-      # from its most common colour.
-      def self.blank?(png)
-        pixels = PNG.pixels(png)
-        counts = Hash.new(0)
-        pixels.each { |p| counts[p] += 1 }
-        (pixels.size - counts.values.max) < pixels.size / 100
+      # Whether +png+ (a screenshot) shows something: more than 1 % of its
+      # pixels differ from its most common colour. The browser decodes it,
+      # in the tab (on a canvas the page does not show).
+      def blank?(png)
+        pixels, most_common = evaluate(tab, <<~JS)
+          (async () => {
+            const image = new Image();
+            image.src = 'data:image/png;base64,#{Base64.strict_encode64(png)}';
+            await image.decode();
+            const canvas = document.createElement('canvas');
+            canvas.width = image.width;
+            canvas.height = image.height;
+            const context = canvas.getContext('2d');
+            context.drawImage(image, 0, 0);
+            const data = context.getImageData(0, 0, image.width, image.height).data;
+            const counts = new Map();
+            let most = 0;
+            for (let i = 0; i < data.length; i += 4) {
+              const colour = (data[i] << 16) | (data[i + 1] << 8) | data[i + 2];
+              const count = (counts.get(colour) || 0) + 1;
+              counts.set(colour, count);
+              if (count > most) most = count;
+            }
+            return [data.length / 4, most];
+          })()
+        JS
+        (pixels - most_common) < pixels / 100
       end
 
       private
@@ -219,67 +238,6 @@ module Syskit
           error = ERROR_EVENTS[m['method']].call(m['params'])
           errors << error if error
           true
-        end
-      end
-
-      # Enough of PNG to read what chromium writes: 8-bit RGB or RGBA,
-      # not interlaced.
-      module PNG
-        module_function
-
-        def pixels(png)
-          width, height, depth, color, _, _, interlace = png[16, 13].unpack('NNCCCCC')
-          raise Error, "unexpected PNG (depth #{depth}, colour #{color})" unless depth == 8 && [2, 6].include?(color)
-          raise Error, 'interlaced PNG' unless interlace.zero?
-
-          channels = color == 6 ? 4 : 3
-          rows = unfilter(Zlib::Inflate.inflate(idat(png)), width * channels, height, channels)
-          rows.flat_map { |row| row.each_slice(channels).to_a }
-        end
-
-        def idat(png)
-          at = 8
-          data = +''
-          while at < png.bytesize
-            length, type = png[at, 8].unpack('Na4')
-            data << png[at + 8, length] if type == 'IDAT'
-            at += 12 + length
-          end
-          data
-        end
-
-        def unfilter(data, stride, height, bpp)
-          previous = Array.new(stride, 0)
-          Array.new(height) do |y|
-            filter = data.getbyte(y * (stride + 1))
-            line = data.byteslice((y * (stride + 1)) + 1, stride).bytes
-            line.each_index do |i|
-              left = i >= bpp ? line[i - bpp] : 0
-              corner = i >= bpp ? previous[i - bpp] : 0
-              line[i] = (line[i] + predict(filter, left, previous[i], corner)) & 0xff
-            end
-            previous = line
-          end
-        end
-
-        def predict(filter, left, above, corner)
-          case filter
-          when 0 then 0
-          when 1 then left
-          when 2 then above
-          when 3 then (left + above) / 2
-          else paeth(left, above, corner)
-          end
-        end
-
-        def paeth(left, above, corner)
-          estimate = left + above - corner
-          to_left = (estimate - left).abs
-          to_above = (estimate - above).abs
-          to_corner = (estimate - corner).abs
-          return left if to_left <= to_above && to_left <= to_corner
-
-          to_above <= to_corner ? above : corner
         end
       end
     end

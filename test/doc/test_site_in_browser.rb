@@ -66,10 +66,18 @@ module Syskit
           assert_link_resolves(link, path)
           checked += 1
         end
-        refute SelfTest::Browser.blank?(page.screenshot(scale: 0.25)), "#{path} looks blank"
+        refute browser.blank?(page.screenshot(scale: 0.25)), "#{path} looks blank"
         keep_screenshot(page, keep, path) if keep
       end
       assert_operator checked, :>, 300
+    end
+
+    # The check above, on a page that shows nothing and on one that shows
+    # a few words.
+    def test_a_blank_page_looks_blank_and_a_page_with_words_does_not
+      assert browser.blank?(browser.open('data:text/html,<body></body>').screenshot(scale: 0.25))
+      words = browser.open('data:text/html,<p style="font-size:100px">A GPS on a serial line</p>')
+      refute browser.blank?(words.screenshot(scale: 0.25))
     end
 
     def test_the_filter_narrows_the_index

@@ -250,14 +250,11 @@ module Syskit
     method_option :app, type: :string, desc: 'the app directory'
     stop_on_unknown_option! :test
     def test(*args)
-      status = 0
       reporting_errors(-> { Dir.pwd }) do
         parsed = Test::Runner.parse(args)
         root = parsed.app ? App.check_root(parsed.app) : app_root
-        files = Test::Runner.test_files(root, parsed.files)
-        status = Test::Runner.spawn(root, files, parsed.minitest)
+        Test::Runner.run(root, Test::Runner.test_files(root, parsed.files), parsed.minitest)
       end
-      exit(status) unless status.zero?
     end
 
     private

@@ -11,9 +11,10 @@ module Syskit
     # loaded, so that they need no require; minitest's own options
     # (-n/--name, -e/--exclude, -s/--seed, -v/--verbose) go to minitest.
     #
-    # The tests run in a process of their own (#spawn): the files are
-    # loaded there by #run_files, then minitest runs at exit, as it does
-    # for any minitest file, and its status is the process's.
+    # `syskit test` runs the tests in its own process (#run), `rake test`
+    # in a process of its own (#spawn, as Rake's test task does): the files
+    # are loaded by #run_files, then minitest runs at exit, as it does for
+    # any minitest file, and its status is the process's.
     class Runner
       # minitest's options, and whether each takes a value.
       MINITEST_OPTIONS = { '-n' => true, '--name' => true, '-e' => true, '--exclude' => true,
@@ -89,6 +90,14 @@ module Syskit
             ).relative_path(Dir.pwd)}"
           )
         end
+      end
+
+      # Loads the tests of the app at +root+ in this process, from the app's
+      # directory; minitest runs them when the process exits.
+      def self.run(root, files, minitest)
+        ENV['SYSKIT_APP'] = root
+        Dir.chdir(root)
+        run_files([*files, '--', *minitest])
       end
 
       # Runs the tests of the app at +root+ in a new process; returns its

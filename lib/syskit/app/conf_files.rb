@@ -12,13 +12,15 @@ module Syskit
       # nil when there is none. As in Rock, the files of the bundles and of
       # the app are all read, the app's last: its sections replace the
       # bundles' of the same name (or merge into them, with merge:true).
+      #
+      # Each file is read once: one that cannot be read raises the same
+      # error to every task using it.
       def conf_file(task_model)
         @conf_files ||= {}
-        return @conf_files[task_model.name] if @conf_files.key?(task_model.name)
+        file = @conf_files.fetch(task_model.name) { @conf_files[task_model.name] = read_conf_file(task_model.name) }
+        raise file if file.is_a?(Syskit::Error)
 
-        file = "#{task_model.name}.yml"
-        paths = bundle_roots.map { |r| File.join(r, 'config', 'orogen', file) }.select { |p| File.file?(p) }
-        @conf_files[task_model.name] = paths.reverse.reduce(nil) { |base, path| Config::ConfFile.new(path, base: base) }
+        file
       end
 
       # Merges +data+ into the sections +names+ of +task_model+ (made when
@@ -33,6 +35,18 @@ module Syskit
       def clear_conf_stubs
         (@stubbed_conf || []).each { |name| @conf_files.delete(name) }
         @stubbed_conf = nil
+      end
+
+      private
+
+      # The files of +model_name+, the app's over its bundles', or the error
+      # that reading one raised.
+      def read_conf_file(model_name)
+        file = "#{model_name}.yml"
+        paths = bundle_roots.map { |r| File.join(r, 'config', 'orogen', file) }.select { |p| File.file?(p) }
+        paths.reverse.reduce(nil) { |base, path| Config::ConfFile.new(path, base: base) }
+      rescue Syskit::Error => e
+        e
       end
     end
   end

@@ -25,7 +25,7 @@ module Syskit
     # and `bus` are groups: their commands say what they need.
     LIBRARIES = {
       'version' => [], 'gen' => [], 'bus' => [],
-      'diff' => %w[syskit syskit/cli/plan_files], 'check' => %w[syskit syskit/check],
+      'diff' => %w[syskit syskit/cli/plan_files], 'check' => %w[syskit syskit/check set],
       'doc' => %w[syskit syskit/doc], 'test' => %w[syskit syskit/test/runner]
     }.freeze
 
@@ -139,7 +139,7 @@ module Syskit
     no_commands do
       # The renderer of +format+ (a key of RENDERERS).
       def renderer(format)
-        require "syskit/render/#{format}"
+        require_once "syskit/render/#{format}"
         Render.const_get(RENDERERS.fetch(format))
       end
 
@@ -275,7 +275,7 @@ module Syskit
     def read_old_plan
       return unless options[:diff]
 
-      require 'syskit/cli/plan_files'
+      require_once 'syskit/cli/plan_files'
       unless %w[text json].include?(options[:format])
         raise Error.new("--diff prints the difference as text or json, not #{options[:format]}",
                         hint: 'leave out --format, or give --format json')
@@ -304,7 +304,7 @@ module Syskit
     # (syskit check reports it as an error): one line per bus on stderr
     # says so and which command shows why.
     def note_missed_deadlines(profile)
-      require 'syskit/cli/bus_timing'
+      require_once 'syskit/cli/bus_timing'
       style = Style.for($stderr)
       BusTiming.missed_deadlines(profile).each do |bus, missed, total|
         warn style.warning("#{bus}: #{Naming.count(missed, 'frame')} of #{total} can miss " \
@@ -314,7 +314,6 @@ module Syskit
     end
 
     def print_check(app, report)
-      require 'set'
       return print_check_json(app, report) if options[:format] == 'json'
 
       # Files in the order their first problem was found, which puts the
@@ -340,7 +339,7 @@ module Syskit
     end
 
     def print_check_json(app, report)
-      require 'json'
+      require_once 'json'
       puts ::JSON.pretty_generate('app' => app.name, 'errors' => report.errors.size,
                                   'warnings' => report.warnings.size,
                                   'problems' => report.problems.map { |p| p.to_h(app.root) })

@@ -44,7 +44,7 @@ module Syskit
       method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
       method_option :strict, type: :boolean, default: false, desc: 'fail on malformed lines'
       def replay(profile_name, log_path)
-        require 'syskit/bus/replay'
+        require_once 'syskit/bus/replay'
         with_plan(profile_name) do |dispatcher, source, declared_bus|
           replay = ::Syskit::Bus::Replay.new(dispatcher, log_path, interface: options[:interface], source: source,
                                                                    declared_bus: declared_bus)
@@ -104,7 +104,7 @@ module Syskit
       TEXT
       method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
       def timing(profile_name = nil)
-        require 'syskit/cli/bus_timing'
+        require_once 'syskit/cli/bus_timing'
         with_app(robots: [options[:robot]]) do |app|
           profile = find_profile(app, profile_name)
           # The traffic is the profile's, whatever the robot; a robot that
@@ -120,7 +120,7 @@ module Syskit
 
       # The monitor needs the ffi gem, which only it loads.
       def load_monitor
-        require 'syskit/bus/monitor'
+        require_once 'syskit/bus/monitor'
       rescue LoadError => e
         report_error(Error.new("syskit bus monitor needs the ffi gem: #{e.message}",
                                hint: 'run bundle install (or gem install ffi)'), nil)
@@ -132,7 +132,7 @@ module Syskit
       def with_plan(profile_name)
         # The bus tools are loaded by their commands only: `syskit plan`
         # does not pay for them (nor for ffi, needed by monitor alone).
-        require 'syskit/bus/dispatcher'
+        require_once 'syskit/bus/dispatcher'
         with_app(robots: [options[:robot]]) do |app|
           profile = find_profile(app, profile_name)
           plan = Network::Generator.plan_profile(app, profile, robot: options[:robot]).plan
@@ -146,10 +146,10 @@ module Syskit
 
       def print_report(report)
         if options[:format] == 'json'
-          require 'json'
+          require_once 'json'
           puts ::JSON.pretty_generate(report.to_h)
         else
-          require 'syskit/bus/report_text'
+          require_once 'syskit/bus/report_text'
           $stdout.write(::Syskit::Bus::ReportText.render(report))
         end
       end

@@ -19,12 +19,26 @@ module Syskit
       # DynamicCommand) needs nothing to say so.
       def invoke_command(command, *args)
         unless command.name == 'help' || command.is_a?(Thor::DynamicCommand)
-          self.class.libraries(command.name).each { |path| require path }
+          self.class.libraries(command.name).each { |path| Support.require_once(path) }
         end
         super
       end
 
+      # Requires +path+ the first time only. Ruby's require of a file it has
+      # loaded is not free once an app has marked its own files loaded: it
+      # indexes its loaded features again, resolving the real path of each
+      # (thousands of system calls for each command run in one process, as
+      # tests run them).
+      def self.require_once(path)
+        (@required ||= {})[path] ||= require(path) || true
+      end
+
       private
+
+      # What a command loads as it goes, once (see Support.require_once).
+      def require_once(path)
+        Support.require_once(path)
+      end
 
       # Runs the block; a Syskit error is printed for the user (paths
       # relative to what +root+ returns), any other exception is reported as

@@ -13,6 +13,7 @@ require 'open3'
 require 'rbconfig'
 require 'stringio'
 require 'tmpdir'
+require_relative 'suite_runner'
 
 module Syskit
   # Helpers of the gem's own test suite.
@@ -202,34 +203,6 @@ end
 
 Minitest::Test.include(Syskit::SelfTest)
 
-module Syskit
-  module SelfTest
-    # Tests that only run syskit (or rake, gem, bundle) in processes of
-    # their own declare `parallelize_me!`: they spend their time waiting on
-    # those processes. minitest runs such tests after the others; queued
-    # first, they run on the machine's other core while this process runs
-    # the tests that load apps in it (which share globals and run one at a
-    # time). The suite takes the time of the longer of the two.
-    module ProcessTestsFirst
-      def __run(reporter, options)
-        parallel, serial = Minitest::Runnable.runnables.shuffle.partition { |s| s.test_order == :parallel }
-        parallel.map { |suite| suite.run(reporter, options) } + serial.map { |suite| suite.run(reporter, options) }
-      end
-    end
-
-    # With tests in parallel threads, the other tests record their results
-    # under the reporter's lock too (minitest's parallel tests do).
-    module LockedRecords
-      def run_one_method(klass, method_name, reporter)
-        reporter.synchronize { reporter.prerecord(klass, method_name) }
-        result = Minitest.run_one_method(klass, method_name)
-        reporter.synchronize { reporter.record(result) }
-      end
-    end
-  end
-end
-
-Minitest.singleton_class.prepend(Syskit::SelfTest::ProcessTestsFirst)
-Minitest::Runnable.singleton_class.prepend(Syskit::SelfTest::LockedRecords)
+Syskit::SelfTest::SuiteRunner.install
 # Computed before any test runs, from the environment the suite started in.
 Syskit::SelfTest.child_env

@@ -21,6 +21,8 @@ module Syskit
   # `ruby -Ilib -Itest test/test_broken_corpus.rb` ends with a table of the
   # failing cases: what was expected and what was printed.
   class TestBrokenCorpus < Minitest::Test
+    extend SelfTest::Long
+
     CORPUS = File.expand_path('fixtures/broken', __dir__)
     BACKTRACE = /\.rb:\d+:in `/
     HINT = /\A  hint: \S/

@@ -7,7 +7,7 @@ module Syskit
   # (slave devices and their lookups, each_attached_device on a bus
   # driver), through `require 'syskit/test'` in an app, as users run it.
   class TestDeviceApiHarness < Minitest::Test
-    # Processes only: run beside the in-process tests (see SelfTest::ProcessTestsFirst).
+    # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
     parallelize_me!
 
     def test_the_device_api_app_tests_pass

@@ -19,10 +19,11 @@ module Syskit
   #
   # In the suite, the iterations run in a process of their own, beside the
   # tests that load apps in the suite's process (see
-  # SelfTest::ProcessTestsFirst); that process runs this file with
+  # SelfTest::SuiteRunner); that process runs this file with
   # SYSKIT_FUZZ_IN_PROCESS set.
   class TestFuzz < Minitest::Test
     parallelize_me! unless ENV['SYSKIT_FUZZ_IN_PROCESS']
+    extend SelfTest::Long
 
     SEED = Integer(ENV.fetch('SYSKIT_FUZZ_SEED', '20_250_601').delete('_'))
     ITERATIONS = Integer(ENV.fetch('SYSKIT_FUZZ_ITERATIONS', '450'))

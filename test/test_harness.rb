@@ -6,7 +6,7 @@ module Syskit
   # `require 'syskit/test'`, `syskit test` and `rake test` in apps, run as
   # users run them: in a separate process.
   class TestHarness < Minitest::Test
-    # Processes only: run beside the in-process tests (see SelfTest::ProcessTestsFirst).
+    # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
     parallelize_me!
 
     def syskit_test(app, *files)

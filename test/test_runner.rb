@@ -6,7 +6,7 @@ module Syskit
   # `syskit test` running test files as Syskit writes them (SPEC 12):
   # test/fixtures/rock/rover/test has them in each of Syskit's forms.
   class TestRunner < Minitest::Test
-    # Processes only: run beside the in-process tests (see SelfTest::ProcessTestsFirst).
+    # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
     parallelize_me!
 
     ROVER = File.join(FIXTURES, 'rock', 'rover')

@@ -8,6 +8,8 @@ require 'rbconfig'
 module Syskit
   # bin/syskit as users run it (SPEC 10).
   class TestCLI < Minitest::Test
+    extend SelfTest::Long
+
     EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
     BACKTRACE = /\.rb:\d+:in `/
 

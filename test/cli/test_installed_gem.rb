@@ -10,8 +10,9 @@ module Syskit
   # new app made by either, whose tests run with `rake test` and `bundle
   # exec rake test`, as `gen app` tells.
   class TestInstalledGem < Minitest::Test
-    # Processes only: run beside the in-process tests (see SelfTest::ProcessTestsFirst).
+    # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
     parallelize_me!
+    extend SelfTest::Long
 
     def setup
       @tmp = Dir.mktmpdir('syskit-gem')

@@ -9,6 +9,8 @@ module Syskit
   # file nothing requires is not loaded, and its problems are not the
   # tests'. syskit check still loads, and reports, every file.
   class TestAutoLoadModels < Minitest::Test
+    # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
+    parallelize_me!
     FILES = {
       'config/syskit.yml' => "name: Dock\n",
       'config/init.rb' => <<~RUBY,

@@ -8,6 +8,9 @@ module Syskit
   class TestCompositionHarness < Minitest::Test
     include CompositionTestHelper
 
+    # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
+    parallelize_me!
+
     FOLLOW = <<~RUBY
       require 'models/devices/rover'
       using_task_library 'rig'

@@ -6,6 +6,7 @@ module Syskit
   # `syskit doc` where things go wrong, and the site's pages for what the
   # example app does not show.
   class TestDocCommand < Minitest::Test
+    extend SelfTest::Long
     include SelfTest::SiteHelper
 
     def teardown

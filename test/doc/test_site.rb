@@ -6,6 +6,7 @@ module Syskit
   # `syskit doc` on the example app and on small apps, read from the files
   # it writes (the browser tests are in test_site_in_browser.rb).
   class TestDocSite < Minitest::Test
+    extend SelfTest::Long
     include SelfTest::SiteHelper
 
     def test_it_prints_where_the_site_is

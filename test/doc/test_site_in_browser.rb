@@ -13,6 +13,7 @@ module Syskit
   # look at.
   class TestDocSiteInBrowser < Minitest::Test
     include SelfTest::SiteHelper
+    extend SelfTest::Long
 
     # One browser for the tests of this class, closed after the last one
     # (an idle browser left running would slow the timing-sensitive tests

@@ -10,6 +10,7 @@ module Syskit
   # `syskit gen app|dev|bus|orogen|profile` as users run it (SPEC 10): the
   # files follow the app's conventions, load, and their tests pass.
   class TestGen < Minitest::Test
+    extend SelfTest::Long
     include GenTestHelpers
 
     MY_LIB = <<~RUBY

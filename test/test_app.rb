@@ -86,6 +86,21 @@ module Syskit
       assert_equal 'can0', MyApp::Profiles::Base.can0_dev.device.name
     end
 
+    # An unloaded app's models and types can be freed: a process that loads
+    # apps one after another (a test run, syskit test) does not grow with
+    # each. The bundled base typekit gives its types methods whose blocks
+    # outlive the app in Ruby's method caches; they must not hold the app's
+    # type registry.
+    def test_unloaded_apps_are_freed
+      registries = lambda do
+        3.times { GC.start }
+        ObjectSpace.each_object(Types::Registry).count
+      end
+      before = registries.call
+      5.times { App.new(fixture('seed', 'can_bus')).load!.unload }
+      assert_operator registries.call - before, :<=, 1
+    end
+
     def test_two_apps_cannot_be_loaded_at_once
       load_app(fixture('seed', 'can_bus'))
       error = assert_raises(Error) { App.new(fixture('seed', 'demux')).activate }

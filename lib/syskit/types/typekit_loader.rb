@@ -24,6 +24,10 @@ module Syskit
           @loader = loader
         end
 
+        def close
+          @loader = nil
+        end
+
         def struct(name = nil, &block)
           name = type_name(name, 'struct', "struct 'Device' do field 'id', '/uint32_t' end")
           Arguments.block(block, statement: "struct '#{name}'", error_class: TypeError,
@@ -131,8 +135,16 @@ module Syskit
         @importer = importer
       end
 
+      # The DSL forgets this loader once the file is read: the blocks of
+      # the file live on in the methods it gives types (specialize_model's
+      # define_method), and through the DSL they would keep the registry,
+      # with all its types, for as long as Ruby keeps those methods (its
+      # method caches outlive an unloaded app).
       def load(path)
-        UserCode.evaluate(path, DSL.new(self), error_class: TypeError)
+        dsl = DSL.new(self)
+        UserCode.evaluate(path, dsl, error_class: TypeError)
+      ensure
+        dsl.close
       end
 
       def define(relative)

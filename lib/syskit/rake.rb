@@ -15,9 +15,7 @@ module Syskit
         root = Rake.application.original_dir
         files = ENV['TEST'] ? [ENV['TEST']] : []
         options = Shellwords.split(ENV.fetch('TESTOPTS', ''))
-        status = Test::Runner.spawn(root, Test::Runner.test_files(root, files, pwd: root),
-                                    Test::Runner.parse(options).minitest)
-        exit(status) unless status.zero?
+        Test::Runner.run(root, Test::Runner.test_files(root, files, pwd: root), Test::Runner.parse(options).minitest)
       rescue Syskit::Error => e
         warn e.report(root)
         exit 1

@@ -1,6 +1,5 @@
 # frozen_string_literal: true
 
-require 'rbconfig'
 require 'syskit/errors'
 
 module Syskit
@@ -11,10 +10,10 @@ module Syskit
     # loaded, so that they need no require; minitest's own options
     # (-n/--name, -e/--exclude, -s/--seed, -v/--verbose) go to minitest.
     #
-    # `syskit test` runs the tests in its own process (#run), `rake test`
-    # in a process of its own (#spawn, as Rake's test task does): the files
-    # are loaded by #run_files, then minitest runs at exit, as it does for
-    # any minitest file, and its status is the process's.
+    # `syskit test` and `rake test` run the tests in their own process
+    # (#run): the files are loaded by #run_files, then minitest runs at
+    # exit, as it does for any minitest file, and its status is the
+    # process's.
     class Runner
       # minitest's options, and whether each takes a value.
       MINITEST_OPTIONS = { '-n' => true, '--name' => true, '-e' => true, '--exclude' => true,
@@ -100,18 +99,8 @@ module Syskit
         run_files([*files, '--', *minitest])
       end
 
-      # Runs the tests of the app at +root+ in a new process; returns its
-      # exit status.
-      def self.spawn(root, files, minitest)
-        lib = File.expand_path('../..', __dir__)
-        script = "require 'syskit/test/runner'; Syskit::Test::Runner.run_files(ARGV)"
-        env = { 'SYSKIT_APP' => root }
-        ok = system(env, RbConfig.ruby, '-I', lib, '-e', script, *files, '--', *minitest, chdir: root)
-        ok.nil? ? 1 : Process.last_status.exitstatus || 1
-      end
-
-      # In the test process: sets the harness up, loads the files given
-      # before '--', and leaves minitest the options given after it.
+      # Sets the harness up, loads the files given before '--', and leaves
+      # minitest the options given after it.
       def self.run_files(argv)
         separator = argv.index('--') || argv.size
         files = argv[0...separator]

@@ -50,13 +50,7 @@ module Syskit
       assert_match(/^a plain test#test_0001_runs = /, out)
     end
 
-    def test_a_missing_file_an_unknown_option_and_a_broken_test_file_are_located_errors
-      _, err, status = syskit_test('test/test_nothing.rb', chdir: ROVER)
-      assert_equal 1, status.exitstatus
-      assert_match(%r{\Atest/test_nothing.rb:1: no test file 'test/test_nothing.rb'\n  hint: }, err)
-      _, err, status = syskit_test('--sede', '3', chdir: ROVER)
-      assert_equal 1, status.exitstatus
-      assert_match(/\Asyskit test does not know the option '--sede'\n  hint: minitest's options/, err)
+    def test_a_broken_test_file_is_a_located_error
       app = write_app({ 'config/syskit.yml' => "name: Plain\n",
                         'test/test_broken.rb' => "describe 'x' do\n  it 'y' do\n    assert(\n  end\nend\n",
                         'test/test_typo.rb' => "using_task_library 'canbs'\n" })
@@ -68,22 +62,6 @@ module Syskit
           assert_match message, err
           refute_match BACKTRACE, err
         end
-    end
-
-    # Values minitest would stop on with a backtrace, or an option taken
-    # for a pattern, are refused before the tests start.
-    def test_minitest_option_values_are_checked
-      { %w[-n] => "-n needs a pattern\n  hint: e.g. syskit test -n /configure/ runs the tests whose name matches",
-        %w[-e --app .] => "-e needs a pattern before '--app'\n  hint: e.g. syskit test -e /configure/ leaves out",
-        %w[-s abc] => "-s takes the seed of a run, an integer, not 'abc'\n  hint: e.g. syskit test -s 42: minitest " \
-                      "prints each run's seed",
-        %w[--seed=x] => "--seed takes the seed of a run, an integer, not 'x'\n  hint: ",
-        %w[--seed] => "--seed takes the seed of a run, an integer\n  hint: " }.each do |args, message|
-        out, err, status = syskit_test(*args, chdir: ROVER)
-        assert_equal [1, ''], [status.exitstatus, out], args.join(' ')
-        assert err.start_with?(message), "#{args.join(' ')}: #{err}"
-        refute_match BACKTRACE, err
-      end
     end
 
     # exit in a test ended the run before minitest's report: the exit
@@ -139,6 +117,37 @@ module Syskit
       assert_equal 1, status.exitstatus
       assert_match(%r{^MyApp::Profiles::Base#test_0001_deploys \[test/profiles/test_base.rb:4\]:$}, out)
       assert_match(%r{^models/profiles/base.rb:9: no deployed task can run imu::Task}, out)
+    end
+  end
+
+  # What syskit test refuses before any test runs, in this process.
+  class TestRunnerArguments < Minitest::Test
+    ROVER = TestRunner::ROVER
+    BACKTRACE = TestRunner::BACKTRACE
+
+    def test_a_missing_file_and_an_unknown_option_are_located_errors
+      _, err, status = run_cli('test', 'test/test_nothing.rb', chdir: ROVER)
+      assert_equal 1, status
+      assert_match(%r{\Atest/test_nothing.rb:1: no test file 'test/test_nothing.rb'\n  hint: }, err)
+      _, err, status = run_cli('test', '--sede', '3', chdir: ROVER)
+      assert_equal 1, status
+      assert_match(/\Asyskit test does not know the option '--sede'\n  hint: minitest's options/, err)
+    end
+
+    # Values minitest would stop on with a backtrace, or an option taken
+    # for a pattern, are refused before the tests start.
+    def test_minitest_option_values_are_checked
+      { %w[-n] => "-n needs a pattern\n  hint: e.g. syskit test -n /configure/ runs the tests whose name matches",
+        %w[-e --app .] => "-e needs a pattern before '--app'\n  hint: e.g. syskit test -e /configure/ leaves out",
+        %w[-s abc] => "-s takes the seed of a run, an integer, not 'abc'\n  hint: e.g. syskit test -s 42: minitest " \
+                      "prints each run's seed",
+        %w[--seed=x] => "--seed takes the seed of a run, an integer, not 'x'\n  hint: ",
+        %w[--seed] => "--seed takes the seed of a run, an integer\n  hint: " }.each do |args, message|
+        out, err, status = run_cli('test', *args, chdir: ROVER)
+        assert_equal [1, ''], [status, out], args.join(' ')
+        assert err.start_with?(message), "#{args.join(' ')}: #{err}"
+        refute_match BACKTRACE, err
+      end
     end
   end
 end

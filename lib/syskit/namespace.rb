@@ -50,6 +50,15 @@ module Syskit
        names.empty? ? "nothing is registered under #{self}" : "known under #{self}: #{names.join(', ')}"]
     end
 
+    # Forgets the entries, here and below: after an app is unloaded, Ruby's
+    # method caches (in code that called +OroGen.x+) may keep this module
+    # for a while, and it must not keep the app's models then.
+    def forget
+      @entries.each_value { |value| value.forget if value.is_a?(Namespace) }
+      @entries.clear
+      constants(false).each { |constant| remove_const(constant) }
+    end
+
     # The constant an entry called +name+ is reachable as ('gps_ublox' is
     # GpsUblox), nil when it cannot be one.
     def self.constant_for(name)
@@ -63,7 +72,10 @@ module Syskit
       @entries[name] = value
       # An entry never hides a public method every module has (name, hash,
       # ...): it stays reachable as a constant and through #entry.
-      define_singleton_method(name) { value } if name.match?(/\A[A-Za-z_]\w*\z/) && !Module.public_method_defined?(name)
+      # The method reads the entry rather than keeping it (see #forget).
+      if name.match?(/\A[A-Za-z_]\w*\z/) && !Module.public_method_defined?(name)
+        define_singleton_method(name) { @entries.fetch(name) }
+      end
       constant = Namespace.constant_for(name)
       const_set(constant, value) if constant && !const_defined?(constant, false)
       value

@@ -72,7 +72,10 @@ module Syskit
         (Object.constants - @constants_before).each do |const|
           Object.send(:remove_const, const) if owned_constant?(const)
         end
-        constants.each_key { |c| Object.send(:remove_const, c) if Object.const_defined?(c, false) }
+        constants.each do |name, value|
+          Object.send(:remove_const, name) if Object.const_defined?(name, false)
+          value.forget if value.is_a?(Namespace)
+        end
         $LOADED_FEATURES.reject! { |f| owned_file?(f) }
         (@first + @last).each { |dir| $LOAD_PATH.delete(dir) }
         Models::DataServiceModel.forget_submodels_of_roots

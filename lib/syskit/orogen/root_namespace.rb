@@ -11,6 +11,11 @@ module Syskit
         const_set(:Spec, Compat::OrogenSpec)
       end
 
+      def forget
+        super
+        @loader = nil
+      end
+
       # The task model called +name+ ('logger::Logger'), as Syskit's
       # OroGen.syskit_model_by_orogen_name; its library must be loaded.
       def syskit_model_by_orogen_name(name)

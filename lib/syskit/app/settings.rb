@@ -85,7 +85,7 @@ module Syskit
         raise shape_error('config/syskit.yml must map settings to values', 1) unless data.is_a?(Hash)
 
         unknown = data.keys - KEYS
-        raise shape_error("unknown setting '#{unknown.first}'", line_of(unknown.first.to_s)) unless unknown.empty?
+        raise shape_error("unknown setting #{shown_key(unknown.first)}", line_of(unknown.first.to_s)) unless unknown.empty?
 
         data
       end
@@ -129,6 +129,13 @@ module Syskit
 
       def shape_error(message, line, hint: "settings: #{KEYS.join(', ')}")
         FileLoadError.new(message, location: Location.new(path, line), hint: hint)
+      end
+
+      # A key as the user wrote it; bytes that are not text (a !!binary
+      # key) are shown escaped.
+      def shown_key(key)
+        text = key.to_s.dup.force_encoding(Encoding::UTF_8)
+        text.valid_encoding? ? "'#{text}'" : text.dump
       end
 
       def line_of(key)

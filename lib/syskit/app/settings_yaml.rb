@@ -86,12 +86,17 @@ module Syskit
         keys.reduce(nil) do |_, key|
           return nil unless node.is_a?(Psych::Nodes::Mapping)
 
-          pair = node.children.each_slice(2).find { |k, _| k.is_a?(Psych::Nodes::Scalar) && k.value == key }
+          pair = node.children.each_slice(2).find { |k, _| k.is_a?(Psych::Nodes::Scalar) && key_value(k) == key }
           return nil unless pair
 
           node = pair.last
           pair
         end
+      end
+
+      # A key as the loaded data has it: a !!binary key is decoded.
+      def key_value(scalar)
+        scalar.tag&.end_with?(':binary') ? scalar.value.unpack1('m') : scalar.value
       end
     end
   end

@@ -85,7 +85,8 @@ module Syskit
         raise shape_error('config/syskit.yml must map settings to values', 1) unless data.is_a?(Hash)
 
         unknown = data.keys - KEYS
-        raise shape_error("unknown setting #{shown_key(unknown.first)}", line_of(unknown.first.to_s)) unless unknown.empty?
+        key = unknown.first
+        raise shape_error("unknown setting #{shown_key(key)}", line_of(key.to_s)) if key
 
         data
       end

@@ -85,8 +85,10 @@ module Syskit
         raise shape_error('config/syskit.yml must map settings to values', 1) unless data.is_a?(Hash)
 
         unknown = data.keys - KEYS
-        key = unknown.first
-        raise shape_error("unknown setting #{shown_key(key)}", line_of(key.to_s)) if key
+        unless unknown.empty?
+          key = unknown.first
+          raise shape_error("unknown setting #{shown_key(key)}", line_of(key.to_s))
+        end
 
         data
       end

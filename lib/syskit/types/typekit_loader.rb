@@ -144,7 +144,7 @@ module Syskit
         dsl = DSL.new(self)
         UserCode.evaluate(path, dsl, error_class: TypeError)
       ensure
-        dsl.close
+        dsl&.close
       end
 
       def define(relative)

@@ -89,8 +89,10 @@ module Syskit
       # (a page a test navigated to by a click).
       def open(url)
         session = tab
-        # Another fragment of the page shown would not load it again.
-        open('about:blank') if evaluate(session, "location.href.split('#')[0]") == url.split('#').first
+        # Another fragment of the page shown would not load it again (an
+        # empty page always loads a new document).
+        shown = evaluate(session, "location.href.split('#')[0]")
+        open('about:blank') if url != 'about:blank' && shown == url.split('#').first
         evaluate(session, 'window.syskitPrevious = true')
         collect_errors(session, []) # the previous page's
         command('Page.navigate', { url: url }, session: session)

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative 'site_helper'
+require 'uri'
 
 module Syskit
   # `syskit doc` on the example app and on small apps, read from the files
@@ -88,6 +89,20 @@ module Syskit
         refs = REXML::XPath.match(doc, '//@href | //@src | //@xlink:href').map(&:value)
         assert_empty refs.grep(%r{\A(?:[a-z]+:)?//}i), "#{path} refers to the network"
       end
+    end
+
+    # Every link, style sheet and script of every page (anchors of the HTML
+    # and of the plan's SVG) leads to a file of the site, and to an id of
+    # that page when it names one. The browser test visits a page of each
+    # kind; this one reads them all.
+    def test_every_reference_of_every_page_resolves_in_the_site
+      dir = example_site
+      ids = Hash.new { |known, target| known[target] = REXML::XPath.match(page(target, dir), '//@id').map(&:value) }
+      checked = html_pages(dir).sum do |path|
+        refs = REXML::XPath.match(page(path, dir), '//@href | //@src | //@xlink:href').map(&:value)
+        refs.reject { |ref| ref.start_with?('data:') }.each { |ref| assert_resolves(ref, path, dir, ids) }.size
+      end
+      assert_operator checked, :>, 300
     end
 
     def test_the_same_app_gives_the_same_bytes
@@ -237,6 +252,20 @@ module Syskit
       assert_equal 2, can1.scan('<svg class="chart"').size
       assert_includes can1, '<text class="label" x="218" y="78">left_motor  27.1 %</text>'
       assert_includes can1, '0.805 / 1 ms</text>'
+    end
+
+    private
+
+    # +ref+, on the page at +path+, names a file of the site in +dir+ and,
+    # with an anchor, an id of that page (+ids+: a page's ids by path).
+    # The index's anchors are its filter (#q=...).
+    def assert_resolves(ref, path, dir, ids)
+      file, anchor = URI::DEFAULT_PARSER.unescape(ref).split('#', 2)
+      target = file.empty? ? path : File.expand_path(file, "/#{File.dirname(path)}").delete_prefix('/')
+      assert File.file?(File.join(dir, target)), "#{path} refers to #{ref}, which does not exist"
+      return unless anchor && target.end_with?('.html') && !anchor.start_with?('q=')
+
+      assert_includes ids[target], anchor, "#{path} refers to #{ref}: no such anchor"
     end
   end
 end

@@ -122,9 +122,11 @@ module Syskit
     # of the app is loaded afterwards too, so that their problems are found.
     #
     # With +models: false+, the files under models/ are loaded only when
-    # something requires them (a Rock app whose config/init.rb sets
-    # auto_load_models to false, see InitFile, runs its tests so).
-    def load(robots: ['default'], everything: false, models: true)
+    # something requires them (a robot configuration's Robot.requires
+    # block, a test file), as Roby loads an app whose config/init.rb sets
+    # auto_load_models to false; by default, as the app's config/init.rb
+    # says (see InitFile).
+    def load(robots: ['default'], everything: false, models: InitFile.auto_load_models?(root))
       activate
       load_bundled_models
       load_model_files if models

@@ -20,7 +20,7 @@ module Syskit
     # each profile. A profile whose own files failed to load is not
     # generated: that would only repeat the loading problems.
     def run
-      app.load(robots: :all, everything: true)
+      app.load(robots: :all, everything: true, models: true)
       @problems.concat(app.problems)
       @problems << opaque_typekits_note unless app.opaque_typekits.empty?
       failed_files = app.errors.filter_map { |p| p.location&.path }.uniq

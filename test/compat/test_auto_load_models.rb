@@ -5,9 +5,10 @@ require 'helper'
 module Syskit
   # A Rock app whose config/init.rb sets Roby.app.auto_load_models to
   # false (as common_models does) runs its tests with what its robot
-  # configuration and its test files require, as Roby loads it: a model
-  # file nothing requires is not loaded, and its problems are not the
-  # tests'. syskit check still loads, and reports, every file.
+  # configuration and its test files require, and plans what its robot
+  # configuration requires, as Roby loads it: a model file nothing
+  # requires is not loaded, and its problems are not the tests' or the
+  # plan's. syskit check still loads, and reports, every file.
   class TestAutoLoadModels < Minitest::Test
     # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
     parallelize_me!
@@ -67,6 +68,45 @@ module Syskit
       out, _err, status = syskit_process('check', '--app', app)
       assert_equal 1, status.exitstatus
       assert_match(%r{^models/blueprints/old.rb:2: uninitialized constant}, out)
+    end
+
+    # syskit plan (and doc, bus) load what the robot configuration requires,
+    # as Roby does: a profile nothing requires is not there to plan, and
+    # a stale file nothing requires does not stop the plan.
+    def test_plan_loads_what_the_robot_configuration_requires
+      app = my_app(nil, FILES.slice('config/init.rb', 'models/blueprints/old.rb').merge(
+                          'config/syskit.yml' => "name: MyApp\nacronyms: [IMU]\n",
+                          'models/profiles/base.rb' => PROFILE.call('Base'),
+                          'models/profiles/unused.rb' => PROFILE.call('Unused'),
+                          'config/robots/default.rb' => <<~RUBY
+                            Robot.requires do
+                              require 'models/profiles/base'
+                            end
+                            using_task_library 'imu'
+                            Syskit.conf.use_deployment OroGen.imu.Task => 'imu'
+                          RUBY
+                        ))
+      out, err, status = syskit_process('plan', '--app', app)
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/^Plan of MyApp::Profiles::Base on robot 'default'/, out)
+      _, err, status = syskit_process('plan', 'Unused', '--app', app)
+      assert_equal 1, status.exitstatus
+      assert_match(/no profile .*Unused/i, err)
+    end
+
+    PROFILE = lambda do |name|
+      <<~RUBY
+        using_task_library 'imu'
+        module MyApp
+          module Profiles
+            profile '#{name}' do
+              robot do
+                device MyApp::Devices::IMU, as: 'imu'
+              end
+            end
+          end
+        end
+      RUBY
     end
 
     def test_without_the_setting_every_model_file_is_loaded_for_the_tests

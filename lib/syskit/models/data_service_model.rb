@@ -1,21 +1,26 @@
 # frozen_string_literal: true
 
 require 'syskit/port'
-require 'syskit/models/provided_ports'
 require 'syskit/models/model_hierarchy'
 require 'syskit/models/port_lookup'
+require 'syskit/models/provided_models'
+require 'syskit/models/bus_service_role'
 
 module Syskit
   # The plain model objects the DSL records declarations into.
   module Models
     # A data service: a named set of ports that components provide
     # (+data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+).
+    # This file holds its declaration, naming and ports; what it provides
+    # is in ProvidedModels, what a bus's services add in BusServiceRole.
     #
     # Models are modules so that assigning one to a constant names it, as Ruby
     # does for any module (+Device = DeviceModel.new+ is then called Device).
     class DataServiceModel < Module
       include ModelHierarchy
       include PortLookup
+      include ProvidedModels
+      include BusServiceRole
 
       attr_reader :ports, :parents, :declared_at
       attr_accessor :doc
@@ -23,17 +28,6 @@ module Syskit
       # The word used for this kind of model in messages.
       def self.kind
         'data service'
-      end
-
-      # Bumped whenever a data service model gains a parent (+provides+) or
-      # a device configuration: the views cached on models (see
-      # #hierarchy_view) are then computed again.
-      def self.hierarchy_version
-        DataServiceModel.instance_variable_get(:@hierarchy_version) || 0
-      end
-
-      def self.hierarchy_changed
-        DataServiceModel.instance_variable_set(:@hierarchy_version, hierarchy_version + 1)
       end
 
       # Defines the model +name+ in +namespace+ (the module the statement is
@@ -164,33 +158,6 @@ module Syskit
         @timing[:worstcase_processing_time] = seconds
       end
 
-      # Declares that this model provides +model+: its ports become ours. As
-      # in Syskit, +mappings+ (+'their_port' => 'our_port'+) bind a port of
-      # +model+ to a port this model already has, and a port of +model+ named
-      # like one of ours must be mapped explicitly, even to itself.
-      def provides(model, mappings = {})
-        location = Location.of_caller
-        check_provides(model, location)
-        return self if @parents.key?(model)
-
-        renames = Models.normalize_mappings(model, mappings, location, owner: self)
-        adopted = ProvidedPorts.new(self, model, renames, location).adopt
-        @parents[model] = adopted
-        @fullfilled_models = nil
-        @identity_mappings = nil
-        DataServiceModel.hierarchy_changed
-        self
-      end
-
-      # Whether this model is +model+ or provides it, directly or not; given
-      # a list, whether it fullfills each of them.
-      def fullfills?(model)
-        return model.all? { |m| fullfills?(m) } if model.is_a?(Array)
-
-        fullfilled_models.include?(model)
-      end
-      alias fulfills? fullfills?
-
       # Adds the port +port+ and its reader (+pose_port+, as Syskit's models
       # have), unless a method of that name exists.
       def add_port_entry(port)
@@ -198,61 +165,6 @@ module Syskit
         reader = "#{port.name}_port"
         define_singleton_method(reader) { find_port(port.name) } unless respond_to?(reader)
         port
-      end
-
-      # Whether this model provides +model+, directly or not (Syskit's
-      # +provides?+: a model does not provide itself).
-      def provides?(model)
-        !equal?(model) && fullfills?(model)
-      end
-
-      # This model and every model it provides, in the order Syskit lists
-      # them (Ruby's ancestors when models include what they provide): the
-      # model, what it provided last first, the roots (Device, DataService)
-      # last.
-      def fullfilled_models
-        @fullfilled_models ||= parents.each_key.with_object([self]) do |parent, chain|
-          at = 0
-          parent.fullfilled_models.each do |m|
-            found = chain.index(m)
-            found ? at = found : chain.insert(at += 1, m)
-          end
-        end.freeze
-      end
-
-      # What the block computes from this model's hierarchy (frozen),
-      # computed again once any model's hierarchy changed: every device
-      # declaration asks its model and its bus model for their
-      # configuration modules, which do not change while a robot is
-      # declared.
-      def hierarchy_view(name)
-        version = DataServiceModel.hierarchy_version
-        views = (@hierarchy_views ||= {})
-        view = views[name]
-        return view.last if view && view.first == version
-
-        value = yield.freeze
-        views[name] = [version, value]
-        value
-      end
-
-      # Enumerates {#fullfilled_models}.
-      def each_fullfilled_model(&block)
-        return enum_for(__method__) unless block
-
-        fullfilled_models.each(&block)
-      end
-
-      # For a model this one provides, its port names mapped to ours.
-      def port_mappings_for(model)
-        return (@identity_mappings ||= ports.keys.to_h { |n| [n, n] }.freeze) if model.equal?(self)
-
-        parents.each do |parent, mapping|
-          next unless parent.fullfills?(model)
-
-          return parent.port_mappings_for(model).transform_values { |name| mapping.fetch(name) }
-        end
-        raise ArgumentError, "#{self} does not provide #{model}"
       end
 
       private
@@ -279,22 +191,6 @@ module Syskit
         port = add_port_entry(Port.new(name, direction, Models.resolve_type(type, location), declared_type: type))
         PortModifiers.new(port)
       end
-
-      # What a model of this kind may provide.
-      def check_provides(model, location)
-        unless model.is_a?(DataServiceModel)
-          raise DeclarationError.new(
-            "provides expects a data service, device or bus model, got #{model.inspect}",
-            location: location, hint: 'pass a model defined with data_service_type or device_type'
-          )
-        end
-        return unless model.is_a?(DeviceModel) && !is_a?(DeviceModel)
-
-        raise DeclarationError.new(
-          "#{self} is a data service and cannot provide the device #{model}",
-          location: location, hint: 'only devices provide devices: declare it with device_type'
-        )
-      end
     end
 
     # Syskit's +Syskit::Models.is_model?(object)+: whether +object+ is a
@@ -316,57 +212,6 @@ module Syskit
       end
 
       app.types.resolve(type, location: location)
-    end
-
-    # Port mappings given to +provides+ or +driver_for+, as +{their_port =>
-    # our_port}+. Either side may name the provided model's port (the seed
-    # writes both orders); aliases such as 'bus_in' for 'from_bus' are known.
-    def self.normalize_mappings(model, mappings, location, owner:)
-      mappings.to_h do |a, b|
-        a = a.to_s
-        b = b.to_s
-        if (name = model.port_name_for(a)) then [name, b]
-        elsif (name = model.port_name_for(b)) then [name, a]
-        else
-          raise DeclarationError.new(
-            "#{model} has no port named '#{a}' or '#{b}' (mapping '#{a}' => '#{b}' on #{owner})",
-            location: location,
-            hint: "#{model}'s ports are #{model.ports.values.join(', ')}; " \
-                  "write '#{model.ports.keys.first || 'its_port'}' => 'your_port'"
-          )
-        end
-      end
-    end
-
-    # What a bus's services add to a data service: port aliases and roles.
-    class DataServiceModel
-      # What users may write for a bus client's ports in port mappings (the
-      # seed's disambiguation example maps 'bus_in' and 'bus_out').
-      CLIENT_PORT_ALIASES = { 'bus_in' => 'from_bus', 'bus_out' => 'to_bus' }.freeze
-
-      # For the seven services of a bus model: the bus, and the service's role
-      # (:bus, :bus_in, :client_in, ...).
-      attr_accessor :bus_model, :bus_role
-
-      # The port called +name+ in mappings (a port name or one of its aliases).
-      def port_name_for(name)
-        return name if ports.key?(name)
-
-        aliased = CLIENT_PORT_ALIASES[name] if bus_role.to_s.start_with?('client')
-        aliased if aliased && ports.key?(aliased)
-      end
-
-      # Whether a task providing this service drives a bus (BusSrv, BusInSrv...).
-      def bus_driver_service?
-        bus_role && !bus_role.to_s.start_with?('client')
-      end
-
-      # The device (or bus) a task providing this service drives, if any.
-      def driven_device_model
-        return bus_model if bus_driver_service?
-
-        self if is_a?(DeviceModel)
-      end
     end
   end
 end

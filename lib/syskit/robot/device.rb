@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/robot/can_traffic'
+require 'syskit/robot/dsl_attributes'
 
 module Syskit
   module Robot
@@ -11,8 +12,11 @@ module Syskit
     #
     # Chainable calls configure it; bus attributes (+can_id+) come from the
     # modules of its device model and of the bus it is attached to.
+    # Their values are kept by DslAttributes; its slaves and a deployment of
+    # its own are MasterDevice's; a bus is a ComBus.
     class Device
       include CanTraffic::DeviceStatements
+      include DslAttributes
 
       DEFAULT_CONF = ['default'].freeze
 
@@ -175,45 +179,6 @@ module Syskit
         bus_to_client != false
       end
 
-      # Sets a dsl_attribute (see DeviceConfigurationModule#dsl_attribute).
-      def set_dsl_attribute(attr, args, filter_method)
-        value = if filter_method
-                  filter_value(attr, args, filter_method)
-                else
-                  (args.size == 1 ? args.first : args)
-                end
-        dsl_attributes[attr] = value
-        # The frame that called the attribute's method, if it is the user's
-        # (a Location: Ruby's frame objects would keep its backtrace alive,
-        # two objects the garbage collector cannot track cheaply, 20,000
-        # of them on a 10,000-device robot).
-        frame = caller_locations(2, 1).first
-        (@dsl_attribute_frames ||= {})[attr] = Location.user_frame?(frame) ? Location.from(frame) : nil
-        self
-      end
-
-      # Where the attribute +attr+ was last set (the user's +.can_id(...)+
-      # line), for the checks that judge its value; else where the device
-      # is declared.
-      def dsl_attribute_location(attr)
-        @dsl_attribute_frames&.[](attr) || declared_at
-      end
-
-      # The value of an attribute called without arguments. In the robot
-      # block that declares the device, reading an attribute never set is a
-      # setting whose arguments were forgotten (+.can_id.with_conf(...)+
-      # would call with_conf on nil): refused there.
-      def read_attribute(attr, value, expected = nil)
-        return value unless value.nil? && robot.declaring?
-
-        params = attribute_parameters(attr)
-        call = params ? ".#{attr}(#{params.join(', ')})" : ".#{attr}(...)"
-        raise DeclarationError.new(
-          "#{attr} without arguments reads the #{attr} of #{self}, which is not set",
-          location: Location.of_caller, hint: "to set it, give #{expected || 'its arguments'}: #{call}"
-        )
-      end
-
       def explain_missing(method_name)
         buses = robot.app_bus_models_defining(method_name)
         hint =
@@ -267,87 +232,6 @@ module Syskit
           singleton_class.ancestors.grep(Models::DeviceConfigurationModule)
                          .flat_map { |m| m.public_instance_methods(false).map(&:to_s) })
           .reject { |m| m.start_with?('__') }.uniq
-      end
-
-      # The value the filter block makes of +args+; what it raises says the
-      # value is refused (exits and endless recursions are located too).
-      def filter_value(attr, args, filter_method)
-        send(filter_method, *args)
-      rescue Syskit::Error
-        raise
-      rescue StandardError => e
-        raise invalid_attribute(attr, args, filter_method, e)
-      rescue Exception => e # rubocop:disable Lint/RescueException -- user code may raise anything
-        raise if e.is_a?(SignalException)
-
-        raise UserCode.translate(e, error_class: DeclarationError, context: "#{attr} on #{self}")
-      end
-
-      # The parameters of a dsl_attribute's filter block, as users write them.
-      def attribute_parameters(attr)
-        filter = :"__dsl_attribute_filter_#{attr}"
-        return unless respond_to?(filter)
-
-        method(filter).parameters.map { |kind, n| kind == :opt ? "#{n} = ..." : n.to_s }
-      end
-
-      def invalid_attribute(attr, args, filter_method, error)
-        params = attribute_parameters(attr) if filter_method
-        (error.is_a?(ArgumentError) ? InvalidArgument : DeclarationError).new(
-          "#{attr}(#{args.map(&:inspect).join(', ')}) on #{self}: #{error.message}",
-          location: Location.of_caller,
-          hint: params ? "#{attr} takes (#{params.join(', ')})" : "check the arguments of #{attr}"
-        )
-      end
-    end
-
-    # A communication bus on a robot (+com_bus CAN, as: 'can0'+). It is a
-    # device too: its driver is the bus driver task.
-    class ComBus < Device
-      include CanTraffic::BusStatements
-
-      def initialize(*args, **options)
-        super
-        @attached_devices = []
-      end
-
-      def com_bus?
-        true
-      end
-
-      def message_type
-        model.message_type
-      end
-
-      # Devices declared on this bus, in declaration order.
-      def each_attached_device(&block)
-        return enum_for(__method__) unless block
-
-        @attached_devices.each(&block)
-      end
-
-      def attached_devices
-        @attached_devices.dup
-      end
-
-      def add_attached_device(device)
-        @attached_devices << device
-      end
-
-      # Syskit's forms on the bus object: +can0.through do device(...) end+,
-      # as +through 'can0' do ... end+ in the robot block.
-      def through(&)
-        DSL.new(robot).through(self, &)
-      end
-
-      # +can0.device(Model, as: 'name', client_to_bus: false)+: a device
-      # declared attached to this bus.
-      def device(model, **options)
-        DSL.new(robot).device_on(self, model, **options)
-      end
-
-      def to_s
-        "bus '#{name}'"
       end
     end
   end

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/instance_requirements/statements'
+
 module Syskit
   # What a network must contain, as Syskit's InstanceRequirements: a model
   # (a task or composition model, or services to be provided by a component
@@ -13,6 +15,8 @@ module Syskit
   # A frozen value: every statement returns a changed copy. A profile's
   # definitions and device actions are requirements with a +name+.
   class InstanceRequirements
+    include Statements
+
     NO_ARGUMENTS = {}.freeze
     NO_HINTS = [].freeze
     DEFAULT_CONF = ['default'].freeze
@@ -157,65 +161,6 @@ module Syskit
     end
     alias fulfills? fullfills?
 
-    # Configuration sections, replacing ['default'] as in Syskit;
-    # +location+: where they are chosen, for errors about them.
-    def with_conf(*names, location: Location.of_caller)
-      names = names.flatten.map(&:to_s)
-      if names.empty?
-        raise DeclarationError.new('with_conf needs at least one section name',
-                                   location: location, hint: "write with_conf('default', 'forward')")
-      end
-
-      copy(conf: names, conf_location: location)
-    end
-
-    # Task arguments (see ComponentModel#argument).
-    def with_arguments(**arguments)
-      copy(arguments: self.arguments.merge(arguments).freeze)
-    end
-
-    # Deployed tasks to prefer (names or regexps).
-    def prefer_deployed_tasks(*hints)
-      hints = hints.flatten
-      bad = hints.find { |h| !h.is_a?(String) && !h.is_a?(Regexp) }
-      if bad
-        raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{bad.inspect}",
-                                   location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
-      end
-
-      copy(deployment_hints: deployment_hints + hints, declared_at: Location.of_caller)
-    end
-
-    # A deployment of its own (see Robot::MasterDevice#deployed_as).
-    def deployed_as(name, on: nil) # rubocop:disable Lint/UnusedMethodArgument -- Syskit's signature
-      declare_deployment(name, false, Location.of_caller)
-    end
-
-    def deployed_as_unmanaged(name, on: nil) # rubocop:disable Lint/UnusedMethodArgument -- Syskit's signature
-      declare_deployment(name, true, Location.of_caller)
-    end
-
-    # Dependency injection (see DependencyInjection). The children it
-    # names must be children of the composition.
-    def use(*mappings)
-      location = Location.of_caller
-      injection = selections.add(mappings, location)
-      if composition?
-        component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
-      end
-      copy(selections: injection, declared_at: declared_at || location)
-    end
-
-    # Which specializations to prefer when several apply.
-    def prefer_specializations(hints)
-      copy(specialization_hints: specialization_hints + [hints])
-    end
-
-    # A copy named +name+ in +profile+ (a definition).
-    def named(name, profile, location)
-      copy(name: name, profile: profile, declared_at: location)
-    end
-
     # The composition model these requirements select once injection and
     # specializations apply (Syskit's +narrow_model+).
     def narrow_model
@@ -290,12 +235,6 @@ module Syskit
 
       DependencyInjection.new(selections.explicit.merge(other.selections.explicit),
                               selections.defaults + other.selections.defaults, other.selections.declared_at)
-    end
-
-    def declare_deployment(name, unmanaged, location)
-      copy(deployment: Robot::MasterDevice::DeclaredDeployment.declare(
-        name, unmanaged, location, owner: self, hint: "write deployed_as('name_of_the_task')"
-      ))
     end
 
     def copy(**changes)

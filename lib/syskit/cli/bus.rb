@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 module Syskit
-  # The main commands are in syskit/cli.rb; this file adds `syskit bus`.
+  # The `syskit` command is syskit/cli.rb, its main commands in cli/*.rb; this file adds `syskit bus`.
   class CLI < Thor
     # `syskit bus replay|monitor`: bus traffic seen through a profile's plan,
     # from a candump log or live from a SocketCAN interface; `syskit bus

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/network/composition_instantiation'
+
 module Syskit
   module Network
     # Step 1: turns the requirements (device actions, definitions, models)
@@ -14,6 +16,8 @@ module Syskit
     # a stub: a task model providing the services, or a device and its
     # driver for a device model.
     class Instantiate
+      include CompositionInstantiation
+
       # A task's identity for merging: model, arguments, sections,
       # deployment hints and deployment.
       def self.merge_key(model, requirements, arguments)
@@ -167,122 +171,6 @@ module Syskit
         value.resolve(parent)
       end
 
-      def instantiate_composition(model, requirements, context, path, parent)
-        selections = select_children(model, context)
-        specialized = specialize(model, selections, requirements)
-        return instantiate_composition(specialized, requirements, context, path, parent) if specialized != model
-        raise abstract(requirements, path, parent, model) if model.abstract?
-
-        composition = model.new(task_arguments(model, requirements, parent))
-        composition.conf = requirements.conf
-        composition.name = path
-        composition.requirement = requirements
-        composition.parent = parent
-        @building.push(composition)
-        instantiate_children(composition, selections, requirements, context)
-        @context.compositions << composition
-        composition
-      ensure
-        @building.pop if composition
-      end
-
-      def select_children(model, context)
-        model.child_names.to_h { |name| [name, Selection.select(model.find_child(name), context)] }
-      end
-
-      # Explicit (by name) selections choose first, as in Syskit.
-      def specialize(model, selections, requirements)
-        hints = requirements.specialization_hints
-        explicit = selections.select { |_, r| r.explicit && !r.reference }.transform_values(&:requirements)
-        chosen = model.specialized_model_for(explicit, hints: hints, location: requirements.declared_at)
-        return chosen if chosen != model
-
-        all = selections.reject { |_, r| r.reference }.transform_values(&:requirements)
-        model.specialized_model_for(all, hints: hints, location: requirements.declared_at)
-      end
-
-      # Children referring to a sibling (+use(srv => first_child)+) come
-      # after it.
-      def instantiate_children(composition, selections, requirements, context)
-        pending = selections.keys
-        until pending.empty?
-          ready = pending.reject { |name| waits_for_sibling?(composition, selections[name]) }
-          raise sibling_cycle(composition, pending) if ready.empty?
-
-          ready.each do |name|
-            instantiate_child(composition, name, selections[name], requirements, context)
-          end
-          pending -= ready
-        end
-      end
-
-      def waits_for_sibling?(composition, selection)
-        references(selection).any? do |ref|
-          owner = @building.reverse.find { |c| c.model <= ref.composition_model }
-          owner.equal?(composition) && !composition.has_role?(ref.child_name)
-        end
-      end
-
-      # Children of compositions a selection refers to.
-      def references(selection)
-        found = [selection.reference].compact
-        selection.requirements.selections.explicit.each_value { |v| found << v if v.is_a?(Models::CompositionChild) }
-        found
-      end
-
-      def instantiate_child(composition, name, selection, requirements, context)
-        child = composition.model.find_child(name)
-        return composition.add_child(name, referenced_task(selection.reference)) if selection.reference
-
-        child_requirements = with_composition_conf(composition, name, selection.requirements)
-        return if child.optional? && child_requirements.abstract? && !@stub_abstract
-
-        child_context = child_context(context, selection, requirements, name, child_requirements)
-        task = instantiate(child_requirements, child_context, "#{composition.name}.#{name}", composition)
-        composition.add_child(name, task)
-        composition.child_selections[name] = child_requirements
-      end
-
-      # The context a child's own children are selected in: without what
-      # selected the child, with the enclosing requirements' selections
-      # for its children ('child.grandchild' keys) and its own.
-      def child_context(context, selection, requirements, name, child_requirements)
-        grandchildren = requirements.selections.grandchild_selections(name)
-        context = context.mask(selection.used_keys)
-        context = context.with(DependencyInjection.new(grandchildren, [], requirements.declared_at)) unless
-          grandchildren.empty?
-        context.with(resolve_references(child_requirements.selections))
-      end
-
-      # Selections naming a child of an enclosing composition select its task.
-      def resolve_references(selections)
-        return selections unless selections.explicit.each_value.any?(Models::CompositionChild)
-
-        explicit = selections.explicit.transform_values do |value|
-          value.is_a?(Models::CompositionChild) ? InstanceRequirements.from(referenced_task(value)) : value
-        end
-        DependencyInjection.new(explicit, selections.defaults, selections.declared_at)
-      end
-
-      def referenced_task(child)
-        owner = @building.reverse.find { |c| c.model <= child.composition_model }
-        owner&.child_task(child.child_name) ||
-          raise(NetworkError.new("#{child} is selected, but no enclosing composition has that child",
-                                 location: child.declared_at, hint: 'select a child of an enclosing composition'))
-      end
-
-      # +conf 'name', child => [...]+ of the composition applies to the
-      # children that chose no sections of their own.
-      def with_composition_conf(composition, name, requirements)
-        return requirements if requirements.conf_given?
-
-        model = composition.model
-        conf = composition.conf.reverse.find { |c| model.configurations.dig(c, name) }
-        return requirements unless conf
-
-        requirements.with_conf(*model.configurations.dig(conf, name), location: model.configuration_location(conf))
-      end
-
       def stub_task(requirements, path, parent)
         model = requirements.models.find { |m| m.is_a?(Models::DeviceModel) }
         return stub_device_task(model, requirements, path) if model
@@ -325,12 +213,6 @@ module Syskit
         planned = @context.profile
         used_at = planned.use_profile_location(tag_profile) if tag_profile && planned && !planned.equal?(tag_profile)
         used_at || @root&.declared_at || requirements.declared_at
-      end
-
-      def sibling_cycle(composition, pending)
-        NetworkError.new("the children #{pending.join(', ')} of #{composition.model} select each other",
-                         location: composition.model.declared_at,
-                         hint: 'a child selected for another must not depend on it')
       end
     end
   end

@@ -106,11 +106,14 @@ module Syskit
       end
     end
 
-    # The services made for this task from dynamic services (its devices'
-    # slaves declared from one, as Syskit's required dynamic services).
+    # The services made for this task from dynamic services, as Syskit's
+    # required dynamic services: those its model requires (a
+    # specialization's, see Models::DynamicServices#require_dynamic_service)
+    # and its devices' slaves declared from one.
     def each_required_dynamic_service(&block)
       return enum_for(__method__) unless block
 
+      model.required_dynamic_services.each(&block)
       devices.each do |device|
         device.each_slave { |slave| yield slave.service if slave.dynamic_service_name && slave.service }
       end

@@ -57,6 +57,21 @@ module Syskit
         copy(selections: injection, declared_at: declared_at || location)
       end
 
+      # Syskit's +with_dynamic_service+: the task model specialized with
+      # the instance +as+ of its dynamic service +dynamic_name+ (see
+      # Models::DynamicServices#require_dynamic_service).
+      def with_dynamic_service(dynamic_name, as:, **options)
+        model = component_model
+        unless model.respond_to?(:require_dynamic_service)
+          raise DeclarationError.new("with_dynamic_service needs a task model, #{self} has none",
+                                     location: Location.of_caller, hint: 'call it on a task model')
+        end
+
+        specialized = model.specialize
+        specialized.require_dynamic_service(dynamic_name, as: as, **options)
+        copy(models: models.map { |m| m.equal?(model) ? specialized : m })
+      end
+
       # Which specializations to prefer when several apply.
       def prefer_specializations(hints)
         copy(specialization_hints: specialization_hints + [hints])

@@ -27,10 +27,11 @@ module Syskit
         @declared_at = location
       end
 
-      # The service named +as+ (a BoundService) and the ports it needs
-      # created; +location+ is where the instance is asked for.
-      def instantiate(as, options, location)
-        context = Context.new(self, as, options)
+      # The service named +as+ (a BoundService of +on+, the task model or
+      # a specialization of it) and the ports it needs created; +location+
+      # is where the instance is asked for.
+      def instantiate(as, options, location, on: task_model)
+        context = Context.new(self, as, options, on)
         begin
           context.instance_exec(&@block)
         rescue ScriptError, StandardError => e
@@ -55,17 +56,17 @@ module Syskit
         # The instance's name and options.
         attr_reader :name, :options, :service, :created_ports
 
-        def initialize(dynamic, name, options)
+        def initialize(dynamic, name, options, component_model)
           @dynamic = dynamic
           @name = name
           @options = options
+          @component_model = component_model
           @created_ports = []
         end
 
-        # The task model (Syskit's name for it in these blocks).
-        def component_model
-          @dynamic.task_model
-        end
+        # The task model the instance is made on (Syskit's name for it in
+        # these blocks).
+        attr_reader :component_model
 
         # Provides +model+ (the dynamic service's model or one providing it)
         # as this instance, its ports mapped by +mappings+. +slave_of:+

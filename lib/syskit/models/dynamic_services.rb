@@ -30,6 +30,52 @@ module Syskit
         (@dynamic_services ||= {})[as.to_s] = DynamicService.new(self, as.to_s, model, block, location)
       end
 
+      # Syskit's +require_dynamic_service+: the instance +as+ of the dynamic
+      # service +dynamic_name+ (its block given +options+) becomes a service
+      # of this model, with the ports it creates. As in Syskit, it is asked
+      # of a specialization (+Task.specialize+, or +Task.with_dynamic_service+),
+      # which leaves the task model as it is. Asking again for an instance
+      # of the same model returns it.
+      def require_dynamic_service(dynamic_name, as:, **options)
+        location = Location.of_caller
+        dynamic = fetch_dynamic_service(dynamic_name, location, "to require as '#{as}'")
+        raise not_a_specialization(dynamic_name, location) unless specialization?
+
+        existing = find_service(as.to_s)
+        return existing if existing&.fullfills?(dynamic.model)
+        raise already_a_service(existing, dynamic, location) if existing
+
+        service, ports = dynamic.instantiate(as.to_s, options, location, on: self)
+        ports.each { |port| spec.ports[port.name] = port }
+        (@services ||= {})[service.full_name] = service
+        (@required_dynamic_services ||= []) << service
+        ComponentModel.declarations_changed
+        define_service_reader(service)
+        service
+      end
+
+      # The services required from dynamic services, inherited ones
+      # included, in the order they were required.
+      def required_dynamic_services
+        inherited = superclass.respond_to?(:required_dynamic_services) ? superclass.required_dynamic_services : []
+        inherited + (@required_dynamic_services || [])
+      end
+
+      # The dynamic service +name+, or an error located at +location+
+      # saying what it was asked for (+purpose+).
+      def fetch_dynamic_service(name, location, purpose)
+        found = find_dynamic_service(name)
+        return found if found
+
+        known = dynamic_service_names
+        hint = "its dynamic services: #{known.join(', ')}"
+        hint = "declare it in #{self.name}'s extension: dynamic_service Model, as: 'name' do ... end" if known.empty?
+        raise DeclarationError.new(
+          "#{self.name} has no dynamic service '#{name}' #{purpose}#{Naming.did_you_mean(name.to_s, known)}",
+          location: location, hint: hint
+        )
+      end
+
       # The dynamic service +name+, inherited ones included.
       def find_dynamic_service(name)
         own = @dynamic_services && @dynamic_services[name.to_s]
@@ -40,6 +86,26 @@ module Syskit
       def dynamic_service_names
         inherited = superclass.respond_to?(:dynamic_service_names) ? superclass.dynamic_service_names : []
         (inherited + (@dynamic_services || {}).keys).uniq.sort
+      end
+
+      private
+
+      # Syskit changes the task model itself; here the ports a dynamic
+      # service creates go on a specialization, made for the purpose.
+      def not_a_specialization(dynamic_name, location)
+        DeclarationError.new(
+          "require_dynamic_service('#{dynamic_name}') on #{name} itself: it is asked of a specialization",
+          location: location,
+          hint: "write #{name}.specialize.require_dynamic_service(...), or use #{name}.with_dynamic_service(...)"
+        )
+      end
+
+      def already_a_service(existing, dynamic, location)
+        DeclarationError.new(
+          "#{name} already has a service '#{existing.full_name}' (#{existing.model}), not the " \
+          "#{dynamic.model} of dynamic service '#{dynamic.name}'",
+          location: location, hint: "give the instance another name with as: 'other_name'"
+        )
       end
     end
   end

@@ -3,6 +3,7 @@
 require 'syskit/models/component_model'
 require 'syskit/models/driver_services'
 require 'syskit/models/dynamic_services'
+require 'syskit/models/task_specialization'
 
 module Syskit
   module Models
@@ -15,6 +16,7 @@ module Syskit
       include ComponentModel
       include DynamicServices
       include DriverServices
+      include TaskSpecialization
 
       attr_reader :spec
 

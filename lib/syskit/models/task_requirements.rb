@@ -7,7 +7,8 @@ module Syskit
     # +OroGen.lib.Task.with_conf('default', 'x').with_arguments(port: 'p')+
     # (see InstanceRequirements).
     module TaskRequirementStatements
-      %i[with_conf with_arguments deployed_as deployed_as_unmanaged prefer_deployed_tasks].each do |statement|
+      %i[with_conf with_arguments deployed_as deployed_as_unmanaged prefer_deployed_tasks
+         with_dynamic_service].each do |statement|
         define_method(statement) do |*args, **options|
           InstanceRequirements.new([self], declared_at: Location.of_caller).public_send(statement, *args, **options)
         end

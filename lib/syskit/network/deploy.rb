@@ -60,7 +60,7 @@ module Syskit
       end
 
       def choose(task, requirement)
-        index = @context.robot_config.candidates_for(task.model)
+        index = @context.robot_config.candidates_for(task.model.concrete_model)
         return @context.error(none(task, requirement)) if index.empty?
 
         hints = requirement.deployment_hints

@@ -159,17 +159,8 @@ module Syskit
       end
 
       def instantiate(driver)
-        dynamic = driver.find_dynamic_service(dynamic_service_name)
-        return dynamic.instantiate(name, dynamic_options, declared_at) if dynamic
-
-        known = driver.dynamic_service_names
-        hint = "its dynamic services: #{known.join(', ')}"
-        hint = "declare it in #{driver.name}'s extension: dynamic_service Model, as: 'name' do ... end" if known.empty?
-        raise DeclarationError.new(
-          "#{driver.name} has no dynamic service '#{dynamic_service_name}' to make #{self} from" \
-          "#{Naming.did_you_mean(dynamic_service_name, known)}",
-          location: declared_at, hint: hint
-        )
+        driver.fetch_dynamic_service(dynamic_service_name, declared_at, "to make #{self} from")
+              .instantiate(name, dynamic_options, declared_at)
       end
 
       def chainable_methods

@@ -1,0 +1,145 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # Syskit's specialize, require_dynamic_service and with_dynamic_service
+  # on task models, as common_models' tests and helpers write them: an
+  # instance of a dynamic service becomes a service of a specialization of
+  # the task model, with the ports it creates; the specialization drives
+  # devices, runs on the task model's deployments, and its configure method
+  # sees the instance among its required dynamic services.
+  class TestRequiredDynamicServices < Minitest::Test
+    FILES = {
+      'models/devices/camera.rb' => <<~RUBY,
+        module MyApp
+          module Devices
+            device_type 'Camera' do
+              output_port 'frame', '/double'
+            end
+            data_service_type 'Light' do
+              output_port 'level', '/double'
+            end
+          end
+        end
+      RUBY
+      'models/orogen/rig.orogen' => <<~RUBY,
+        name 'rig'
+        task_context 'Task' do
+          property 'exports', 'int', 0
+          output_port 'main_frame', '/double'
+          dynamic_output_port(/^\\w+_frame$/, '/double')
+          dynamic_output_port(/^\\w+_level$/, '/double')
+        end
+      RUBY
+      'models/orogen/rig.rb' => <<~RUBY,
+        require 'models/devices/camera'
+        Syskit.extend_model OroGen.rig.Task do
+          provides MyApp::Devices::Light, as: 'lamp', 'level' => 'main_frame'
+          dynamic_service MyApp::Devices::Camera, as: 'export' do
+            driver_for MyApp::Devices::Camera, 'frame' => "\#{options.fetch(:prefix, name)}_frame"
+          end
+          dynamic_service MyApp::Devices::Light, as: 'dimmer' do
+            provides MyApp::Devices::Light, 'level' => "\#{name}_level"
+          end
+
+          def configure
+            super
+            properties.exports = each_required_dynamic_service.count
+          end
+        end
+      RUBY
+      'config/robots/default.rb' => "using_task_library 'rig'\nSyskit.conf.use_deployment OroGen.rig.Task => 'rig'\n"
+    }.freeze
+
+    def load_robot(robot, files = {})
+      @root = my_app(robot, FILES.merge(files), libraries: %w[rig])
+      @app = load_app(@root, problems: true)
+      @app.problems.first
+    end
+
+    def plan
+      Network::Generator.plan_profile(@app, MyApp::Profiles::Base.syskit_profile).plan
+    end
+
+    def test_a_specialization_requires_an_instance_of_a_dynamic_service
+      assert_nil load_robot(nil)
+      task_model = OroGen.rig.Task
+      model = task_model.specialize
+      rear = model.require_dynamic_service('export', as: 'rear', prefix: 'back')
+      assert_equal 'rig::Task{1}', model.name
+      assert model.specialization?
+      assert_same task_model, model.concrete_model
+      assert_equal [MyApp::Devices::Camera, 'rear', { 'frame' => 'back_frame' }],
+                   [rear.model, rear.full_name, rear.port_mappings]
+      assert_same rear, model.find_data_service('rear')
+      assert model.find_port('back_frame').dynamic?
+      assert_same rear, model.require_dynamic_service('export', as: 'rear'), 'asked again: the same service'
+      assert_equal [rear], model.required_dynamic_services
+      assert_task_model_unchanged
+    end
+
+    def assert_task_model_unchanged
+      assert_nil OroGen.rig.Task.find_data_service('rear')
+      assert_nil OroGen.rig.Task.find_port('back_frame')
+      assert_equal 'rig::Task{2}', OroGen.rig.Task.specialize.name
+    end
+
+    def test_a_device_driven_by_a_specialization_runs_on_a_deployment_of_the_task_model
+      assert_nil load_robot(<<~RUBY)
+        rear = OroGen.rig.Task.specialize
+        rear.require_dynamic_service('export', as: 'rear')
+        device(Devices::Camera, as: 'rear_cam', using: rear)
+      RUBY
+      task = plan.find_task('rig')
+      assert_equal 'rig::Task{1}', task.model
+      assert_includes task.ports.map(&:name), 'rear_frame'
+      assert_equal 1, task.properties['exports']
+      assert_equal ['rear_cam'], task.devices
+    end
+
+    def test_with_dynamic_service_in_a_definition
+      assert_nil load_robot(nil, 'models/profiles/base.rb' => <<~RUBY)
+        using_task_library 'rig'
+        module MyApp
+          module Profiles
+            profile 'Base' do
+              define 'side', OroGen.rig.Task.with_dynamic_service('dimmer', as: 'side')
+            end
+          end
+        end
+      RUBY
+      task = plan.find_task('rig')
+      assert_equal 'rig::Task{1}', task.model
+      assert_includes task.ports.map(&:name), 'side_level'
+      assert_equal 1, task.properties['exports']
+    end
+
+    def test_an_instance_of_a_dynamic_service_the_task_does_not_have
+      error = load_robot(nil, 'models/profiles/rear.rb' => <<~RUBY)
+        using_task_library 'rig'
+        OroGen.rig.Task.specialize.require_dynamic_service('exprot', as: 'rear')
+      RUBY
+      assert_reported error, /rig::Task\{1\} has no dynamic service 'exprot' to require as 'rear' \(did you mean 'ex/,
+                      at: 'models/profiles/rear.rb:2', hint: /its dynamic services: dimmer, export/, root: @root
+    end
+
+    def test_require_dynamic_service_on_the_task_model_itself
+      error = load_robot(nil, 'models/profiles/rear.rb' => <<~RUBY)
+        using_task_library 'rig'
+        OroGen.rig.Task.require_dynamic_service('export', as: 'rear')
+      RUBY
+      assert_reported error, /require_dynamic_service\('export'\) on rig::Task itself: it is asked of a specialization/,
+                      at: 'models/profiles/rear.rb:2', hint: /rig::Task.with_dynamic_service/, root: @root
+    end
+
+    def test_an_instance_named_like_a_service_of_another_model
+      error = load_robot(nil, 'models/profiles/rear.rb' => <<~RUBY)
+        using_task_library 'rig'
+        OroGen.rig.Task.specialize.require_dynamic_service('export', as: 'lamp')
+      RUBY
+      assert_reported error, /rig::Task\{1\} already has a service 'lamp' \(MyApp::Devices::Light\), not the MyApp::Devices::Camera/,
+                      at: 'models/profiles/rear.rb:2', hint: /another name/, root: @root
+    end
+  end
+end

@@ -115,6 +115,21 @@ module Syskit
       assert_equal 1, task.properties['exports']
     end
 
+    # A robot made alone, as Syskit's tests make one: the robot block's
+    # statements, errors at the caller's line.
+    def test_a_robot_definition_made_alone
+      assert_nil load_robot(nil)
+      rear = OroGen.rig.Task.specialize
+      rear.require_dynamic_service('export', as: 'rear')
+      robot = Robot::RobotDefinition.new
+      device = robot.device(MyApp::Devices::Camera, as: 'rear_cam', using: rear)
+      assert_equal [rear, robot], [device.using, device.robot]
+      assert_equal [device], robot.devices
+      line = __LINE__ + 1
+      error = assert_raises(DeclarationError) { robot.device(MyApp::Devices::Camera, as: 'rear_cam') }
+      assert_equal "#{File.expand_path(__FILE__)}:#{line}", error.location.to_s
+    end
+
     def test_an_instance_of_a_dynamic_service_the_task_does_not_have
       error = load_robot(nil, 'models/profiles/rear.rb' => <<~RUBY)
         using_task_library 'rig'
@@ -140,6 +155,41 @@ module Syskit
       RUBY
       assert_reported error, /rig::Task\{1\} already has a service 'lamp' \(MyApp::Devices::Light\), not the MyApp::Devices::Camera/,
                       at: 'models/profiles/rear.rb:2', hint: /another name/, root: @root
+    end
+  end
+
+  # The same, in an app's own test, as common_models' tests write it: a
+  # device of a robot made alone, driven by a specialization, stubbed,
+  # deployed and configured.
+  class TestRequiredDynamicServicesInAppTests < Minitest::Test
+    # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
+    parallelize_me!
+
+    APP_TEST = <<~RUBY
+      using_task_library 'rig'
+      module OroGen
+        module Rig
+          describe Task do
+            it 'configures what the specialization requires' do
+              model = Task.specialize
+              model.require_dynamic_service('export', as: 'rear', prefix: 'back')
+              robot = Syskit::Robot::RobotDefinition.new
+              device = robot.device(MyApp::Devices::Camera, as: 'rear', using: model)
+              task = syskit_stub_deploy_and_configure(device)
+              assert_equal 1, task.properties.exports
+              assert task.find_port('back_frame')
+            end
+          end
+        end
+      end
+    RUBY
+
+    def test_an_app_test_configures_a_specialization
+      app = my_app(nil, TestRequiredDynamicServices::FILES.merge('test/orogen/test_rig.rb' => APP_TEST),
+                   libraries: %w[rig])
+      out, err, status = syskit_process('test', chdir: app)
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/^1 runs, 2 assertions, 0 failures, 0 errors, 0 skips$/, out)
     end
   end
 end

@@ -8,7 +8,9 @@ module Syskit
 
       attr_reader :profile
 
-      def initialize(profile)
+      # +profile+: the profile whose robot block declares it; none for a
+      # robot made alone (+Syskit::Robot::RobotDefinition.new+ in a test).
+      def initialize(profile = nil)
         @profile = profile
         @devices = {}
         @used = []
@@ -263,6 +265,20 @@ module Syskit
 
           current = current.bus
         end
+      end
+    end
+
+    # A robot made alone, as Syskit's tests make one
+    # (+Syskit::Robot::RobotDefinition.new.device(Devices::Camera, as: 'x', using: model)+):
+    # the statements of a robot block are its methods.
+    class RobotDefinition < Definition
+      def initialize
+        super(nil)
+        @dsl = DSL.new(self)
+      end
+
+      %i[device com_bus through].each do |statement|
+        define_method(statement) { |*args, **options, &block| @dsl.public_send(statement, *args, **options, &block) }
       end
     end
   end

@@ -141,8 +141,12 @@ module Syskit
         end
 
         port_mappings = PortMapper.new(self, model, mappings, location).map
-        srv = BoundService.new(self, name, model, port_mappings, location, master: master)
-        (@services ||= {})[full_name] = srv
+        register_service(BoundService.new(self, name, model, port_mappings, location, master: master))
+      end
+
+      # Makes +srv+ (a BoundService of this model) one of its services.
+      def register_service(srv)
+        (@services ||= {})[srv.full_name] = srv
         ComponentModel.declarations_changed
         define_service_reader(srv)
         srv

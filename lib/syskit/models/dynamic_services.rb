@@ -32,10 +32,12 @@ module Syskit
 
       # Syskit's +require_dynamic_service+: the instance +as+ of the dynamic
       # service +dynamic_name+ (its block given +options+) becomes a service
-      # of this model, with the ports it creates. As in Syskit, it is asked
-      # of a specialization (+Task.specialize+, or +Task.with_dynamic_service+),
-      # which leaves the task model as it is. Asking again for an instance
-      # of the same model returns it.
+      # of this model, with the ports it creates. It is asked of a
+      # specialization (+Task.specialize+, or +Task.with_dynamic_service+),
+      # which leaves the task model as it is: Syskit would change the task
+      # model itself, for every use, and that is refused here (see
+      # #not_a_specialization). Asking again for an instance of the same
+      # model returns it.
       def require_dynamic_service(dynamic_name, as:, **options)
         location = Location.of_caller
         dynamic = fetch_dynamic_service(dynamic_name, location, "to require as '#{as}'")
@@ -47,11 +49,8 @@ module Syskit
 
         service, ports = dynamic.instantiate(as.to_s, options, location, on: self)
         ports.each { |port| spec.ports[port.name] = port }
-        (@services ||= {})[service.full_name] = service
         (@required_dynamic_services ||= []) << service
-        ComponentModel.declarations_changed
-        define_service_reader(service)
-        service
+        register_service(service)
       end
 
       # The services required from dynamic services, inherited ones

@@ -98,6 +98,19 @@ module Syskit
       assert_equal ['rear_cam'], task.devices
     end
 
+    # The hint deploys the task model: a specialization has no statement
+    # of its own to write.
+    def test_a_specialization_with_no_deployment
+      assert_nil load_robot(<<~RUBY, 'config/robots/default.rb' => "using_task_library 'rig'\n")
+        rear = OroGen.rig.Task.specialize
+        rear.require_dynamic_service('export', as: 'rear')
+        device(Devices::Camera, as: 'rear_cam', using: rear)
+      RUBY
+      assert_syskit_error(/no deployed task can run rig::Task\{1\}, the driver of device 'rear_cam'/,
+                          at: 'models/profiles/base.rb:9', root: @root,
+                          hint: /: Syskit.conf.use_deployment OroGen.rig.Task => 'rear_cam'\z/) { plan }
+    end
+
     def test_with_dynamic_service_in_a_definition
       assert_nil load_robot(nil, 'models/profiles/base.rb' => <<~RUBY)
         using_task_library 'rig'

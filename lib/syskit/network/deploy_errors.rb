@@ -48,10 +48,12 @@ module Syskit
         )
       end
 
-      # The deployments that oroGen libraries declare for +task+'s model.
+      # The deployments that oroGen libraries declare for +task+'s model
+      # (for a specialization, the task model it specializes).
       def library_deployments(task)
-        @context.app.orogen.each_task_model.select { |m| m <= task.model }.flat_map do |m|
-          m.spec.library.deployments.values.select { |d| d.tasks.any? { |t| t.model <= task.model } }.map(&:name)
+        model = task.model.concrete_model
+        @context.app.orogen.each_task_model.select { |m| m <= model }.flat_map do |m|
+          m.spec.library.deployments.values.select { |d| d.tasks.any? { |t| t.model <= model } }.map(&:name)
         end
       end
 
@@ -103,8 +105,9 @@ module Syskit
       end
 
       # The statement of a robot configuration deploying a task of +model+
-      # as +name+.
+      # as +name+ (a specialization runs on a deployment of its task model).
       def deploy_statement(model, name)
+        model = model.concrete_model
         method = model <= RubyTaskContext ? 'use_ruby_tasks' : 'use_deployment'
         "Syskit.conf.#{method} #{Naming.dsl_reference(model)} => '#{name}'"
       end

@@ -242,8 +242,8 @@ module Syskit
       values[:selections] ||= DependencyInjection::EMPTY
       values[:arguments] ||= NO_ARGUMENTS
       values[:specialization_hints] ||= NO_HINTS
-      models = changes.key?(:models) ? changes.delete(:models) : values[:models]
-      values.delete(:models)
+      own_models = values.delete(:models)
+      models = changes.delete(:models) { own_models }
       InstanceRequirements.new(models, **values, **changes)
     end
   end

@@ -16,13 +16,10 @@ module Syskit
       # A specialization of this model, named +name+ or after this model
       # (+stereo::Task{1}+).
       def specialize(name = nil)
-        location = Location.of_caller
-        model = Class.new(self)
-        # A model declared in Ruby declares its subclasses so (see
-        # RubyTaskContext::Declarations); an oroGen one is declared here.
-        RubyTaskContext.declared_in_ruby(model, location) unless is_a?(RubyTaskContext::Declarations)
         @specialization_count = (@specialization_count || 0) + 1
-        model.instance_variable_set(:@given_name, name || "#{self.name}{#{@specialization_count}}")
+        # A submodel made in Ruby (see TaskContext.new_submodel), whose
+        # ports require_dynamic_service can add to.
+        model = new_submodel(name: name || "#{self.name}{#{@specialization_count}}")
         model.instance_variable_set(:@concrete_model, concrete_model)
         model
       end

@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require 'syskit/models/fullfillment'
 require 'syskit/instance_requirements/statements'
 
 module Syskit
@@ -16,6 +17,8 @@ module Syskit
   # definitions and device actions are requirements with a +name+.
   class InstanceRequirements
     include Statements
+    # Whether these requirements fullfill a model (or each of a list).
+    include Models::Fullfillment
 
     NO_ARGUMENTS = {}.freeze
     NO_HINTS = [].freeze
@@ -152,14 +155,6 @@ module Syskit
     def each_required_model(&)
       models.each(&)
     end
-
-    # Whether these requirements fullfill +model+ (or each of a list).
-    def fullfills?(model)
-      return model.all? { |m| fullfills?(m) } if model.is_a?(Array)
-
-      fullfilled_models.include?(model)
-    end
-    alias fulfills? fullfills?
 
     # The composition model these requirements select once injection and
     # specializations apply (Syskit's +narrow_model+).

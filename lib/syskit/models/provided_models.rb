@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require 'syskit/models/fullfillment'
 require 'syskit/models/provided_ports'
 
 module Syskit
@@ -10,6 +11,9 @@ module Syskit
     # order, its port names as each of them knows them, and the views
     # cached on that hierarchy. Part of DataServiceModel.
     module ProvidedModels
+      # Whether this model is +model+ or provides it, directly or not.
+      include Fullfillment
+
       # Methods of the model classes.
       module ClassMethods
         # Bumped whenever a data service model gains a parent (+provides+) or
@@ -45,15 +49,6 @@ module Syskit
         DataServiceModel.hierarchy_changed
         self
       end
-
-      # Whether this model is +model+ or provides it, directly or not; given
-      # a list, whether it fullfills each of them.
-      def fullfills?(model)
-        return model.all? { |m| fullfills?(m) } if model.is_a?(Array)
-
-        fullfilled_models.include?(model)
-      end
-      alias fulfills? fullfills?
 
       # Whether this model provides +model+, directly or not (Syskit's
       # +provides?+: a model does not provide itself).

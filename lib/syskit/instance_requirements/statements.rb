@@ -72,6 +72,19 @@ module Syskit
         copy(models: models.map { |m| m.equal?(model) ? specialized : m })
       end
 
+      # The transformer's frame names (+use_frames('world' => 'map')+) and
+      # its block (+transformer { frames ... }+): not modelled by this gem,
+      # one located warning each; the requirements stay as they are.
+      def use_frames(*_mappings)
+        Syskit.app&.not_modelled("use_frames on #{self} (the transformer)", Location.of_caller)
+        self
+      end
+
+      def transformer(*_args)
+        Syskit.app&.not_modelled("transformer on #{self}", Location.of_caller)
+        self
+      end
+
       # Which specializations to prefer when several apply.
       def prefer_specializations(hints)
         copy(specialization_hints: specialization_hints + [hints])

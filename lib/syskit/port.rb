@@ -113,6 +113,12 @@ module Syskit
       end
     end
 
+    # The component's own port: this one (a service's port readers give
+    # the task's ports already, see BoundService).
+    def to_component_port
+      self
+    end
+
     def ==(other)
       other.is_a?(BoundPort) && other.task.equal?(task) && other.name == name
     end

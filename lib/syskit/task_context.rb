@@ -107,15 +107,16 @@ module Syskit
     end
 
     # The services made for this task from dynamic services, as Syskit's
-    # required dynamic services: those its model requires (a
+    # required dynamic services (Syskit::BoundService, their options in
+    # +srv.model.dynamic_service_options+): those its model requires (a
     # specialization's, see Models::DynamicServices#require_dynamic_service)
     # and its devices' slaves declared from one.
     def each_required_dynamic_service(&block)
       return enum_for(__method__) unless block
 
-      model.required_dynamic_services.each(&block)
+      model.required_dynamic_services.each { |srv| yield srv.bind(self) }
       devices.each do |device|
-        device.each_slave { |slave| yield slave.service if slave.dynamic_service_name && slave.service }
+        device.each_slave { |slave| yield slave.service.bind(self) if slave.dynamic_service_name && slave.service }
       end
     end
 

@@ -27,6 +27,7 @@ module Syskit
         name 'rig'
         task_context 'Task' do
           property 'exports', 'int', 0
+          property 'summary', '/std/string', ''
           output_port 'main_frame', '/double'
           dynamic_output_port(/^\\w+_frame$/, '/double')
           dynamic_output_port(/^\\w+_level$/, '/double')
@@ -46,6 +47,18 @@ module Syskit
           def configure
             super
             properties.exports = each_required_dynamic_service.count
+            properties.summary = each_required_dynamic_service.map { |srv| describe_export(srv) }.join(' ')
+          end
+
+          # What a configure method reads of an instance: its name and
+          # options, the task port behind a service port, the device.
+          def describe_export(srv)
+            parts = [srv.name, srv.model.dynamic_service_options.fetch(:prefix, '-')]
+            if srv.fullfills?(MyApp::Devices::Camera)
+              parts << srv.as(MyApp::Devices::Camera).frame_port.to_component_port.name
+              parts << find_device_attached_to(srv).name
+            end
+            parts.join(':')
           end
         end
       RUBY
@@ -95,7 +108,49 @@ module Syskit
       assert_equal 'rig::Task{1}', task.model
       assert_includes task.ports.map(&:name), 'rear_frame'
       assert_equal 1, task.properties['exports']
+      assert_equal 'rear:-:rear_frame:rear_cam', task.properties['summary']
       assert_equal ['rear_cam'], task.devices
+    end
+
+    # using: takes requirements of the driver, as Syskit does: the device
+    # takes over their sections, deployment hints and deployment.
+    def test_a_device_driven_by_requirements
+      assert_nil load_robot(<<~RUBY, 'config/robots/default.rb' => "using_task_library 'rig'\n")
+        rear = OroGen.rig.Task.with_dynamic_service('export', as: 'rear', prefix: 'back')
+        device(Devices::Camera, as: 'rear_cam', using: rear.deployed_as('rear_rig'))
+      RUBY
+      device = MyApp::Profiles::Base.rear_cam_dev.device
+      assert_equal ['rig::Task{1}', 'rear_rig'], [device.using.name, device.declared_deployment.name]
+      task = plan.find_task('rear_rig')
+      assert_equal 'rear:back:back_frame:rear_cam', task.properties['summary']
+    end
+
+    def test_a_device_driven_by_requirements_with_arguments
+      error = load_robot(<<~RUBY)
+        device(Devices::Camera, as: 'rear_cam', using: OroGen.rig.Task.with_arguments(speed: 2))
+      RUBY
+      assert_reported error, /using: takes a driver task model, or its with_conf, prefer_deployed_tasks and deploy/,
+                      at: 'models/profiles/base.rb:7', hint: /chained calls/, root: @root
+    end
+
+    # The transformer is not modelled: use_frames warns, once, where it is
+    # written, and the definition plans as if it were not there.
+    def test_use_frames_is_not_modelled
+      load_robot(nil, 'models/profiles/base.rb' => <<~RUBY)
+        using_task_library 'rig'
+        module MyApp
+          module Profiles
+            profile 'Base' do
+              define 'side', OroGen.rig.Task.with_dynamic_service('dimmer', as: 'side').use_frames('world' => 'map')
+            end
+          end
+        end
+      RUBY
+      warnings = @app.problems.grep(NotModelled)
+      assert_equal 1, warnings.size
+      assert_reported warnings.first, /use_frames on rig::Task\{1\} \(the transformer\)/,
+                      at: 'models/profiles/base.rb:5', root: @root
+      assert_equal 'side:-', plan.find_task('rig').properties['summary']
     end
 
     # The hint deploys the task model: a specialization has no statement

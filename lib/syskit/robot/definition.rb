@@ -79,6 +79,7 @@ module Syskit
       def add_device(klass, model, name, using:, options:, location:, bus: nil)
         name = check_name(name, location)
         check_model(klass, model, location)
+        using, requirements = driver_requirements(using, location)
         check_using(using, location)
         unless options.empty?
           unknown = options.keys - DEVICE_OPTIONS
@@ -92,6 +93,7 @@ module Syskit
         end
 
         device = device_class(klass, model, bus).new(self, name, model, using: using, location: location)
+        device.adopt_requirements(requirements) if requirements
         @devices[name] = device
         attach(device, bus, location: location, **options) if bus
         profile&.define_device_action(device)
@@ -211,6 +213,26 @@ module Syskit
           "device expects a device model (device_type) or its driver task model, got #{describe(model)}",
           location: location, hint: hint
         )
+      end
+
+      # +using:+ names the driver by its task model, or by requirements of
+      # it (+Task.with_dynamic_service(...)+, +Task.with_conf(...)+, as
+      # Syskit accepts), or by one of its services (+Task.gps_srv+): the
+      # driver model, and the requirements the device takes over.
+      def driver_requirements(using, location)
+        case using
+        when Models::BoundService then [using.task_model, nil]
+        when InstanceRequirements
+          unless using.arguments.empty? && using.selections.empty? && !using.device
+            raise DeclarationError.new(
+              'using: takes a driver task model, or its with_conf, prefer_deployed_tasks and deployed_as; ' \
+              "got #{using}", location: location,
+                              hint: 'give the device its settings with chained calls (.with_conf, .period, ...)'
+            )
+          end
+          [using.component_model || using, using]
+        else [using, nil]
+        end
       end
 
       def check_using(using, location)

@@ -42,6 +42,15 @@ module Syskit
       # The deployment declared with #deployed_as, or nil.
       attr_reader :declared_deployment
 
+      # Takes over what +requirements+ (given as +using:+) ask of the
+      # driver: its configuration sections, deployment hints, deployment.
+      def adopt_requirements(requirements)
+        with_conf(*requirements.conf) if requirements.conf_given?
+        prefer_deployed_tasks(*requirements.deployment_hints) unless requirements.deployment_hints.empty?
+        @declared_deployment = requirements.deployment if requirements.deployment
+        self
+      end
+
       # The slave device +name+: a service of the driver declared +slave_of:+
       # the service driving this device (+driver_for Camera, as: 'left',
       # slave_of: 'stereo'+), registered when the driver is known. With

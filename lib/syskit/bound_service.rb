@@ -1,0 +1,79 @@
+# frozen_string_literal: true
+
+module Syskit
+  # A service of a task in a generated network, as Syskit's
+  # BoundDataService: what +each_required_dynamic_service+ yields to a
+  # configure method.
+  #
+  #   each_required_dynamic_service do |srv|
+  #     next unless srv.fullfills?(Devices::Gazebo::Joint)
+  #
+  #     srv.name                                   # 'left_wheel'
+  #     srv.model.dynamic_service_options          # { joint_names: [...] }
+  #     srv.joints_status_port                     # the task's port behind it
+  #     find_device_attached_to(srv)               # the device it drives
+  #   end
+  #
+  # Its +model+ is the task model's service (a Models::BoundService); it is
+  # seen through +service_model+ (the service's model, or one it provides
+  # after +as+), whose ports it has as +x_port+.
+  class BoundService
+    attr_reader :component, :model, :service_model
+
+    def initialize(component, model, service_model = model.model)
+      @component = component
+      @model = model
+      @service_model = service_model
+      service_model.ports.each_key do |name|
+        define_singleton_method("#{name}_port") { find_port(name) }
+      end
+    end
+
+    def name
+      model.name
+    end
+
+    def full_name
+      model.full_name
+    end
+
+    def master?
+      model.master?
+    end
+
+    # Whether the service provides +other+ (a data service model).
+    def fullfills?(other)
+      service_model.fullfills?(other)
+    end
+
+    # The service seen through +other+, a model it provides: its ports are
+    # then +other+'s.
+    def as(other)
+      return self if other.equal?(service_model)
+      return BoundService.new(component, model, other) if fullfills?(other)
+
+      raise ArgumentError, "#{self} does not provide #{other}"
+    end
+
+    # The task's port behind the service port +name+, or nil.
+    def find_port(name)
+      return unless service_model.find_port(name)
+
+      component.find_bound_port(model.task_port_for(service_model, name.to_s).name)
+    end
+
+    def ==(other)
+      other.is_a?(BoundService) && other.component.equal?(component) && other.model.equal?(model)
+    end
+    alias eql? ==
+
+    def hash
+      [component, model].hash
+    end
+
+    def to_s
+      "#{component}.#{full_name}_srv"
+    end
+    alias inspect to_s
+  end
+end

@@ -47,11 +47,17 @@ module Syskit
       assert_equal 1, Base::OLD
     end
 
-    def test_base_is_defined_by_requiring_base_float_only
-      # A profile named Base that fails to load must not resolve to Rock's
-      # ::Base in a test that names it.
+    # Base comes with the base typekit, as Rock's Ruby plugin of it loads
+    # base/float: it is the app's, which its files may reopen, and goes
+    # with it.
+    def test_base_is_the_app_s_own
+      app = load_app(rig_app({ 'models/a_base.rb' => "module Base\n  OLD = 1\nend\n" }))
+      assert Base.unknown.nan?
+      assert_equal 1, Base::OLD
+      app.unload
       load_app(rig_app({}))
-      refute Object.const_defined?(:Base, false)
+      assert Base.unset.nan?
+      refute Base.const_defined?(:OLD, false), 'the first app reopened its own Base'
     end
   end
 end

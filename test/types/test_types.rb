@@ -13,6 +13,15 @@ module Syskit
       end
       enum 'Mode', %w[ACTIVE PASSIVE]
       opaque 'Calibration'
+      struct 'Stamp' do
+        field 'usec', '/int64_t'
+      end
+      convert_from_ruby ::Time, 'Stamp' do |time|
+        new(usec: time.tv_sec * 1_000_000 + time.tv_usec)
+      end
+      struct 'Reading' do
+        field 'stamp', '/my_bus/Stamp'
+      end
     RUBY
 
     def setup
@@ -45,6 +54,29 @@ module Syskit
       assert_match(/has no field 'nmae' \(did you mean 'name'\?\)/, error.message)
       error = assert_raises(ArgumentError) { ::Types.my_bus.Device.new('a', 1, 2, 3) }
       assert_match(/has 3 fields \(name, id, mask\), got 4 values/, error.message)
+    end
+
+    # Typelib's convert_from_ruby: a Ruby value stands for the type's.
+    def test_a_typekit_converts_ruby_values
+      reading = ::Types.my_bus.Reading.new(stamp: Time.at(2, 500_000))
+      assert_equal 2_500_000, reading.stamp.usec
+      reading.stamp = Time.at(3)
+      assert_equal ::Types.my_bus.Stamp.new(3_000_000), reading.stamp
+      error = assert_raises(ArgumentError) { reading.stamp = 'now' }
+      assert_match(%r{/my_bus/Reading.stamp: expected a /my_bus/Stamp or a hash of its fields \(usec\)}, error.message)
+    end
+
+    # Rock's base typekit: a Ruby Time is a /base/Time, and base/float's
+    # Base comes with the typekit, as Rock's Ruby plugin of it loads it.
+    def test_the_base_typekit_takes_ruby_times_and_brings_base
+      @app.unload
+      refute Object.const_defined?(:Base, false)
+      app = load_app(my_app(nil, 'models/devices/x.rb' => "module MyApp\n  import_types_from 'base'\nend\n"))
+      temperature = ::Types.base.samples.Temperature.new(time: Time.at(1, 250))
+      assert_equal 1_000_250, temperature.time.microseconds
+      assert Base.unknown.nan?
+      app.unload
+      refute Object.const_defined?(:Base, false), 'Base goes with the app'
     end
 
     def test_plain_data_converts_to_values

@@ -51,11 +51,12 @@ module Syskit
       constant, methods = PROVIDED_LIBRARIES.fetch(name.to_s)
       if Object.const_defined?(constant, false)
         existing = Object.const_get(constant)
-        return false if existing.equal?(methods) || existing.singleton_class.include?(methods)
+        return false if existing.singleton_class.include?(methods)
 
         existing.extend(methods)
       else
-        Object.const_set(constant, methods)
+        # A module of the app's own, which its files may reopen.
+        Object.const_set(constant, Module.new.extend(methods))
       end
       true
     end

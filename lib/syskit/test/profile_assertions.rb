@@ -55,7 +55,11 @@ module Syskit
         profile = desc.respond_to?(:syskit_profile) ? desc.syskit_profile : nil
         return profile if profile
 
-        flunk "profile assertions need `describe SomeProfile do ... end`, not #{desc.inspect}"
+        message = "profile assertions need `describe SomeProfile do ... end`, not #{desc.inspect}"
+        # A profile whose file did not load leaves its name to whatever
+        # else has it (Rock's ::Base, from the base typekit).
+        message += ': the profile may not be defined, see the problems of the app' unless Test.app.errors.empty?
+        flunk message
       end
 
       def syskit_requirements(actions)

@@ -112,15 +112,12 @@ module Syskit
       # Loads a test file; what it raises while being loaded (a syntax
       # error, a typo at its top level, a library that is not installed, an
       # exit that would leave the next files unloaded) is reported at its
-      # line, on stderr and as a failing test of its own, and the other
-      # files' tests run.
+      # line, on stderr (after the app's own problems, see Test.app) and as
+      # a failing test of its own, and the other files' tests run.
       def self.load_test_file(path)
         require path
       rescue Syskit::Error, ScriptError, StandardError, SystemExit => e
         error = UserCode.translate(e, path: path, root: Test.app.root)
-        # The app's own problems come first: they are often the cause.
-        Test.app.errors.each { |problem| warn problem.report(Dir.pwd) } unless @app_problems_shown
-        @app_problems_shown = true
         report = error.report(Dir.pwd)
         warn report
         Class.new(Minitest::Test) do

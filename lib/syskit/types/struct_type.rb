@@ -40,7 +40,11 @@ module Syskit
         when StructValue
           raise ValueError, "expected a #{name}, got a #{value.class.type.name}"
         when Hash then from_hash(value)
-        else mismatch(value, "a #{name} or a hash of its fields (#{field_names.join(', ')})")
+        else
+          converted = converted_from_ruby(value)
+          return from_ruby(converted) if converted
+
+          mismatch(value, "a #{name} or a hash of its fields (#{field_names.join(', ')})")
         end
       end
 

@@ -16,7 +16,8 @@ module Syskit
     class TypekitLoader
       # The statements of a typekit file.
       class DSL
-        STATEMENTS = %w[struct enum opaque alias_type import_types_from accept_unknown_types specialize_model].freeze
+        STATEMENTS = %w[struct enum opaque alias_type import_types_from accept_unknown_types specialize_model
+                        convert_from_ruby ruby_library].freeze
         # A type name, relative to the typekit (Device) or absolute (/my_bus/Device).
         TYPE_NAME = %r{\A/?[A-Za-z_]\w*(?:/[A-Za-z_]\w*)*\z}
 
@@ -75,6 +76,40 @@ module Syskit
           type = @loader.registry.resolve(@loader.full_name(name), location: Location.of_caller)
           type.singleton_class.class_eval(&block)
           type
+        end
+
+        # How a value of a Ruby class stands for a value of the type, as
+        # Typelib's +convert_from_ruby+ (Rock writes a ::Time where a
+        # /base/Time is expected): the block, evaluated on the type, makes
+        # the type's value from the Ruby one.
+        #
+        #   convert_from_ruby ::Time, 'Time' do |time|
+        #     new(microseconds: (time.to_r * 1_000_000).to_i)
+        #   end
+        def convert_from_ruby(ruby_class, name = nil, &block)
+          example = "convert_from_ruby ::Time, 'Time' do |time| new(...) end"
+          name = type_name(name, 'convert_from_ruby', example)
+          Arguments.block(block, statement: "convert_from_ruby #{ruby_class}, '#{name}'", error_class: TypeError,
+                                 example: example)
+          location = Location.of_caller
+          unless ruby_class.is_a?(Module)
+            raise TypeError.new("convert_from_ruby expects a Ruby class, got #{ruby_class.inspect}",
+                                location: location, hint: example)
+          end
+          @loader.registry.resolve(@loader.full_name(name), location: location).convert_from_ruby(ruby_class, block)
+        end
+
+        # A Ruby library that Rock loads with this typekit's Ruby plugin,
+        # and that the gem provides (+ruby_library 'base/float'+: the
+        # top-level +Base.unknown+ that Rock code writes).
+        def ruby_library(name)
+          location = Location.of_caller
+          unless Compat.provided_library?(name)
+            raise TypeError.new("ruby_library '#{name}' is not a library the gem provides",
+                                location: location, hint: 'remove it')
+          end
+
+          Compat.require_provided(name)
         end
 
         def explain_missing(name)

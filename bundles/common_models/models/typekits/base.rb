@@ -13,6 +13,14 @@ specialize_model 'Time' do
   end
 end
 
+# Rock's Ruby code writes a Ruby Time wherever a /base/Time goes.
+convert_from_ruby ::Time, 'Time' do |time|
+  new(microseconds: (time.to_r * 1_000_000).to_i)
+end
+
+# Loaded with the base typekit in Rock: Base.unknown, Base.unset (NaN).
+ruby_library 'base/float'
+
 # Scalars whose value is NaN when unknown.
 struct 'Angle' do
   field 'rad', '/double', unknown: true

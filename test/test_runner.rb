@@ -19,7 +19,7 @@ module Syskit
     def test_test_files_in_syskits_forms_pass_and_runtime_tests_are_skipped_with_the_reason
       out, err, status = syskit_test('--app', ROVER, '-v')
       assert status.success?, "#{out}\n#{err}"
-      assert_match(/^13 runs, \d+ assertions, 0 failures, 0 errors, 1 skips$/, out)
+      assert_match(/^16 runs, \d+ assertions, 0 failures, 0 errors, 1 skips$/, out)
       assert_match(/^syskit_deploy needs Syskit's runtime \(Roby and Orocos\)$/, out)
       assert_match(/^scanner::Task#test_0001_anonymous = [\d.]+ s = \.$/, out, 'it { is_configurable }')
     end

@@ -8,6 +8,7 @@ require 'syskit/test/profile_assertions'
 require 'syskit/test/task_assertions'
 require 'syskit/test/runtime_only'
 require 'syskit/test/model_helpers'
+require 'syskit/test/subject_model'
 
 module Syskit
   # Test support for apps: `require 'syskit/test'` at the top of a test
@@ -30,7 +31,9 @@ module Syskit
       include TaskAssertions
       include ModelHelpers
       include RuntimeOnly
+      include SubjectModel
       extend RuntimeOnly::ClassMethods
+      extend SubjectModel::ClassMethods
     end
 
     # Syskit's test base classes, for tests written as classes
@@ -94,8 +97,11 @@ module Syskit
 
       # An app with problems still runs its tests (a bundle may hold files
       # Rock itself never loads, and the tests that do not use them say so
-      # by passing); the problems are one failing test of their own.
+      # by passing); the problems are printed first, on stderr (they are
+      # often the cause of what fails next), and are one failing test of
+      # their own.
       def report_load_problems(app)
+        app.errors.each { |problem| warn problem.report(Dir.pwd) }
         report = app.errors.map { |e| e.report(app.root) }.join("\n")
         count = app.errors.size
         Class.new(Minitest::Test) do

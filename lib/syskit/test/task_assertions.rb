@@ -31,11 +31,16 @@ module Syskit
 
       private
 
+      # The subject model (see SubjectModel), when it is a task model or
+      # requirements of one.
       def syskit_described_task_model
-        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
-        return desc if desc.is_a?(Class) && desc < TaskContext
+        model = subject_syskit_model
+        task_model = model.respond_to?(:component_model) ? model.component_model : model
+        return model if task_model.is_a?(Class) && task_model < TaskContext
 
-        flunk "is_configurable needs `describe OroGen.library.Task do ... end` or a task model, not #{desc.inspect}"
+        flunk "is_configurable needs a task model (describe OroGen.library.Task do ... end), not #{model.inspect}"
+      rescue ArgumentError => e
+        flunk "is_configurable: #{e.message}"
       end
 
       # Stub devices for the services through which +model+ drives devices

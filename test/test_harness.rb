@@ -110,7 +110,7 @@ module Syskit
       out, err, status = syskit_test(app)
       refute status.success?
       assert_match(%r{\Amodels/devices/imu\.rb:1: 'imu' is not a valid name for a device}, err)
-      assert_match(/profile assertions need `describe SomeProfile do ... end`, not Base: the profile may not be defined/, out)
+      assert_match(/profile assertions need `describe SomeProfile do ... end`, not Base: the profile may not be/, out)
     end
 
     def test_an_app_with_problems_runs_the_tests_that_do_not_depend_on_them

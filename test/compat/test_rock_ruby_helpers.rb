@@ -19,6 +19,22 @@ module Syskit
       assert_equal RBS, Rig::Services::Pose.pose_port.orocos_type_name
     end
 
+    # Syskit's service models include what they provide: Ruby's module
+    # comparisons answer whether one provides another.
+    def test_service_models_compare_as_modules
+      load_rig
+      odometry = Rig::Services::Odometry
+      pose = Rig::Services::Pose
+      assert_operator odometry, :<=, pose
+      assert_operator odometry, :<, pose
+      assert_operator pose, :<=, pose
+      refute_operator pose, :<, pose
+      refute_operator pose, :<=, odometry
+      assert_operator pose, :>, odometry
+      assert_operator pose, :>=, odometry
+      assert_nil pose <= Comparable, 'unrelated modules: as Ruby answers'
+    end
+
     def test_ports_say_whether_they_can_connect
       load_rig
       out = Rig::Services::Pose.pose_port

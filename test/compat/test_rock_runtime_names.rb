@@ -32,7 +32,8 @@ module Syskit
       out, err, status = Open3.capture3(RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'test', '--app', HARBOR,
                                         '-v')
       assert status.success?, "#{out}\n#{err}"
-      assert_match(/^13 runs, \d+ assertions, 0 failures, 0 errors, 5 skips$/, out)
+      assert_match(/^14 runs, \d+ assertions, 0 failures, 0 errors, 6 skips$/, out)
+      assert_match(/^use_deployment needs Syskit's runtime/, out)
       assert_match(/^expect_execution_default_timeout= needs Syskit's runtime/, out)
       assert_match(/^execute_robot_controller needs Syskit's runtime/, out)
       assert_match(/^syskit_configure needs Syskit's runtime/, out)

@@ -92,6 +92,23 @@ module Syskit
       assert_task_model_unchanged
     end
 
+    def test_the_options_of_an_instance
+      assert_nil load_robot(nil)
+      model = OroGen.rig.Task.specialize
+      model.require_dynamic_service('export', as: 'rear', prefix: 'back')
+      assert_equal [{ prefix: 'back' }], model.each_required_dynamic_service.map(&:dynamic_service_options)
+      assert_same model, model.ensure_model_is_specialized
+    end
+
+    # Helpers of real bundles specialize the model they are given when it
+    # is not one already.
+    def test_ensure_model_is_specialized
+      assert_nil load_robot(nil)
+      made = OroGen.rig.Task.ensure_model_is_specialized
+      assert_equal ['rig::Task{1}', OroGen.rig.Task], [made.name, made.concrete_model]
+      assert_empty OroGen.rig.Task.each_required_dynamic_service.to_a
+    end
+
     def assert_task_model_unchanged
       assert_nil OroGen.rig.Task.find_data_service('rear')
       assert_nil OroGen.rig.Task.find_port('back_frame')

@@ -60,6 +60,14 @@ module Syskit
         inherited + (@required_dynamic_services || [])
       end
 
+      # Enumerates them, as Syskit's model-level method: each a service of
+      # this model (+srv.model+, +srv.dynamic_service_options+).
+      def each_required_dynamic_service(&)
+        return enum_for(__method__) unless block_given?
+
+        required_dynamic_services.each(&)
+      end
+
       # The dynamic service +name+, or an error located at +location+
       # saying what it was asked for (+purpose+).
       def fetch_dynamic_service(name, location, purpose)

@@ -56,6 +56,24 @@ module Syskit
         !equal?(model) && fullfills?(model)
       end
 
+      # Ruby's comparisons of modules, as Syskit's service models answer
+      # them (they include what they provide): +Odometry <= Pose+.
+      def <=(other)
+        other.is_a?(ProvidedModels) ? fullfills?(other) : super
+      end
+
+      def <(other)
+        other.is_a?(ProvidedModels) ? provides?(other) : super
+      end
+
+      def >=(other)
+        other.is_a?(ProvidedModels) ? other.fullfills?(self) : super
+      end
+
+      def >(other)
+        other.is_a?(ProvidedModels) ? other.provides?(self) : super
+      end
+
       # This model and every model it provides, in the order Syskit lists
       # them (Ruby's ancestors when models include what they provide): the
       # model, what it provided last first, the roots (Device, DataService)

@@ -29,6 +29,12 @@ module Syskit
         !@concrete_model.nil?
       end
 
+      # This model if it is a specialization, else a new one (Syskit's
+      # name: helpers that require dynamic services call it first).
+      def ensure_model_is_specialized
+        specialization? ? self : specialize
+      end
+
       # The model deployments run: this one, or the one a specialization
       # was made from (as Syskit's concrete_model).
       def concrete_model

@@ -17,7 +17,7 @@ module Syskit
         syskit_stub_deployment expect_execution execute execute_one_cycle plan assert_event_emission
         assert_has_one_new_sample assert_has_no_new_sample assert_event_command_failed assert_times_out
         assert_fatal_exception assert_transitions_to_state execute_robot_controller
-        expect_execution_default_timeout=
+        expect_execution_default_timeout= use_deployment use_ruby_tasks use_unmanaged_task
       ].freeze
 
       METHODS.each do |name|

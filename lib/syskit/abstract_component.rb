@@ -18,5 +18,23 @@ module Syskit
     def self.create_proxy_task_model(models, **)
       Models::Placeholder.for(models)
     end
+
+    private
+
+    # Sets the task's arguments as Roby does: through the writer of each
+    # (+argument :x+ gives one; a model may define its own, that checks or
+    # derives values: +def setpoint=(hash) ... arguments[:setpoint] =
+    # hash end+), a delayed argument as it is.
+    def assign_arguments(given)
+      @arguments = {}
+      given.each do |key, value|
+        writer = :"#{key}="
+        if respond_to?(writer) && !value.is_a?(Compat::DelayedArgument)
+          public_send(writer, value)
+        else
+          @arguments[key] = value
+        end
+      end
+    end
   end
 end

@@ -24,10 +24,10 @@ module Syskit
 
     def initialize(arguments = {})
       super()
-      @arguments = arguments
       @children = {}
       @child_selections = {}
       @conf = InstanceRequirements::DEFAULT_CONF
+      assign_arguments(arguments)
     end
 
     # The requirements selected for each child, by role (what the child

@@ -50,13 +50,13 @@ module Syskit
 
     def initialize(arguments = {})
       super()
-      @arguments = arguments
       @properties = model.properties_class.new
       @created_ports = NO_PORTS
       @children = []
       @child_tasks = []
       @connections = NO_CONNECTIONS
       @conf = Robot::Device::DEFAULT_CONF
+      assign_arguments(arguments)
     end
 
     def model

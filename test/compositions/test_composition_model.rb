@@ -250,6 +250,23 @@ module Syskit
       assert_equal 2, model.new(speed: 2).speed
     end
 
+    # As on a Roby task, arguments given to new go through the writer a
+    # model defines to check or derive them.
+    def test_arguments_go_through_the_model_s_writers
+      model = new_cmp do
+        argument :speed
+        def speed=(value)
+          raise ArgumentError, "speed #{value} is negative" if value.negative?
+
+          arguments[:speed] = value.round(1)
+        end
+      end
+      assert_equal 1.3, model.new(speed: 1.26).speed
+      assert_raises(ArgumentError) { model.new(speed: -1) }
+      delayed = model.from(:parent_task).speed
+      assert_same delayed, model.new(speed: delayed).arguments[:speed], 'delayed: kept as it is'
+    end
+
     def test_runtime_statements_are_accepted_with_a_warning
       app = Syskit.app
       model = new_cmp do

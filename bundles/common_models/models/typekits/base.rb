@@ -115,3 +115,11 @@ specialize_model 'samples/RigidBodyState' do
   end
   alias_method :Invalid, :invalid
 end
+
+# A command on the six axes of a body (controllers' setpoints): what is not
+# commanded is NaN.
+struct 'LinearAngular6DCommand' do
+  field 'time', '/base/Time'
+  field 'linear', '/base/Vector3d'
+  field 'angular', '/base/Vector3d'
+end

@@ -255,7 +255,7 @@ module Syskit
     def test_arguments_go_through_the_model_s_writers
       model = new_cmp do
         argument :speed
-        def speed=(value)
+        define_method(:speed=) do |value|
           raise ArgumentError, "speed #{value} is negative" if value.negative?
 
           arguments[:speed] = value.round(1)

@@ -60,7 +60,7 @@ module Syskit
             end
 
             it 'stubs what nothing selects' do
-              cmp = syskit_stub_and_deploy(Follow)
+              cmp = syskit_stub_and_deploy(Follow, recursive: true)
               assert cmp.pose_child.model.fullfills?(Services::Pose)
               assert_same Devices::Wheel, cmp.wheel_child.robot_device.model
               assert cmp.follower_child.command_port.connected_to?(cmp.wheel_child.cmd_port)
@@ -187,6 +187,12 @@ module Syskit
             it 'has the sections of the files again in the next test' do
               assert_equal 1.0, syskit_stub_deploy_and_configure(Follow).follower_child.properties.gain
             end
+
+            # As Syskit's stubs: a section no file has is empty in a test.
+            it 'gives its children the sections they ask for' do
+              night = Follow.use('follower' => OroGen.rig.Follower.with_conf('default', 'night'))
+              assert_equal 1.0, syskit_stub_deploy_and_configure(night).follower_child.properties.gain
+            end
           end
         end
       end
@@ -270,7 +276,7 @@ module Syskit
       app = rig_app({ 'models/compositions/follow.rb' => FOLLOW, 'test/compositions/test_conf.rb' => CONF_TEST })
       out, err, status = syskit_test(app, 'test/compositions/test_conf.rb', '--seed', '1')
       assert status.success?, "#{out}\n#{err}"
-      assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
+      assert_match(/3 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out)
       out, err, status = syskit_test(app, 'test/compositions/test_conf.rb', '--seed', '2')
       assert status.success?, "#{out}\n#{err}"
     end

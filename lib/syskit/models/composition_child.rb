@@ -2,6 +2,7 @@
 
 require 'syskit/models/child_port'
 require 'syskit/models/port_lookup'
+require 'syskit/models/child_service_view'
 
 module Syskit
   module Models
@@ -111,7 +112,17 @@ module Syskit
       # (+cmp_child.test_srv.test_port+).
       def find_data_service(name)
         srv = requirements.component_model&.find_service(name)
-        ServiceView.new(self, srv.model) if srv
+        ServiceView.new(self, srv.model, srv) if srv
+      end
+
+      # The services of the child that provide +service_model+, each a view
+      # of the child through it (Syskit's bound services of a child, seen
+      # as +service_model+; +as_real_model+ sees one as its own model): of
+      # its component model, or of the placeholder standing for its
+      # service models.
+      def find_all_data_services_from_type(service_model)
+        component = requirements.component_model || Placeholder.for(models)
+        component.services_fulfilling(service_model).map { |srv| ServiceView.new(self, service_model, srv) }
       end
 
       # Connects the child's output ports to the input ports of +other+ (a
@@ -169,28 +180,6 @@ module Syskit
           next if !srv.master? || respond_to?(reader)
 
           define_singleton_method(reader) { find_data_service(srv.name) }
-        end
-      end
-
-      # A child seen through one of its service models.
-      class ServiceView
-        attr_reader :child, :service_model
-
-        def initialize(child, service_model)
-          @child = child
-          @service_model = service_model
-          service_model.ports.each_key do |name|
-            define_singleton_method("#{name}_port") { find_port(name) }
-          end
-        end
-
-        def find_port(name)
-          port = service_model.find_port(name)
-          ChildPort.new(child, port, service_model) if port
-        end
-
-        def to_s
-          "#{child}.as(#{service_model})"
         end
       end
     end

@@ -37,7 +37,7 @@ module Syskit
 
       def apply_sections(task, device)
         location = sections_location(task, device)
-        file = @context.app.conf_file(task.model)
+        file = stubbed_sections(@context.app.conf_file(task.model), task.conf, location)
         unless file
           return if task.conf == ['default']
 
@@ -52,6 +52,22 @@ module Syskit
         file.merged(task.conf, location: location).each do |key, value|
           apply_value(task, file, key, value)
         end
+      end
+
+      STUBBED_AT = Location.new('(stubbed sections)', 0)
+      private_constant :STUBBED_AT
+
+      # With stub deployments (the network of a test), the sections a task
+      # asks for that its file lacks are empty, as Syskit's stubs make
+      # them: a test of a composition needs no configuration file for each
+      # of its children.
+      def stubbed_sections(file, names, location)
+        return file unless @context.stub_deployments
+
+        missing = names - (file&.section_names || [])
+        return file if missing.empty?
+
+        (file || Config::ConfFile.empty('(stubbed)')).with_sections(missing, {}, location || STUBBED_AT)
       end
 
       # Where the task's sections were chosen: the device's with_conf, else

@@ -77,10 +77,13 @@ module Syskit
       # still abstract is stubbed (a task providing the services, a device
       # and its driver), every task stub-deployed and configured. Returns
       # the root task (the composition), also available as +task+.
-      def syskit_stub_and_deploy(model = syskit_described_model, &)
+      # Syskit's +recursive:+ and +as_missions:+ are accepted: what nothing
+      # selects is always stubbed, at any depth, and there is no Roby plan
+      # whose missions they would be.
+      def syskit_stub_and_deploy(model = syskit_described_model, recursive: true, as_missions: false, &block) # rubocop:disable Lint/UnusedMethodArgument
         models = model.is_a?(Array) ? model : [model]
         requirements = models.map { |m| m.respond_to?(:to_instance_requirements) ? m.to_instance_requirements : m }
-        result = syskit_stub_generate(requirements, &)
+        result = syskit_stub_generate(requirements, &block)
         roots = result.context.roots
         @task = model.is_a?(Array) ? roots : roots.first
       end

@@ -21,16 +21,16 @@ module Syskit
 
     private
 
-    # Sets the task's arguments as Roby does: through the writer of each
-    # (+argument :x+ gives one; a model may define its own, that checks or
-    # derives values: +def setpoint=(hash) ... arguments[:setpoint] =
-    # hash end+), a delayed argument as it is.
+    # Sets the task's arguments as Roby does: a declared argument through
+    # its writer (+argument :x+ gives one; a model may define its own, that
+    # checks or derives values: +def setpoint=(hash) ...
+    # arguments[:setpoint] = hash end+), the others, and a delayed
+    # argument, as they are.
     def assign_arguments(given)
       @arguments = {}
       given.each do |key, value|
-        writer = :"#{key}="
-        if respond_to?(writer) && !value.is_a?(Compat::DelayedArgument)
-          public_send(writer, value)
+        if model.argument_declared?(key) && !value.is_a?(Compat::DelayedArgument)
+          public_send(:"#{key}=", value)
         else
           @arguments[key] = value
         end

@@ -299,6 +299,8 @@ module Syskit
       assert_raises(ArgumentError) { model.new(speed: -1) }
       delayed = model.from(:parent_task).speed
       assert_same delayed, model.new(speed: delayed).arguments[:speed], 'delayed: kept as it is'
+      task = model.new(name: 'not the task name')
+      assert_equal ['not the task name', nil], [task.arguments[:name], task.name], 'not an argument: kept as it is'
     end
 
     def test_runtime_statements_are_accepted_with_a_warning

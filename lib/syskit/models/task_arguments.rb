@@ -44,6 +44,13 @@ module Syskit
         argument_declarations.transform_values { |default, _| default.equal?(NO_DEFAULT) ? nil : default }
       end
 
+      # Whether +name+ (a symbol) is an argument declared with +argument+,
+      # here or in a parent model.
+      def argument_declared?(name)
+        @argument_declarations&.key?(name) ||
+          (superclass.respond_to?(:argument_declared?) && superclass.argument_declared?(name))
+      end
+
       def argument_declarations
         inherited = superclass.respond_to?(:argument_declarations) ? superclass.argument_declarations : {}
         inherited.merge(@argument_declarations || {})

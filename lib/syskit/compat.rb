@@ -21,8 +21,8 @@ module Syskit
   # - recorded (affects the plan): Robot.requires blocks, Syskit.conf's
   #   deployment statements, Roby.app.auto_load_all_task_libraries;
   # - accepted, with one located "not modelled by this gem" warning each:
-  #   Roby tasks, action interfaces and
-  #   command libraries (the classes below), runtime-only task statements
+  #   Roby tasks, action interfaces, command libraries and coordination
+  #   models (data monitoring tables, scripts; the classes below), runtime-only task statements
   #   (TaskStatements::RUNTIME_STATEMENTS), profile statements about compositions
   #   (Profile::NOT_MODELLED), Roby.app's runtime settings;
   # - accepted silently: what only a running system needs (use_deployment's
@@ -193,6 +193,15 @@ module Syskit
     not_modelled_class(Roby::Actions, :Interface, 'action interface')
     Roby.const_set(:Interface, Module.new)
     not_modelled_class(Roby::Interface, :CommandLibrary, 'Roby command library')
+    # Coordination models: what runs while tasks run (state machines,
+    # scripts, data monitors).
+    Roby.const_set(:Coordination, Module.new)
+    %i[ActionStateMachine ActionScript TaskScript].each do |name|
+      not_modelled_class(Roby::Coordination, name, 'Roby coordination model')
+    end
+    Syskit.const_set(:Coordination, Module.new)
+    not_modelled_class(Syskit::Coordination, :DataMonitoringTable, 'data monitoring table')
+    not_modelled_class(Syskit::Coordination, :TaskScript, 'task script')
   end
 end
 

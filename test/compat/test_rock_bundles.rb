@@ -33,6 +33,7 @@ module Syskit
       warnings = out.lines.grep(/: warning: /).map { |l| l.sub(/: not modelled by this gem.*/m, '').strip }
       assert_equal [
         'models/actions/main.rb:4: warning: action interface Rover::Actions::Main',
+        'models/actions/main.rb:14: warning: data monitoring table Rover::Actions::WallWatch',
         "#{File.join(FIXTURES, 'rock',
                      'base_parts')}/models/orogen/scanner.rb:10: warning: transformer in scanner::Task",
         'models/orogen/can_hub.rb:20: warning: poll in can_hub::Task',
@@ -41,7 +42,7 @@ module Syskit
         'config/robots/default.rb:5: warning: Roby.scheduler',
         'config/robots/sim.rb:5: warning: Syskit.conf.use_gazebo_world'
       ], warnings
-      assert_match(/^Rover: 0 error\(s\), 7 warning\(s\)$/, out)
+      assert_match(/^Rover: 0 error\(s\), 8 warning\(s\)$/, out)
       # The hint of these warnings is said once, under the first; JSON
       # keeps it for each.
       hint = 'syskit plans devices, buses, their drivers and compositions; this has no effect on the plan'
@@ -81,7 +82,7 @@ module Syskit
     def test_plan_says_in_one_line_that_there_are_warnings
       _, err, status = run_cli('plan', '--app', ROVER)
       assert_equal 0, status
-      assert_equal "6 warnings while loading (syskit check lists them)\n", err
+      assert_equal "7 warnings while loading (syskit check lists them)\n", err
     end
 
     # Roby's Conf: what robot configurations write, configure methods read.

@@ -180,40 +180,6 @@ module Syskit
       assert model.pose_child.pose_port.connected_to?(model.follow_child.pose_port)
     end
 
-    # The services of a child, as generators in real bundles walk them:
-    # each a view of the child through one service of its model, whose
-    # ports are the child's behind it.
-    def test_the_services_of_a_child
-      model = new_cmp do
-        add OroGen.rig.Tracker, as: 'track'
-        add OroGen.rig.Follower, as: 'follow'
-      end
-      front, rear = model.track_child.find_all_data_services_from_type(Rig::Services::Pose)
-      assert_equal %w[front_pose rear_pose], [front.name, rear.name]
-      assert_same Rig::Services::Pose, rear.model.model
-      assert_equal rear, model.track_child.find_data_service('rear_pose')
-      refute_equal front, rear
-      assert_equal rear, rear.as_real_model
-      assert_raises(ArgumentError) { rear.as(Rig::Services::Odometry) }
-    end
-
-    def test_a_child_s_service_connects_its_own_ports
-      model = new_cmp do
-        add OroGen.rig.Tracker, as: 'track'
-        add OroGen.rig.Follower, as: 'follow'
-      end
-      model.track_child.rear_pose_srv.connect_to model.follow_child
-      assert model.track_child.rear_port.connected_to?(model.follow_child.pose_port)
-      refute model.track_child.front_port.connected_to?(model.follow_child.pose_port)
-    end
-
-    def test_the_services_of_a_child_that_requires_a_service
-      model = new_cmp { add Rig::Services::Odometry, as: 'odom' }
-      pose, = model.odom_child.find_all_data_services_from_type(Rig::Services::Pose)
-      assert_same Rig::Services::Odometry, pose.as_real_model.service_model
-      assert_equal model.odom_child.odometry_port, pose.pose_port, 'the same port of the child'
-    end
-
     def test_connected_to_follows_the_services_a_child_is_overloaded_with
       model = new_cmp do
         add Rig::Services::Pose, as: 'pose'

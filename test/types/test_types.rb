@@ -66,6 +66,16 @@ module Syskit
       assert_match(%r{/my_bus/Reading.stamp: expected a /my_bus/Stamp or a hash of its fields \(usec\)}, error.message)
     end
 
+    def test_a_conversion_to_a_type_that_is_not_a_struct_is_refused
+      @app.unload
+      typekit = "enum 'Mode', %w[ACTIVE PASSIVE]\nconvert_from_ruby ::Symbol, 'Mode' do |s| s end\n"
+      root = my_app(nil, 'models/typekits/modes.rb' => typekit,
+                         'models/devices/x.rb' => "module MyApp\n  import_types_from 'modes'\nend\n")
+      app = load_app(root, problems: true)
+      assert_reported app.errors.first, %r{convert_from_ruby applies to struct types; /modes/Mode is not one},
+                      at: 'models/typekits/modes.rb:2', hint: /struct 'Mode'/, root: root
+    end
+
     # Rock's base typekit: a Ruby Time is a /base/Time, and base/float's
     # Base comes with the typekit, as Rock's Ruby plugin of it loads it.
     def test_the_base_typekit_takes_ruby_times_and_brings_base

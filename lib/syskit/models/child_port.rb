@@ -60,7 +60,7 @@ module Syskit
       # optional policy: +connect_to other, type: :buffer, size: 10+.
       def connect_to(other, policy = {})
         location = Location.of_caller
-        return ChildPort.autoconnect([self], other, policy, location) if other.is_a?(CompositionChild)
+        return ChildPort.autoconnect([self], other, policy, location) if other.is_a?(ChildConnections)
 
         composition_model.add_connection(self, other, ChildPort.policy(policy, location), location)
         self
@@ -153,6 +153,17 @@ module Syskit
           "#{out} could connect to several inputs of #{other}: #{names.join(', ')}",
           location: location, hint: "connect it explicitly: #{out}.connect_to(#{other}.#{names.first}_port)"
         )
+      end
+    end
+
+    # +connect_to+ of what holds a child's ports: a child, or a child seen
+    # through one of its services (CompositionChild::ServiceView). Each
+    # output connects to the input of +other+ (a child, a view, a port)
+    # of its type, as Syskit's +connect_to+ between components.
+    module ChildConnections
+      def connect_to(other, policy = {})
+        ChildPort.autoconnect(each_output_port.to_a, other, policy, Location.of_caller)
+        self
       end
     end
 

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/port_lookup'
+require 'syskit/models/child_port'
 
 module Syskit
   module Models
@@ -11,6 +12,7 @@ module Syskit
       # find_all_data_services_from_type.
       class ServiceView
         include PortLookup
+        include ChildConnections
 
         attr_reader :child, :service_model, :bound_service
 
@@ -40,7 +42,7 @@ module Syskit
 
         # The view through +other+, a model the service provides.
         def as(other)
-          raise ArgumentError, "#{self} does not provide #{other}" unless service_model.fullfills?(other)
+          raise ArgumentError, "#{self} does not provide #{other}" unless fullfills?(other)
 
           ServiceView.new(child, other, bound_service)
         end
@@ -56,17 +58,6 @@ module Syskit
           @ports ||= service_model.ports.to_h do |name, port|
             [name, component_port(name) || ChildPort.new(child, port, service_model)]
           end
-        end
-
-        def find_port(name)
-          ports[name.to_s]
-        end
-
-        # Connects the view's output ports to the inputs of +other+ (a
-        # child, a view, a port) of their type, as between children.
-        def connect_to(other, policy = {})
-          ChildPort.autoconnect(each_output_port.to_a, other, policy, Location.of_caller)
-          self
         end
 
         # The child's port behind the service port +name+, nil unless the

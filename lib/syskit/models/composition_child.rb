@@ -15,6 +15,7 @@ module Syskit
     # return it, as in Syskit: +add(Srv, as: 'x').with_arguments(speed: 2)+.
     class CompositionChild
       include PortLookup
+      include ChildConnections
 
       attr_reader :composition_model, :child_name, :requirements, :declared_at
 
@@ -123,14 +124,6 @@ module Syskit
       def find_all_data_services_from_type(service_model)
         component = requirements.component_model || Placeholder.for(models)
         component.services_fulfilling(service_model).map { |srv| ServiceView.new(self, service_model, srv) }
-      end
-
-      # Connects the child's output ports to the input ports of +other+ (a
-      # child or a child's port) that have their type, as Syskit's
-      # +connect_to+ between components.
-      def connect_to(other, policy = {})
-        ChildPort.autoconnect(each_output_port.to_a, other, policy, Location.of_caller)
-        self
       end
 
       # Why +name+ is not a method of the child, when it is a port's or a

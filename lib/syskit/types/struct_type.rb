@@ -48,6 +48,14 @@ module Syskit
         end
       end
 
+      # Values of +ruby_class+ stand for values of this type: +block+,
+      # evaluated on the type, makes one from them (see
+      # TypekitLoader::DSL#convert_from_ruby).
+      def convert_from_ruby(ruby_class, block)
+        (@ruby_conversions ||= []) << [ruby_class, block]
+        self
+      end
+
       def to_plain(value)
         plain = {}
         fields.each { |fname, ftype| plain[fname] = ftype.to_plain(value[fname]) }
@@ -55,6 +63,12 @@ module Syskit
       end
 
       private
+
+      # +value+ converted by the conversion of its Ruby class, or nil.
+      def converted_from_ruby(value)
+        _, block = @ruby_conversions&.find { |klass, _| value.is_a?(klass) }
+        instance_exec(value, &block) if block
+      end
 
       def from_hash(hash)
         unknown = hash.keys.map(&:to_s) - field_names

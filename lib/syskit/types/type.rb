@@ -45,21 +45,7 @@ module Syskit
         false
       end
 
-      # Values of +ruby_class+ stand for values of this type: +block+,
-      # evaluated on the type, makes one from them (see
-      # TypekitLoader::DSL#convert_from_ruby).
-      def convert_from_ruby(ruby_class, block)
-        (@ruby_conversions ||= []) << [ruby_class, block]
-        self
-      end
-
       private
-
-      # +value+ converted by the conversion of its Ruby class, or nil.
-      def converted_from_ruby(value)
-        _, block = @ruby_conversions&.find { |klass, _| value.is_a?(klass) }
-        instance_exec(value, &block) if block
-      end
 
       def mismatch(value, expected)
         raise ValueError, "expected #{expected} for #{name}, got #{value.inspect}"

@@ -96,7 +96,12 @@ module Syskit
             raise TypeError.new("convert_from_ruby expects a Ruby class, got #{ruby_class.inspect}",
                                 location: location, hint: example)
           end
-          @loader.registry.resolve(@loader.full_name(name), location: location).convert_from_ruby(ruby_class, block)
+          type = @loader.registry.resolve(@loader.full_name(name), location: location)
+          unless type.is_a?(StructType)
+            raise TypeError.new("convert_from_ruby applies to struct types; #{type.name} is not one",
+                                location: location, hint: "describe it with struct '#{name}' do ... end first")
+          end
+          type.convert_from_ruby(ruby_class, block)
         end
 
         # A Ruby library that Rock loads with this typekit's Ruby plugin,

@@ -155,6 +155,13 @@ module Syskit
       problems << NotModelled.new(what, location: location)
     end
 
+    # Records a warning, once per place and message (a plan applies the
+    # same configuration section to many tasks).
+    def warning(message, location:, hint: nil)
+      warning = Warning.new(message, location: location, hint: hint)
+      problems << warning unless problems.any? { |p| p.identity == warning.identity }
+    end
+
     # Makes this app the one DSL statements (device_type, using_task_library,
     # Syskit.conf, OroGen, Types...) act on.
     def activate

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'psych'
+require 'syskit/config/embedded_ruby'
 
 module Syskit
   module Config
@@ -12,7 +13,9 @@ module Syskit
     #   ip: 10.40.50.50
     #
     # A file without a header starts with the 'default' section. Sections are
-    # read with safe YAML only (no Ruby objects, no aliases).
+    # read with safe YAML only (no Ruby objects, no aliases), once the Ruby
+    # expressions they embed (<%= ... %>, as in Rock) are replaced by their
+    # values (see EmbeddedRuby).
     #
     # A header holds option:value words, as Rock's loader reads them:
     # +name:x+, +merge:true+ (the section is merged into the one of the same
@@ -157,7 +160,8 @@ module Syskit
         end
 
         declared[name] = line
-        settings = ConfFile.deep_merge(load_yaml(text, line), chained(options['chain'], location))
+        yaml = EmbeddedRuby.expand(text, path, line + 1)
+        settings = ConfFile.deep_merge(load_yaml(yaml, line), chained(options['chain'], location))
         settings = ConfFile.deep_merge(sections[name].settings, settings) if merge?(options['merge'], location) &&
                                                                              sections[name]
         sections[name] = Section.new(name, settings, line, text, path)

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/config/numbers_with_units'
+
 module Syskit
   module Config
     # A configuration file's values checked against a task model as they
@@ -16,9 +18,22 @@ module Syskit
         raise unknown_property(properties, file, names, key) unless properties.key?(key)
 
         check_symbol(properties, key, value)
-        properties[key] = value
+        properties[key] = numbers(file, names, key).convert(properties.declarations.fetch(key).type, value)
+      rescue Types::ValueError => e
+        raise ConfigurationError.new("property '#{key}' of #{properties.class.task_model.name}: #{e.message}",
+                                     location: file.location_of(key, names),
+                                     hint: 'write a number, optionally followed by units: 0.5, 2.deg, 150.ms')
       rescue ConfigurationError => e
         raise e.at(file.location_of(key, names))
+      end
+
+      # Numbers written with units or a rounding (2.deg, 2.5.round), read
+      # as Rock's loader reads them; its warnings are the app's, at the
+      # line of +key+.
+      def numbers(file, names, key)
+        NumbersWithUnits.new do |message, hint|
+          Syskit.app&.warning("#{key}: #{message}", location: file.location_of(key, names), hint: hint)
+        end
       end
 
       # The problems of each section of +file+ set alone on a fresh

@@ -104,11 +104,12 @@ module Syskit
     end
 
     def test_a_number_that_cannot_be_read_is_reported_at_its_line
-      problems, root = checked("--- name:default\ntilt: 3.furlong\n--- name:b\nrate: lots\n")
+      problems, root = checked("--- name:default\ntilt: 3.furlong\n--- name:b\nrate: 12 Hz\n")
       assert_equal 2, problems.size, problems.map { |p| p.report(root) }.join("\n")
       assert_reported problems[0], /property 'tilt' of imu::Task: "3.furlong": 'furlong' is not a unit/,
                       at: "#{CONF}:2", hint: /2\.deg, 150\.ms/, root: root
-      assert_reported problems[1], /property 'rate' of imu::Task: "lots" is not a number/, at: "#{CONF}:4", root: root
+      assert_reported problems[1], /property 'rate' of imu::Task: "12 Hz" is not a number followed by units/,
+                      at: "#{CONF}:4", root: root
     end
   end
 end

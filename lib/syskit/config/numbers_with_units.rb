@@ -60,9 +60,12 @@ module Syskit
       end
 
       # "2.5.deg" as [0.0436..., nil]; "7" as [7, nil]; "2.5.ceil" as [2.5, 'ceil'].
+      # Text that does not start as a number is left to the type to refuse.
       def parse(text)
+        return [text, nil] unless text.match?(/\A\s*[+-]?\d/)
+
         match = NUMBER.match(text.strip)
-        raise Types::ValueError, "#{text.inspect} is not a number, with or without units (2.5, 2.deg, 150.ms)" unless
+        raise Types::ValueError, "#{text.inspect} is not a number followed by units (2.5, 2.deg, 150.ms)" unless
           match
 
         digits, suffixes = match.captures

@@ -43,8 +43,11 @@ module Syskit
 
       task_context 'Recorder' do
         dynamic_input_port(/\w+\.\w+/, nil).needs_reliable_connection.task_trigger
+        input_port 'pings', '/double'
         transformer do
           max_latency 0.1
+          transform 'sonar', 'hull'
+          align_port 'pings', 0.05
         end
         find_property('transformer_max_latency').dynamic
       end
@@ -89,6 +92,15 @@ module Syskit
       assert_nil pattern.type
       assert pattern.match?('gps.pose', OroGen.sonar.Task.find_port('beam').type)
       assert_equal 'dynamic input port /\\w+\\.\\w+/ (any type)', pattern.to_s
+      # What the transformer block adds, with the defaults it declares.
+      recorder = OroGen.sonar.Recorder
+      defaults = recorder.property_declarations.transform_values(&:initial_value)
+      assert_equal({ 'transformer_max_latency' => 0.1, 'pings_period' => 0.05, 'sonar_frame' => 'sonar',
+                     'hull_frame' => 'hull', 'transformer_status_period' => 1.0, 'static_transformations' => [] },
+                   defaults)
+      assert recorder.find_input_port('dynamic_transformations')
+      assert recorder.find_output_port('transformer_status')
+      assert_equal %w[sonar hull], recorder.transformer.each_frame.to_a
     end
 
     def test_calls_on_orogen_spec_are_a_warning

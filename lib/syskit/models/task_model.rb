@@ -48,6 +48,24 @@ module Syskit
         spec&.abstract?
       end
 
+      # What the .orogen file's transformer block declares (frames,
+      # transformations, the ports that carry them), nil without one. (A
+      # block given in Ruby is not modelled: see Compat::TaskStatements.)
+      def transformer
+        spec&.transformer
+      end
+
+      # The transformation (+from+, +to+ frame names) the port +port+ (a
+      # port or its name) carries, as the .orogen file declares it.
+      def find_transform_of_port(port)
+        spec&.transformer&.find_transform_of_port(port)
+      end
+
+      # The frame the data of +port+ is expressed in, as declared.
+      def find_frame_of_port(port)
+        spec&.transformer&.find_frame_of_port(port)
+      end
+
       # What the .orogen file says of this model, as Syskit's orogen_model:
       # +orogen_model.find_port('command').multiplexes+ changes a port.
       def orogen_model

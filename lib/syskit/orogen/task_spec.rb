@@ -46,6 +46,26 @@ module Syskit
         @all_operations || (superclass ? superclass.all_operations : {}).merge(operations)
       end
 
+      # What its transformer and stream_aligner blocks declare (see
+      # StreamAlignerSpec), or what it inherits; nil without any.
+      def transformer
+        @own_transformer || superclass&.transformer
+      end
+
+      def stream_aligner
+        @own_stream_aligner || superclass&.stream_aligner
+      end
+
+      # The transformer its own block declares, which extends the
+      # inherited one: made by the first block.
+      def own_transformer
+        @own_transformer ||= TransformerSpec.new(superclass&.transformer)
+      end
+
+      def own_stream_aligner
+        @own_stream_aligner ||= StreamAlignerSpec.new
+      end
+
       def find_port(name)
         all_ports[name.to_s]
       end

@@ -88,9 +88,6 @@ module Syskit
       # +find_property('timeout').dynamic+.
       def find_property(property_name)
         found = @spec.all_properties[property_name.to_s] || @spec.properties[property_name.to_s]
-        # A property an oroGen plugin adds: not modelled.
-        return Compat::Ignored.instance if !found && @plugins
-
         unless found
           raise SpecError.new("#{@spec.name} has no property '#{property_name}'",
                               location: Location.of_caller, hint: 'declare it with property before this line')
@@ -113,16 +110,55 @@ module Syskit
         type
       end
 
-      # oroGen plugins, which add properties and ports of their own (e.g.
-      # transformer_max_latency) that this gem does not model.
-      %i[transformer stream_aligner].each do |plugin|
-        define_method(plugin) do |*_args, **_options, &_block|
-          @plugins = true
-          nil
-        end
+      # oroGen's transformer plugin: frames, transformations and aligned
+      # ports, and the properties and ports the plugin adds to the task
+      # (see TransformerDSL). Repeated blocks add to the first.
+      def transformer(&)
+        location = Location.of_caller
+        plugin = @spec.own_transformer
+        TransformerDSL.new(self, @spec, plugin).evaluate(location, &)
+        @spec.needs_configuration = true if plugin.needed?
+        plugin
+      end
+
+      # oroGen's stream aligner plugin (see StreamAlignerDSL).
+      def stream_aligner(&)
+        location = Location.of_caller
+        plugin = @spec.own_stream_aligner
+        StreamAlignerDSL.new(self, @spec, plugin).evaluate(location, &)
+        @spec.needs_configuration = true if plugin.needed?
+        plugin
+      end
+
+      # A property an oroGen plugin adds, unless the task (or its parent)
+      # has it already: the plugin's blocks may be repeated or inherited.
+      def plugin_property(name, type, default)
+        return if @spec.all_properties.key?(name) || @spec.properties.key?(name)
+
+        import_plugin_types(type)
+        add_property(@spec.properties, 'property', name, type, default)
+      end
+
+      def plugin_output_port(name, type, typekit:)
+        plugin_port(name, :output, type, typekit)
+      end
+
+      def plugin_input_port(name, type)
+        plugin_port(name, :input, type, 'base')
       end
 
       private
+
+      def plugin_port(name, direction, type, typekit)
+        return if @spec.find_port(name)
+
+        @loader.import_types(typekit, Location.of_caller)
+        add_port(name, direction, type)
+      end
+
+      def import_plugin_types(type)
+        @loader.import_types('base', Location.of_caller) if type.include?('/base/')
+      end
 
       # +statement+: the DSL word, when it is not +what+ (input_port for a port).
       def declare(table, raw_name, what, statement = what, pattern: Arguments::IDENTIFIER)

@@ -41,7 +41,8 @@ module Syskit
 
     # The top-level constants an active app installs besides OroGen and Types.
     def self.constants
-      { Robot: Config::RobotDSL, Roby: Roby, Conf: ConfStruct.new, Typelib: Typelib, Eigen: Eigen, Orocos: Orocos }
+      { Robot: Config::RobotDSL, Roby: Roby, Conf: ConfStruct.new, Typelib: Typelib, Eigen: Eigen, Orocos: Orocos,
+        Utilrb: Utilrb }
     end
 
     # Records that a model of kind +kind+ (a composition, ...) was defined,
@@ -138,6 +139,10 @@ module Syskit
 
     # +Typelib+: Rock's type system, which a few specs call in Ruby.
     Typelib = not_modelled_namespace('Typelib', %i[Registry Type CompoundType ContainerType EnumType OpaqueType])
+    # +Utilrb::PkgConfig+: the build machine's pkg-config packages, which
+    # a few specs look their C++ libraries up in (+using_library+ matters
+    # only to build the component).
+    Utilrb = not_modelled_namespace('Utilrb', %i[PkgConfig])
     # +OroGen::Spec+: the namespace of oroGen's specification classes.
     OrogenSpec = not_modelled_namespace('OroGen::Spec', %i[Project TaskContext Deployment Typekit Port Operation])
 

@@ -110,6 +110,29 @@ module Syskit
                     'not modelled by this gem, ignored in the plan'], reports
     end
 
+    # A spec that looks its C++ library up among the build machine's
+    # pkg-config packages, and sets its types' build metadata.
+    def test_a_pkg_config_look_up_is_a_warning_and_the_spec_loads
+      root = my_app(nil, 'models/orogen/mesh.orogen' => <<~RUBY)
+        name 'mesh'
+        mesh_lib = Utilrb::PkgConfig.each_package.find { |pkg| /^libmesh/.match(pkg) }
+        raise 'no libmesh package' unless mesh_lib
+        using_library mesh_lib
+
+        import_types_from 'mesh/Mesh.hpp'
+        typekit do
+          find_type('/mesh/Mesh').metadata.set('orogen_include', 'mesh:mesh/Mesh.hpp')
+          export_types '/mesh/Mesh'
+        end
+        task_context('Simplifier') { property 'ratio', '/double', 0.5 }
+      RUBY
+      app = load_app(root)
+      app.using_task_library('mesh')
+      assert OroGen.mesh.Simplifier
+      assert_equal(['models/orogen/mesh.orogen:2: warning: Utilrb::PkgConfig.each_package: not modelled by this gem, ' \
+                    'ignored in the plan'], app.problems.map { |p| p.report(root).lines.first.strip })
+    end
+
     def test_a_vector_of_a_base_type_resolves_whatever_was_seen_before
       app = load_app(my_app(nil, 'models/devices/x.rb' => <<~RUBY))
         module MyApp

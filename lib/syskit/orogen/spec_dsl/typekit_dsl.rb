@@ -30,6 +30,13 @@ module Syskit
       def registry
         Compat::Ignored.instance
       end
+
+      # A type of the typekit, whose build metadata some specs set
+      # (+find_type('/pcl/Mesh').metadata.set('orogen_include', ...)+): only
+      # the build reads it.
+      def find_type(_name)
+        Compat::Ignored.instance
+      end
     end
   end
 end

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/profile_definitions'
+require 'syskit/profile/queries'
 
 module Syskit
   # A profile: a module with a robot definition and definitions. Each
@@ -129,6 +130,8 @@ module Syskit
 
     # Methods of profile modules.
     module ModuleMethods
+      include Queries
+
       NOT_MODELLED.each do |statement, action|
         define_method(statement) do |*args, **options, &_block|
           Syskit.app&.not_modelled("#{statement} in profile #{self}", Location.of_caller)
@@ -174,8 +177,12 @@ module Syskit
         Compat::Ignored.instance
       end
 
-      def use_profile(profile, tags = {})
-        syskit_profile.use_profile(profile, tags, location: Location.of_caller)
+      # Uses +profile+ (see Definitions#use_profile): +tags+ select for its
+      # tags ('localization' => X, or localization: X), +transform_names+
+      # renames its definitions (->(name) { "left_\#{name}" }).
+      def use_profile(profile, tags = {}, transform_names: nil, **more_tags)
+        syskit_profile.use_profile(profile, tags.merge(more_tags), transform_names: transform_names,
+                                                                   location: Location.of_caller)
         self
       end
 

@@ -50,10 +50,13 @@ module Syskit
       # names must be children of the composition.
       def use(*mappings)
         location = Location.of_caller
-        injection = selections.add(mappings, location)
-        if composition?
-          component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
+        unless composition?
+          raise DeclarationError.new("use selects children of compositions, and #{self} is not one",
+                                     location: location, hint: 'call use on a composition model or its requirements')
         end
+
+        injection = selections.add(mappings, location)
+        component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
         copy(selections: injection, declared_at: declared_at || location)
       end
 

@@ -121,7 +121,12 @@ module Syskit
     # with a "not modelled" warning each (see Compat). The value says which
     # action name a statement defines, when it defines one, so that later
     # statements can refer to it.
-    NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: nil, transformer: nil }.freeze
+    # Deployment groups (+use_deployment+ and its kin in a profile) are
+    # runtime choices of Syskit's action interface: this gem deploys from
+    # the robot configuration (config/robots/*.rb).
+    NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: nil, transformer: nil, use_deployment: nil,
+                     use_ruby_tasks: nil, use_unmanaged_task: nil, use_deployments_from: nil, use_group: nil,
+                     define_deployment_group: ->(name, *) { "#{name}_deployment_group" } }.freeze
 
     # The comment block above +location+ (documentation of a statement).
     def self.doc_above(location)

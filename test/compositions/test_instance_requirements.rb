@@ -61,5 +61,41 @@ module Syskit
       assert_equal 'its services: front_pose, rear_pose', error.hint
       assert_equal 'models/profiles/base.rb:7', error.location.to_s(root)
     end
+
+    def test_statements_on_arguments_sections_and_services
+      tracker_app
+      follower = OroGen.rig.Follower.with_arguments(gain: 2.0)
+      assert_empty follower.with_no_arguments.arguments
+      assert_equal %w[fast], follower.use_conf('fast').conf
+      rear = OroGen.rig.Tracker.with_conf('fast').select_service(OroGen.rig.Tracker.rear_pose_srv)
+      assert_same OroGen.rig.Tracker.rear_pose_srv, rear.service
+      assert_equal %w[fast], rear.conf
+      assert_syskit_error(/service 'rear_pose' \(Rig::Services::Pose\) of rig::Tracker is not a service of/) do
+        follower.select_service(OroGen.rig.Tracker.rear_pose_srv)
+      end
+    end
+
+    # Syskit's deployment groups choose deployments at runtime, for a
+    # profile or requirements: a located warning each, the deployments
+    # come from config/robots.
+    def test_deployment_groups_are_not_modelled
+      app = load_rig({ 'models/compositions/watch.rb' => WATCH },
+                     profile: <<~RUBY, requires: ['models/compositions/watch'])
+                       profile 'Base' do
+                         use_deployment OroGen.rig.Tracker => 'other_tracker'
+                         define_deployment_group 'trackers' do
+                           use_deployment OroGen.rig.Tracker => 'other_tracker'
+                         end
+                         use_group trackers_deployment_group
+                         define 'tracker', OroGen.rig.Tracker.use_deployment(OroGen.rig.Tracker => 'other_tracker')
+                       end
+                     RUBY
+      warnings = app.problems.map { |p| "#{p.location.to_s(app.root)}: #{p.message.sub(/: not modelled.*/, '')}" }
+      assert_equal ['models/profiles/base.rb:7: use_deployment in profile Rig::Profiles::Base',
+                    'models/profiles/base.rb:8: define_deployment_group in profile Rig::Profiles::Base',
+                    'models/profiles/base.rb:11: use_group in profile Rig::Profiles::Base',
+                    'models/profiles/base.rb:12: use_deployment on rig::Tracker (deployment groups)'], warnings
+      assert_equal %w[tracker], plan_of(app, 'tracker_def').tasks.map(&:name)
+    end
   end
 end

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/dependency_injection/context'
+
 module Syskit
   # What +use+ says: which model, device or definition to put in place of a
   # composition's children (Syskit's dependency injection).
@@ -19,6 +21,13 @@ module Syskit
       'nothing'
     end
 
+    # Selects for a child by model only, whatever selects for its name
+    # around it (Syskit's +DependencyInjection.do_not_inherit+).
+    DO_NOT_INHERIT = Object.new
+    def DO_NOT_INHERIT.to_s
+      'do_not_inherit'
+    end
+
     attr_reader :explicit, :defaults, :declared_at
 
     def initialize(explicit = {}, defaults = [], declared_at = nil)
@@ -32,6 +41,10 @@ module Syskit
 
     def self.nothing
       NOTHING
+    end
+
+    def self.do_not_inherit
+      DO_NOT_INHERIT
     end
 
     def empty?
@@ -50,7 +63,8 @@ module Syskit
           mapping.each do |key, value|
             next if not_modelled?(key, location) || not_modelled?(value, location)
 
-            explicit[normalize_key(key, location)] = check_value(value, key, location)
+            key = normalize_key(key, location)
+            explicit[key] = check_model_selection(key, check_value(value, key, location), location)
           end
         else
           defaults << check_value(mapping, nil, location)
@@ -104,8 +118,36 @@ module Syskit
       end
     end
 
+    # What is selected for a model must be that model or fullfill it (a
+    # submodel of a component model, a service providing a service model),
+    # as Syskit checks when +use+ is called. What class hierarchies and
+    # service models say is checked here; what a component provides may
+    # be declared by a file loaded later, and is checked where the
+    # selection fills a child.
+    def check_model_selection(key, value, location)
+      return value if !key.is_a?(Module) || value.equal?(NOTHING) || value.equal?(DO_NOT_INHERIT) ||
+                      selection_of_model?(key, value)
+
+      raise DeclarationError.new("use cannot select #{Arguments.shown(value)} for #{key}: it is not a #{key}",
+                                 location: location, hint: "select #{key} itself, or #{
+                                   key.is_a?(Class) ? 'a submodel of it' : 'a data service that provides it'}")
+    end
+
+    # Whether +value+ can be selected for +key+, a component or service
+    # model, as far as can be told while files load.
+    def selection_of_model?(key, value)
+      if key.is_a?(Class)
+        return true unless [Module, InstanceRequirements, Models::BoundService].any? { |kind| value.is_a?(kind) }
+
+        component = InstanceRequirements.from(value).component_model
+        component.is_a?(Class) && component <= key
+      else
+        !(key.is_a?(Models::DataServiceModel) && value.is_a?(Models::DataServiceModel)) || value.fullfills?(key)
+      end
+    end
+
     def check_value(value, key, location)
-      return value if value.equal?(NOTHING) || InstanceRequirements.selectable?(value)
+      return value if value.equal?(NOTHING) || value.equal?(DO_NOT_INHERIT) || InstanceRequirements.selectable?(value)
 
       what = key ? "for #{key_name(key)}" : 'as a default'
       raise DeclarationError.new(
@@ -114,114 +156,6 @@ module Syskit
         hint: 'select a task or composition model, a data service, a device (Base.gps_dev), a definition ' \
               '(Base.x_def) or a requirement (Model.with_arguments(...))'
       )
-    end
-
-    # The injections in effect where a child is instantiated: the
-    # profile's (its robot's devices, used profiles, +use+ statements),
-    # then each enclosing requirement's +use+, later ones winning. Each
-    # layer resolves its defaults against its own explicit keys
-    # first, as Syskit does. A frozen value; #with and #mask return new ones.
-    class Context
-      # Roots of the model hierarchies: fullfilled by everything, never a
-      # key of a default selection.
-      def self.ignored_models
-        [Syskit::DataService, Syskit::Device, Syskit::ComBus, Syskit::AbstractComponent, Syskit::Component,
-         Syskit::TaskContext, Syskit::Composition]
-      end
-
-      attr_reader :state
-
-      # +locations+: where each key was selected (the +use+ statement).
-      def initialize(state = {}, locations = {})
-        @state = state.freeze
-        @locations = locations.freeze
-        freeze
-      end
-
-      EMPTY = new
-
-      def with(injection)
-        return self if injection.nil? || injection.empty?
-
-        added = Context.resolve_defaults(injection)
-        locations = @locations.merge(added.transform_values { injection.declared_at })
-        Context.new(Context.follow_chains(state.merge(added)), locations)
-      end
-
-      # The context without +keys+ (the selections a child used, which
-      # must not apply again to that child's own children).
-      def mask(keys)
-        return self if keys.empty?
-
-        Context.new(state.except(*keys), @locations)
-      end
-
-      # Where +key+ was selected.
-      def location_of(key)
-        @locations[key]
-      end
-
-      # What is selected for the child +name+ requiring +models+: the value
-      # and the keys used ([nil, []] when nothing is selected).
-      def selection_for(name, models)
-        if name && state.key?(name)
-          value = state[name]
-          return [nil, [name]] if value.equal?(NOTHING)
-
-          return [value, [name]]
-        end
-
-        models.each do |model|
-          value = state[model]
-          return [value, [model]] if value && !value.equal?(NOTHING)
-        end
-        [nil, []]
-      end
-
-      # The selection of a key (a model or tag), if any.
-      def direct_selection_for(key)
-        value = state[key]
-        value unless value.equal?(NOTHING)
-      end
-
-      # Explicit selections, with the defaults added under each model they
-      # fullfill that is not selected explicitly and that no other default
-      # fullfills too.
-      def self.resolve_defaults(injection)
-        result = injection.explicit.dup
-        return result if injection.defaults.empty?
-
-        found = {}
-        ambiguous = {}
-        injection.defaults.each do |value|
-          InstanceRequirements.fullfilled_models_of(value).each do |model|
-            next if ignored_models.include?(model) || result.key?(model) || ambiguous.key?(model)
-
-            if found.key?(model) && !found[model].equal?(value)
-              ambiguous[model] = found.delete(model)
-            else
-              found[model] = value
-            end
-          end
-        end
-        result.merge(found)
-      end
-
-      # A selection whose value is itself a selected key (Srv => Task,
-      # Task => Task.with_arguments(...)) follows the chain.
-      def self.follow_chains(state)
-        state.transform_values do |value|
-          seen = []
-          while (value.is_a?(Module) || value.is_a?(Profile::Tag)) && state.key?(value) && !seen.include?(value)
-            seen << value
-            next_value = state[value]
-            break if next_value.equal?(NOTHING) || next_value.equal?(value)
-
-            value = next_value
-          end
-          value
-        end
-      end
     end
   end
 end

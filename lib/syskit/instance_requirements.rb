@@ -2,6 +2,7 @@
 
 require 'syskit/models/fullfillment'
 require 'syskit/instance_requirements/statements'
+require 'syskit/instance_requirements/readers'
 
 module Syskit
   # What a network must contain, as Syskit's InstanceRequirements: a model
@@ -17,6 +18,7 @@ module Syskit
   # definitions and device actions are requirements with a +name+.
   class InstanceRequirements
     include Statements
+    include Readers
     # Whether these requirements fullfill a model (or each of a list).
     include Models::Fullfillment
 
@@ -87,6 +89,8 @@ module Syskit
       @specialization_hints = specialization_hints
       @declared_at = declared_at
       @instance = instance
+      readers = Readers.for(component_model)
+      extend(readers) if readers
       freeze unless open
     end
 
@@ -177,7 +181,7 @@ module Syskit
     # An action by its name (+Base.drive_def+, +gps_dev+), else the model
     # and the statements that changed it, as they are written.
     def to_s
-      return profile ? "#{profile.name}.#{name}" : name if name
+      return "#{action_name}#{".#{service.name}_srv" if service}" if name
       return "#{device.name}_dev" if device
 
       parts = [base_name]
@@ -207,6 +211,11 @@ module Syskit
     end
 
     protected
+
+    # A definition's or a device's action, by the name of its profile.
+    def action_name
+      profile ? "#{profile.name}.#{name}" : name
+    end
 
     def base_name
       return "#{service.task_model.name}.#{service.name}_srv" if service

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/profile_definitions'
+require 'syskit/profile/queries'
 
 module Syskit
   # A profile: a module with a robot definition and definitions. Each
@@ -120,7 +121,12 @@ module Syskit
     # with a "not modelled" warning each (see Compat). The value says which
     # action name a statement defines, when it defines one, so that later
     # statements can refer to it.
-    NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: nil, transformer: nil }.freeze
+    # Deployment groups (+use_deployment+ and its kin in a profile) are
+    # runtime choices of Syskit's action interface: this gem deploys from
+    # the robot configuration (config/robots/*.rb).
+    NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: nil, transformer: nil, use_deployment: nil,
+                     use_ruby_tasks: nil, use_unmanaged_task: nil, use_deployments_from: nil, use_group: nil,
+                     define_deployment_group: ->(name, *) { "#{name}_deployment_group" } }.freeze
 
     # The comment block above +location+ (documentation of a statement).
     def self.doc_above(location)
@@ -129,6 +135,8 @@ module Syskit
 
     # Methods of profile modules.
     module ModuleMethods
+      include Queries
+
       NOT_MODELLED.each do |statement, action|
         define_method(statement) do |*args, **options, &_block|
           Syskit.app&.not_modelled("#{statement} in profile #{self}", Location.of_caller)
@@ -174,8 +182,12 @@ module Syskit
         Compat::Ignored.instance
       end
 
-      def use_profile(profile, tags = {})
-        syskit_profile.use_profile(profile, tags, location: Location.of_caller)
+      # Uses +profile+ (see Definitions#use_profile): +tags+ select for its
+      # tags ('localization' => X, or localization: X), +transform_names+
+      # renames its definitions (->(name) { "left_\#{name}" }).
+      def use_profile(profile, tags = {}, transform_names: nil, **more_tags)
+        syskit_profile.use_profile(profile, tags.merge(more_tags), transform_names: transform_names,
+                                                                   location: Location.of_caller)
         self
       end
 

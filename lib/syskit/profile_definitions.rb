@@ -44,6 +44,8 @@ module Syskit
       # A definition: its requirements (named +name_def+) and documentation.
       Definition = Struct.new(:name, :requirements, :doc, :declared_at)
 
+      TRANSFORM_EXAMPLE = "transform_names: ->(name) { \"left_\#{name}\" }"
+
       # Definitions by name, in declaration order (those of used profiles
       # first, the profile's own overriding them).
       def definitions
@@ -140,8 +142,9 @@ module Syskit
 
       # Uses +profile+: its devices, definitions and selections become this
       # profile's; +tags+ select components for its tags (by tag name or
-      # tag object).
-      def use_profile(profile, tags = {}, location:)
+      # tag object); +transform_names+, when given, names each definition
+      # here from its name there.
+      def use_profile(profile, tags = {}, location:, transform_names: nil)
         profile = profile.syskit_profile if profile.respond_to?(:syskit_profile)
         unless profile.is_a?(Profile)
           raise DeclarationError.new("use_profile expects a profile, got #{Arguments.shown(profile)}",
@@ -154,7 +157,8 @@ module Syskit
         profile.definitions.each_value do |definition|
           requirements = definition.requirements
           requirements = requirements.use(tag_selections) unless tag_selections.empty?
-          register_definition(definition.name, requirements, definition.doc, definition.declared_at)
+          name = transformed_name(definition.name, transform_names, location)
+          register_definition(name, requirements, definition.doc, definition.declared_at)
         end
         @dependency_injection_context = nil
         self
@@ -206,6 +210,21 @@ module Syskit
 
           [tag, value]
         end
+      end
+
+      # The name a used profile's definition +name+ gets here.
+      def transformed_name(name, transform, location)
+        return name unless transform
+
+        unless transform.respond_to?(:call)
+          raise DeclarationError.new("use_profile's transform_names expects a block, got #{Arguments.shown(transform)}",
+                                     location: location, hint: "write #{TRANSFORM_EXAMPLE}")
+        end
+
+        result = transform.call(name)
+        Arguments.name(result.to_s, statement: 'use_profile', what: 'a definition name from transform_names',
+                                    pattern: Arguments::METHOD_NAME,
+                                    example: "use_profile Arm, #{TRANSFORM_EXAMPLE}")
       end
 
       def unknown_tag(profile, key, location)

@@ -93,5 +93,45 @@ module Syskit
       assert_same with_gain, ctx.direct_selection_for(OroGen.rig.Follower)
       assert_equal({ gain: 3.0 }, selected(ctx, @watch.follower_child).arguments)
     end
+
+    # As Syskit's layers: a default of an inner layer (a model selecting
+    # itself) does not undo what an outer one selected for that model.
+    def test_a_default_does_not_undo_an_outer_selection_of_its_model
+      front = OroGen.rig.Tracker.front_pose_srv
+      layered = DependencyInjection::Context::EMPTY
+                .with(DependencyInjection::EMPTY.add([{ Rig::Services::Pose => front }], nil))
+                .with(DependencyInjection::EMPTY.add([Rig::Services::Pose, { 'name' => Rig::Services::Pose }], nil))
+      assert_same front, layered.direct_selection_for(Rig::Services::Pose)
+      assert_same front, layered.state['name']
+    end
+
+    def test_do_not_inherit_falls_back_to_the_selection_by_model
+      rear = OroGen.rig.Tracker.rear_pose_srv
+      outer = context({ 'pose' => OroGen.rig.Tracker.front_pose_srv, Rig::Services::Pose => rear })
+      inner = outer.with(DependencyInjection::EMPTY.add([{ 'pose' => DependencyInjection.do_not_inherit }], nil))
+      assert_same rear, selected(inner).service
+    end
+
+    def test_what_is_selected_for_a_model_must_be_that_model
+      assert_syskit_error(/use cannot select rig::Follower for rig::Tracker: it is not a rig::Tracker/,
+                          hint: /select rig::Tracker itself, or a submodel of it/) do
+        @watch.use(OroGen.rig.Tracker => OroGen.rig.Follower)
+      end
+      assert_syskit_error(/use cannot select Rig::Services::Pose for rig::Tracker/) do
+        @watch.use(OroGen.rig.Tracker => Rig::Services::Pose)
+      end
+      assert_syskit_error(/use cannot select Rig::Services::SpeedCommand for Rig::Services::Pose/,
+                          hint: /or a data service that provides it/) do
+        @watch.use(Rig::Services::Pose => Rig::Services::SpeedCommand)
+      end
+      assert @watch.use(Rig::Services::Pose => Rig::Services::Odometry, OroGen.rig.Tracker => OroGen.rig.Tracker)
+    end
+
+    def test_use_is_for_compositions
+      error = assert_syskit_error(/use selects children of compositions, and rig::Tracker.with_conf\("fast"\)/) do
+        OroGen.rig.Tracker.with_conf('fast').use('x' => OroGen.rig.Follower)
+      end
+      assert_equal File.expand_path(__FILE__), error.location.path
+    end
   end
 end

@@ -154,6 +154,39 @@ module Syskit
       assert_equal 'models/profiles/base.rb:10', error.location.to_s(root)
     end
 
+    # As Syskit's use_profile: transform_names renames the definitions it
+    # brings (a profile used twice, once per arm), each with its own tags.
+    def test_use_profile_renames_definitions_with_transform_names
+      app = watch_app(<<~RUBY)
+        profile 'Side' do
+          tag 'localization', Services::Pose
+          define 'watch', Compositions::Watch.use('pose' => localization_tag)
+        end
+        profile 'Base' do
+          use_profile Side, localization: OroGen.rig.Tracker.rear_pose_srv, transform_names: ->(name) { "rear_\#{name}" }
+          use_profile Side, 'localization' => OroGen.rig.Tracker.front_pose_srv
+        end
+      RUBY
+      assert_equal %w[rear_watch_def watch_def], Rig::Profiles::Base.syskit_profile.action_names
+      assert_equal ['tracker.rear -> follower.pose'], connection_lines(plan_of(app, 'rear_watch_def'))
+      assert_equal ['tracker.front -> follower.pose'], connection_lines(plan_of(app, 'watch_def'))
+    end
+
+    def test_transform_names_must_give_method_names
+      root = rig_app({ 'models/compositions/watch.rb' => WATCH },
+                     profile: <<~RUBY, requires: ['models/compositions/watch'])
+                       profile 'Side' do
+                         define 'watch', Compositions::Watch
+                       end
+                       profile 'Base' do
+                         use_profile Side, transform_names: ->(name) { "rear \#{name}" }
+                       end
+                     RUBY
+      error = load_problem(root)
+      assert_match(/use_profile expects a definition name from transform_names, got "rear watch"/, error.message)
+      assert_equal 'models/profiles/base.rb:10', error.location.to_s(root)
+    end
+
     def test_planning_a_profile_plans_its_devices_and_definitions
       app = watch_app(<<~RUBY)
         profile 'Base' do

@@ -50,10 +50,13 @@ module Syskit
       # names must be children of the composition.
       def use(*mappings)
         location = Location.of_caller
-        injection = selections.add(mappings, location)
-        if composition?
-          component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
+        unless composition?
+          raise DeclarationError.new("use selects children of compositions, and #{self} is not one",
+                                     location: location, hint: 'call use on a composition model or its requirements')
         end
+
+        injection = selections.add(mappings, location)
+        component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
         copy(selections: injection, declared_at: declared_at || location)
       end
 
@@ -83,6 +86,40 @@ module Syskit
       def transformer(*_args)
         Syskit.app&.not_modelled("transformer on #{self}", Location.of_caller)
         self
+      end
+
+      # Deployments for these requirements alone (Syskit's deployment
+      # groups): not modelled, this gem deploys from the robot
+      # configuration; one located warning each.
+      %i[use_deployment use_unmanaged_task use_deployment_group use_configured_deployment].each do |statement|
+        define_method(statement) do |*_args, **_options|
+          Syskit.app&.not_modelled("#{statement} on #{self} (deployment groups)", Location.of_caller)
+          self
+        end
+      end
+
+      # Without the arguments given so far.
+      def with_no_arguments
+        copy(arguments: NO_ARGUMENTS)
+      end
+
+      # Syskit's former name of with_conf.
+      def use_conf(*names)
+        with_conf(*names, location: Location.of_caller)
+      end
+
+      # These requirements with +srv+, a service of their component model,
+      # selected (as +x_srv+ does).
+      def select_service(srv)
+        srv = srv.service if srv.is_a?(InstanceRequirements)
+        model = component_model
+        unless srv.is_a?(Models::BoundService) && model.is_a?(Class) && model <= srv.task_model
+          shown = srv.respond_to?(:task_model) ? srv : Arguments.shown(srv)
+          raise DeclarationError.new("#{shown} is not a service of #{self}",
+                                     location: Location.of_caller, hint: 'select one of its x_srv')
+        end
+
+        copy(service: srv)
       end
 
       # Which specializations to prefer when several apply.

@@ -24,11 +24,6 @@ module Syskit
       end
       alias assert_is_configurable is_configurable
 
-      # Syskit's names of the profile assertions (see ProfileAssertions).
-      %w[is_self_contained can_instanciate can_deploy can_configure].each do |name|
-        define_method("assert_#{name}") { |*actions| public_send(name, *actions) }
-      end
-
       private
 
       # The subject model (see SubjectModel), when it is a task model or

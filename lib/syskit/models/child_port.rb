@@ -156,6 +156,13 @@ module Syskit
       end
     end
 
+    # What a selection may name to share a task between children: another
+    # child (+first_child+, +first_child.src_child+) or a child's service
+    # (+first_child.pose_srv+). The generator selects the task built for
+    # +referenced_child+, through +referenced_service+ when there is one.
+    module ChildReference
+    end
+
     # +connect_to+ of what holds a child's ports: a child, or a child seen
     # through one of its services (CompositionChild::ServiceView). Each
     # output connects to the input of +other+ (a child, a view, a port)

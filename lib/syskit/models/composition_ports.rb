@@ -90,7 +90,7 @@ module Syskit
       # Whether +port+ is a port of a child of this composition (or of one
       # of the models it refines).
       def child_port?(port)
-        port.respond_to?(:composition_model) && self <= port.composition_model
+        port.respond_to?(:composition_model) && self <= port.composition_model && !port.child.reached_through
       end
 
       # Syskit's +connect(out_port => in_port, ...)+ form.
@@ -106,6 +106,7 @@ module Syskit
       # Records a connection from +from+ to +to+ (ports of children),
       # checked for directions, types and owners.
       def add_connection(from, to, policy, location)
+        check_grandchild_port(from, location)
         check_connection(from, to, location)
         (@connections ||= []) << Connection.new(from, to, policy, location)
         self
@@ -130,6 +131,18 @@ module Syskit
       def define_port_reader(name)
         reader = "#{name}_port"
         define_singleton_method(reader) { find_port(name) } unless singleton_class.method_defined?(reader)
+      end
+
+      # Ports of a child of a child composition are that composition's to
+      # connect (the connection would change its model).
+      def check_grandchild_port(port, location)
+        return unless port.child.reached_through
+
+        raise DeclarationError.new(
+          "#{port} is a port of a child of the child composition #{port.child.outermost_child}: " \
+          'it cannot be connected from here',
+          location: location, hint: "export it from #{port.composition_model} and connect the exported port"
+        )
       end
 
       def check_connection(from, to, location)

@@ -152,6 +152,19 @@ module Syskit
       assert_equal spec.specialized_children, narrowed.applied_specializations.first.specialized_children
     end
 
+    # The block sees the child as the specialization requires it, even
+    # where a submodel made the child a component that provides it.
+    def test_a_specialization_block_sees_the_child_as_the_specialized_model
+      @model.specialize(@model.pose_child => Rig::Services::Odometry) { export pose_child.odometry_port, as: 'odo' }
+      source = odometry_source
+      submodel = @model.new_submodel(name: 'SourcedDrive')
+      submodel.overload 'pose', source
+      narrowed = submodel.narrow
+      refute_same submodel, narrowed
+      assert_equal %w[odo], narrowed.ports.keys
+      assert_equal narrowed.pose_child.odometry_port, narrowed.find_exported_output('odo')
+    end
+
     def test_narrow_model_of_requirements
       @model.specialize(@model.pose_child => Rig::Services::Odometry)
       source = odometry_source

@@ -17,11 +17,19 @@ module Syskit
 
       # +port+: the port of +owner+ (a Port).
       def initialize(child, port, owner)
+        @port = port
         @child = child
         @name = port.name
         @direction = port.direction
         @type = port.type
         @owner = owner
+      end
+
+      # The same port, of +child+: the child of the same name as a
+      # submodel (or an overload) sees it, whose models the port then maps
+      # onto.
+      def promote(child)
+        child.equal?(@child) ? self : ChildPort.new(child, @port, owner)
       end
 
       # The port's name in the model that declares it.

@@ -26,8 +26,10 @@ module Syskit
 
       attr_reader :composition_model, :child_name, :requirements, :declared_at, :reached_through
 
-      def initialize(composition_model, child_name, requirements, location, optional: false, reached_through: nil)
+      def initialize(composition_model, child_name, requirements, location, optional: false, reached_through: nil,
+                     facets: [])
         @composition_model = composition_model
+        @facets = facets.freeze
         @child_name = child_name
         @declared_at = location
         @optional = optional
@@ -35,9 +37,15 @@ module Syskit
         self.requirements = requirements
       end
 
+      # The service models the child was required as before an overload
+      # replaced them with models that fullfill them: the child still has
+      # their ports (mapped onto the models that replaced them), as the
+      # blocks of specializations and the parent's declarations see it.
+      attr_reader :facets
+
       # The same child, as seen from the submodel +model+ of its composition.
       def promote(model)
-        CompositionChild.new(model, child_name, requirements, declared_at, optional: optional?)
+        CompositionChild.new(model, child_name, requirements, declared_at, optional: optional?, facets: facets)
       end
 
       # As a selection (+use('x' => first_child)+), the child itself, with
@@ -146,6 +154,9 @@ module Syskit
               found[port.name] ||= ChildPort.new(self, port, model)
             end
             break if model.is_a?(Class)
+          end
+          facets.each do |facet|
+            facet.ports.each_value { |port| found[port.name] ||= ChildPort.new(self, port, facet) }
           end
           found.freeze
         end

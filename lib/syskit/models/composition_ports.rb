@@ -43,10 +43,14 @@ module Syskit
         find_port(name)
       end
 
-      # Exported ports by name, inherited ones included.
+      # Exported ports by name, inherited ones included, each a port of the
+      # child as this model has it (overloaded or not).
       def exports
         inherited = superclass.respond_to?(:exports) ? superclass.exports : {}
-        inherited.merge(@exports || {})
+        inherited.merge(@exports || {}).transform_values do |export|
+          port = current_port(export.port)
+          port.equal?(export.port) ? export : Export.new(export.name, port, export.location)
+        end
       end
 
       def exported_inputs
@@ -112,10 +116,15 @@ module Syskit
         self
       end
 
-      # The connections between children, inherited ones included.
+      # The connections between children, inherited ones included, between
+      # the ports of the children as this model has them.
       def connections
         inherited = superclass.respond_to?(:connections) ? superclass.connections : []
-        inherited + (@connections || [])
+        (inherited + (@connections || [])).map do |c|
+          from = current_port(c.from)
+          to = current_port(c.to)
+          from.equal?(c.from) && to.equal?(c.to) ? c : Connection.new(from, to, c.policy, c.location)
+        end
       end
       alias each_explicit_connection connections
 
@@ -127,6 +136,14 @@ module Syskit
       end
 
       private
+
+      # +port+, of the child of its name in this model: a parent's
+      # declarations follow what a submodel overloads the child with, the
+      # port names mapped through the services it provides.
+      def current_port(port)
+        child = find_child(port.child_name)
+        child ? port.promote(child) : port
+      end
 
       def define_port_reader(name)
         reader = "#{name}_port"

@@ -165,6 +165,23 @@ module Syskit
       assert_equal narrowed.pose_child.odometry_port, narrowed.find_exported_output('odo')
     end
 
+    # A model with more specializations of the same root fullfills one
+    # with fewer, and a submodel of a specialized model has its
+    # specializations.
+    def test_specialized_models_fullfill_those_with_fewer_specializations
+      @model.add(Rig::Services::Pose, as: 'other')
+      @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      @model.specialize(@model.other_child => Rig::Services::Odometry)
+      source = odometry_source
+      one = @model.narrow('pose' => source)
+      both = @model.narrow('pose' => source, 'other' => source)
+      assert both.fullfills?(one)
+      assert both.new_submodel.fullfills?(one)
+      refute one.fullfills?(both)
+      refute @model.fullfills?(one)
+      assert_equal both.applied_specializations, both.new_submodel.applied_specializations
+    end
+
     def test_narrow_model_of_requirements
       @model.specialize(@model.pose_child => Rig::Services::Odometry)
       source = odometry_source

@@ -121,8 +121,25 @@ module Syskit
 
       # For a specialized model, the specializations applied to make it.
       def applied_specializations
-        @applied_specializations || []
+        return @applied_specializations if @applied_specializations
+
+        superclass.respond_to?(:applied_specializations) ? superclass.applied_specializations : []
       end
+
+      # The model a specialized model was made from (itself otherwise).
+      def specialization_root
+        @specialization_root || self
+      end
+
+      # A specialized model fullfills another made from the same root when
+      # it has at least its specializations (so do its submodels).
+      def fullfills?(model)
+        return true if super
+        return false unless model.is_a?(Class) && model.respond_to?(:specialization?) && model.specialization?
+
+        self <= model.specialization_root && (model.applied_specializations - applied_specializations).empty?
+      end
+      alias fulfills? fullfills?
 
       # For a specialized model, the models its children are specialized on.
       def specialized_children
@@ -260,6 +277,7 @@ module Syskit
       end
 
       def become_specialization(specs, children, root)
+        @specialization_root = root
         @applied_specializations = specs.freeze
         @specialized_children = children.freeze
         @declared_at = root.declared_at

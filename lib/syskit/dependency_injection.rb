@@ -106,7 +106,7 @@ module Syskit
     def normalize_key(key, location)
       case key
       when String, Symbol then key.to_s
-      when Models::CompositionChild then key.child_name
+      when Models::CompositionChild then key.path
       when Models::DataServiceModel, Profile::Tag then key
       else
         return key if key.is_a?(Class) && key < AbstractComponent

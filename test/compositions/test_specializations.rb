@@ -72,7 +72,7 @@ module Syskit
       @model.add(Rig::Services::SpeedSource, as: 'speed')
       @model.add_specialization_constraint { |a, b| a == b }
       first = @model.specialize(@model.pose_child => Rig::Services::Odometry)
-      @model.specialize(@model.follow_child => OroGen.rig.Follower)
+      @model.specialize(@model.pose_child => Composition)
       source = odometry_source
       error = assert_raises(NetworkError) { @model.narrow('pose' => source) }
       assert_match(/several specializations of Drive apply .* and cannot be combined/, error.message)
@@ -81,13 +81,54 @@ module Syskit
       assert_equal [first], narrowed.applied_specializations
     end
 
+    # As in Syskit, the constraints are asked when a specialization is
+    # declared.
     def test_constraints_must_be_symmetric
-      @model.add_specialization_constraint { |a, _b| a.specialized_children.key?('pose') }
+      @model.add_specialization_constraint { |a, _b| a.specialized_children['pose'] == [Rig::Services::Odometry] }
       @model.specialize(@model.pose_child => Rig::Services::Odometry)
-      @model.specialize(@model.follow_child => OroGen.rig.Follower)
-      source = odometry_source
-      error = assert_raises(DeclarationError) { @model.narrow('pose' => source) }
+      error = assert_raises(DeclarationError) { @model.specialize(@model.pose_child => Composition) }
       assert_match(/not symmetric/, error.message)
+    end
+
+    def test_a_child_may_be_named_by_the_model_it_requires
+      spec = @model.specialize(Rig::Services::Pose => Rig::Services::Odometry)
+      assert_equal({ 'pose' => [Rig::Services::Odometry] }, spec.specialized_children)
+      error = assert_raises(DeclarationError) { @model.specialize(Rig::Services::SpeedSource => OroGen.rig.Splitter) }
+      assert_match(/no child of Drive requires Rig::Services::SpeedSource/, error.message)
+      @model.add(Rig::Services::Pose, as: 'other')
+      error = assert_raises(DeclarationError) { @model.specialize(Rig::Services::Pose => Rig::Services::Odometry) }
+      assert_match(/several children of Drive require Rig::Services::Pose \(pose, other\)/, error.message)
+      assert_match(/specialize pose_child =>/, error.hint)
+    end
+
+    def test_a_specialization_must_refine_the_child_with_models
+      error = assert_raises(DeclarationError) { @model.specialize(@model.follow_child => OroGen.rig.Follower) }
+      assert_match(/does not specialize Drive.follow_child: it already requires rig::Follower/, error.message)
+      error = assert_raises(DeclarationError) { @model.specialize(@model.follow_child => OroGen.rig.Splitter) }
+      assert_match(/cannot be both a rig::Follower and a rig::Splitter/, error.message)
+      error = assert_raises(DeclarationError) { @model.specialize(@model.pose_child => 'Odometry') }
+      assert_match(/specialize pose => "Odometry": not a task, composition or data service model/, error.message)
+      error = assert_raises(DeclarationError) { @model.specialize(42 => Rig::Services::Odometry) }
+      assert_match(/specialize cannot select a child with 42/, error.message)
+      assert_empty @model.specializations
+    end
+
+    # The block runs when the specialization is declared, so that a
+    # mistake is reported at its line even if no network selects it.
+    def test_a_specialization_block_is_checked_where_it_is_written
+      error = assert_raises(DeclarationError) do
+        @model.specialize(@model.pose_child => Rig::Services::Odometry) { pose_child.odometry_port.connect_to follow_child.command_port }
+      end
+      assert_equal File.expand_path(__FILE__), error.location.path
+      assert_raises(NameError) do
+        @model.specialize(@model.pose_child => Rig::Services::Odometry) { this_is_no_statement }
+      end
+    end
+
+    def test_syskit_s_not_option_is_accepted_with_a_warning
+      spec = @model.specialize(@model.pose_child => Rig::Services::Odometry, not: OroGen.rig.Tracker)
+      assert_equal %w[pose], spec.specialized_children.keys
+      assert_match(/specialize's not: option: not modelled/, Syskit.app.problems.last.message)
     end
 
     def test_find_specialization_answers_constraint_blocks
@@ -109,6 +150,36 @@ module Syskit
       narrowed = submodel.narrow('pose' => source)
       assert narrowed < submodel
       assert_equal spec.specialized_children, narrowed.applied_specializations.first.specialized_children
+    end
+
+    # The block sees the child as the specialization requires it, even
+    # where a submodel made the child a component that provides it.
+    def test_a_specialization_block_sees_the_child_as_the_specialized_model
+      @model.specialize(@model.pose_child => Rig::Services::Odometry) { export pose_child.odometry_port, as: 'odo' }
+      source = odometry_source
+      submodel = @model.new_submodel(name: 'SourcedDrive')
+      submodel.overload 'pose', source
+      narrowed = submodel.narrow
+      refute_same submodel, narrowed
+      assert_equal %w[odo], narrowed.ports.keys
+      assert_equal narrowed.pose_child.odometry_port, narrowed.find_exported_output('odo')
+    end
+
+    # A model with more specializations of the same root fullfills one
+    # with fewer, and a submodel of a specialized model has its
+    # specializations.
+    def test_specialized_models_fullfill_those_with_fewer_specializations
+      @model.add(Rig::Services::Pose, as: 'other')
+      @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      @model.specialize(@model.other_child => Rig::Services::Odometry)
+      source = odometry_source
+      one = @model.narrow('pose' => source)
+      both = @model.narrow('pose' => source, 'other' => source)
+      assert both.fullfills?(one)
+      assert both.new_submodel.fullfills?(one)
+      refute one.fullfills?(both)
+      refute @model.fullfills?(one)
+      assert_equal both.applied_specializations, both.new_submodel.applied_specializations
     end
 
     def test_narrow_model_of_requirements

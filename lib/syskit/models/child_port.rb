@@ -17,11 +17,19 @@ module Syskit
 
       # +port+: the port of +owner+ (a Port).
       def initialize(child, port, owner)
+        @port = port
         @child = child
         @name = port.name
         @direction = port.direction
         @type = port.type
         @owner = owner
+      end
+
+      # The same port, of +child+: the child of the same name as a
+      # submodel (or an overload) sees it, whose models the port then maps
+      # onto.
+      def promote(child)
+        child.equal?(@child) ? self : ChildPort.new(child, @port, owner)
       end
 
       # The port's name in the model that declares it.
@@ -154,6 +162,13 @@ module Syskit
           location: location, hint: "connect it explicitly: #{out}.connect_to(#{other}.#{names.first}_port)"
         )
       end
+    end
+
+    # What a selection may name to share a task between children: another
+    # child (+first_child+, +first_child.src_child+) or a child's service
+    # (+first_child.pose_srv+). The generator selects the task built for
+    # +referenced_child+, through +referenced_service+ when there is one.
+    module ChildReference
     end
 
     # +connect_to+ of what holds a child's ports: a child, or a child seen

@@ -13,6 +13,7 @@ module Syskit
       class ServiceView
         include PortLookup
         include ChildConnections
+        include ChildReference
 
         attr_reader :child, :service_model, :bound_service
 
@@ -33,6 +34,23 @@ module Syskit
 
         def name
           bound_service&.name
+        end
+
+        # As a selection (+use('x' => tracker_child.rear_pose_srv)+): the
+        # child's task, through this service (see ChildReference).
+        def referenced_child
+          child
+        end
+
+        def referenced_service
+          bound_service
+        end
+
+        # What the child requires, narrowed to the service.
+        def requirements
+          return child.requirements unless bound_service
+
+          child.requirements.merge_selection(InstanceRequirements.from(bound_service))
         end
 
         # The view through the service's own model, whatever it is seen as.

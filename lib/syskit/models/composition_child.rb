@@ -16,27 +16,83 @@ module Syskit
     class CompositionChild
       include PortLookup
       include ChildConnections
+      include ChildReference
 
-      attr_reader :composition_model, :child_name, :requirements, :declared_at
+      # +reached_through+: for a child of a child composition, reached as
+      # +first_child.src_child+, the child it is reached through (nil for a
+      # composition's own child).
+      # The readers explain_missing explains, by suffix.
+      EXPLAINED = { '_port' => 'port', '_srv' => 'service', '_child' => 'child' }.freeze
 
-      def initialize(composition_model, child_name, requirements, location, optional: false)
+      attr_reader :composition_model, :child_name, :requirements, :declared_at, :reached_through
+
+      def initialize(composition_model, child_name, requirements, location, optional: false, reached_through: nil,
+                     facets: [])
         @composition_model = composition_model
+        @facets = facets.freeze
         @child_name = child_name
         @declared_at = location
         @optional = optional
+        @reached_through = reached_through
         self.requirements = requirements
       end
 
+      # The service models the child was required as before an overload
+      # replaced them with models that fullfill them: the child still has
+      # their ports (mapped onto the models that replaced them), as the
+      # blocks of specializations and the parent's declarations see it.
+      attr_reader :facets
+
       # The same child, as seen from the submodel +model+ of its composition.
       def promote(model)
-        CompositionChild.new(model, child_name, requirements, declared_at, optional: optional?)
+        CompositionChild.new(model, child_name, requirements, declared_at, optional: optional?, facets: facets)
       end
+
+      # As a selection (+use('x' => first_child)+), the child itself, with
+      # no particular service (see ChildReference).
+      def referenced_child
+        self
+      end
+
+      def referenced_service; end
 
       # Replaces what the child requires, and the +x_port+ readers with it.
       def requirements=(requirements)
         @requirements = requirements
         @ports = nil
+        @children = nil
         define_port_readers
+        define_child_readers
+      end
+
+      # The child +name+ of the composition this child requires, reached
+      # through it (+first_child.src_child+: what +use+ may give another
+      # child, so that both share one task); nil when there is none.
+      def find_child(name)
+        child = child_composition_model&.find_child(name)
+        return unless child
+
+        (@children ||= {})[child.child_name] ||=
+          CompositionChild.new(child.composition_model, child.child_name, child.requirements, child.declared_at,
+                               optional: child.optional?, reached_through: self)
+      end
+
+      # The names of the children of a child composition (empty otherwise).
+      def child_names
+        child_composition_model&.child_names || []
+      end
+
+      # The child's name from the composition it belongs to: +first.src+
+      # for a child reached through the child +first+ (the form of +use+'s
+      # keys).
+      def path
+        reached_through ? "#{reached_through.path}.#{child_name}" : child_name
+      end
+
+      # The composition's own child this one is reached through (itself for
+      # a composition's own child).
+      def outermost_child
+        reached_through ? reached_through.outermost_child : self
       end
 
       def models
@@ -99,6 +155,9 @@ module Syskit
             end
             break if model.is_a?(Class)
           end
+          facets.each do |facet|
+            facet.ports.each_value { |port| found[port.name] ||= ChildPort.new(self, port, facet) }
+          end
           found.freeze
         end
       end
@@ -130,17 +189,19 @@ module Syskit
       # service's reader (+x_port+, +x_srv+); nil otherwise (see
       # UserCode.explain).
       def explain_missing(name)
-        kind = { '_port' => 'port', '_srv' => 'service' }.find { |suffix, _| name.end_with?(suffix) }
+        kind = EXPLAINED.find { |suffix, _| name.end_with?(suffix) }&.last
         return unless kind
 
-        wanted = name.delete_suffix(kind[0])
-        names = kind[1] == 'port' ? ports.keys.sort : service_names
-        ["#{self} has no #{kind[1]} '#{wanted}'#{Naming.did_you_mean(wanted, names)}",
-         names.empty? ? "#{model} has no #{kind[1]}s" : "its #{kind[1]}s: #{names.join(', ')}"]
+        wanted = name.delete_suffix("_#{kind}")
+        names = { 'port' => -> { ports.keys.sort }, 'service' => -> { service_names }, 'child' => -> { child_names } }
+                .fetch(kind).call
+        plural = kind == 'child' ? 'children' : "#{kind}s"
+        ["#{self} has no #{kind} '#{wanted}'#{Naming.did_you_mean(wanted, names)}",
+         names.empty? ? "#{model} has no #{plural}" : "its #{plural}: #{names.join(', ')}"]
       end
 
       def to_s
-        "#{composition_model.short_name}.#{child_name}_child"
+        "#{reached_through || composition_model.short_name}.#{child_name}_child"
       end
       alias inspect to_s
       alias short_name to_s
@@ -154,6 +215,22 @@ module Syskit
 
         narrowed = requirements.narrow_model
         models.map { |m| m.equal?(requirements.component_model) ? narrowed : m }
+      end
+
+      # The composition model the child requires (narrowed as its ports
+      # are), nil when it requires none.
+      def child_composition_model
+        return unless requirements.composition?
+
+        requirements.selections.empty? ? requirements.component_model : requirements.narrow_model
+      end
+
+      # +x_child+ for each child of a child composition.
+      def define_child_readers
+        child_names.each do |name|
+          reader = "#{name}_child"
+          define_singleton_method(reader) { find_child(name) } unless respond_to?(reader)
+        end
       end
 
       def service_names

@@ -243,11 +243,22 @@ module Syskit
 
       def add_child(name, requirements, location)
         existing = find_child(name)
+        facets = existing ? facets_of(existing, requirements) : []
         requirements = overloaded(existing, requirements, location) if existing
-        child = CompositionChild.new(self, name, requirements, location, optional: existing&.optional? || false)
+        child = CompositionChild.new(self, name, requirements, location, optional: existing&.optional? || false,
+                                                                         facets: facets - requirements.models)
         (@children ||= {})[name] = child
         define_child_readers(name)
         child
+      end
+
+      # The models +existing+ is known as, which an overload with
+      # +requirements+ may fold into a model that fullfills them: the child
+      # keeps their ports (+pose_port+ of a Pose child overloaded with a
+      # task providing Pose), so that what was written against them still
+      # holds.
+      def facets_of(existing, requirements)
+        (existing.facets + existing.models + requirements.models).grep(DataServiceModel).uniq
       end
 
       # The requirements of +existing+ refined by +requirements+.

@@ -43,10 +43,14 @@ module Syskit
         find_port(name)
       end
 
-      # Exported ports by name, inherited ones included.
+      # Exported ports by name, inherited ones included, each a port of the
+      # child as this model has it (overloaded or not).
       def exports
         inherited = superclass.respond_to?(:exports) ? superclass.exports : {}
-        inherited.merge(@exports || {})
+        inherited.merge(@exports || {}).transform_values do |export|
+          port = current_port(export.port)
+          port.equal?(export.port) ? export : Export.new(export.name, port, export.location)
+        end
       end
 
       def exported_inputs
@@ -90,7 +94,7 @@ module Syskit
       # Whether +port+ is a port of a child of this composition (or of one
       # of the models it refines).
       def child_port?(port)
-        port.respond_to?(:composition_model) && self <= port.composition_model
+        port.respond_to?(:composition_model) && self <= port.composition_model && !port.child.reached_through
       end
 
       # Syskit's +connect(out_port => in_port, ...)+ form.
@@ -106,15 +110,21 @@ module Syskit
       # Records a connection from +from+ to +to+ (ports of children),
       # checked for directions, types and owners.
       def add_connection(from, to, policy, location)
+        check_grandchild_port(from, location)
         check_connection(from, to, location)
         (@connections ||= []) << Connection.new(from, to, policy, location)
         self
       end
 
-      # The connections between children, inherited ones included.
+      # The connections between children, inherited ones included, between
+      # the ports of the children as this model has them.
       def connections
         inherited = superclass.respond_to?(:connections) ? superclass.connections : []
-        inherited + (@connections || [])
+        (inherited + (@connections || [])).map do |c|
+          from = current_port(c.from)
+          to = current_port(c.to)
+          from.equal?(c.from) && to.equal?(c.to) ? c : Connection.new(from, to, c.policy, c.location)
+        end
       end
       alias each_explicit_connection connections
 
@@ -127,9 +137,29 @@ module Syskit
 
       private
 
+      # +port+, of the child of its name in this model: a parent's
+      # declarations follow what a submodel overloads the child with, the
+      # port names mapped through the services it provides.
+      def current_port(port)
+        child = find_child(port.child_name)
+        child ? port.promote(child) : port
+      end
+
       def define_port_reader(name)
         reader = "#{name}_port"
         define_singleton_method(reader) { find_port(name) } unless singleton_class.method_defined?(reader)
+      end
+
+      # Ports of a child of a child composition are that composition's to
+      # connect (the connection would change its model).
+      def check_grandchild_port(port, location)
+        return unless port.child.reached_through
+
+        raise DeclarationError.new(
+          "#{port} is a port of a child of the child composition #{port.child.outermost_child}: " \
+          'it cannot be connected from here',
+          location: location, hint: "export it from #{port.composition_model} and connect the exported port"
+        )
       end
 
       def check_connection(from, to, location)

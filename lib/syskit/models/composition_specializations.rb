@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/models/specialization_mappings'
+
 module Syskit
   module Models
     # Specializations of composition models, as Syskit's:
@@ -16,6 +18,8 @@ module Syskit
     # combined; then the choice is ambiguous (an error), unless
     # +prefer_specializations+ picks one. Part of CompositionModel.
     module CompositionSpecializations
+      include SpecializationMappings
+
       # One +specialize+ statement (or several on the same children): the
       # children it specializes (name => models) and its blocks.
       class Specialization
@@ -82,14 +86,17 @@ module Syskit
         location = Location.of_caller
         return new_submodel(&block) if mappings.empty?
 
+        mappings = without_not_option(mappings, location)
         children = normalize_specialization(mappings, location)
         spec = own_specializations.find { |s| s.specialized_children == children }
         unless spec
           spec = Specialization.new(self, children, location)
+          own_specializations.each { |other| compatible?(other, spec) }
           own_specializations << spec
         end
         spec.blocks << block if block
         @specialized_models = nil
+        check_specialization_block(spec, block) if block
         spec
       end
 
@@ -114,8 +121,25 @@ module Syskit
 
       # For a specialized model, the specializations applied to make it.
       def applied_specializations
-        @applied_specializations || []
+        return @applied_specializations if @applied_specializations
+
+        superclass.respond_to?(:applied_specializations) ? superclass.applied_specializations : []
       end
+
+      # The model a specialized model was made from (itself otherwise).
+      def specialization_root
+        @specialization_root || self
+      end
+
+      # A specialized model fullfills another made from the same root when
+      # it has at least its specializations (so do its submodels).
+      def fullfills?(model)
+        return true if super
+        return false unless model.is_a?(Class) && model.respond_to?(:specialization?) && model.specialization?
+
+        self <= model.specialization_root && (model.applied_specializations - applied_specializations).empty?
+      end
+      alias fulfills? fullfills?
 
       # For a specialized model, the models its children are specialized on.
       def specialized_children
@@ -164,18 +188,25 @@ module Syskit
         @own_specializations ||= []
       end
 
-      def normalize_specialization(mappings, location)
-        mappings.to_h do |child, models|
-          name = child.respond_to?(:child_name) ? child.child_name : child.to_s
-          unless find_child(name)
-            raise DeclarationError.new(
-              "specialize names #{name}, which is not a child of #{self}#{Naming.did_you_mean(name, child_names)}",
-              location: location, hint: "write specialize #{child_names.first || 'name'}_child => Model do ... end"
-            )
-          end
+      # Syskit's +not:+ option of specialize, which its selection does not
+      # use either: accepted, with a warning.
+      def without_not_option(mappings, location)
+        return mappings unless mappings.key?(:not)
 
-          [name, Array(models).freeze]
-        end
+        Syskit.app&.not_modelled("specialize's not: option", location)
+        mappings.except(:not)
+      end
+
+      # Runs the block on the specialized model now, as Syskit does, so
+      # that its mistakes are found where it is written rather than when a
+      # network selects it; the model is made again when selected.
+      def check_specialization_block(spec, block)
+        specialized_model([spec])
+      rescue StandardError
+        spec.blocks.delete(block)
+        raise
+      ensure
+        @specialized_models = nil
       end
 
       # Groups of specializations that apply together: one per
@@ -246,6 +277,7 @@ module Syskit
       end
 
       def become_specialization(specs, children, root)
+        @specialization_root = root
         @applied_specializations = specs.freeze
         @specialized_children = children.freeze
         @declared_at = root.declared_at

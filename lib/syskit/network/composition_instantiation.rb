@@ -62,6 +62,7 @@ module Syskit
 
       def waits_for_sibling?(composition, selection)
         references(selection).any? do |ref|
+          ref = ref.referenced_child.outermost_child
           owner = @building.reverse.find { |c| c.model <= ref.composition_model }
           owner.equal?(composition) && !composition.has_role?(ref.child_name)
         end
@@ -70,13 +71,13 @@ module Syskit
       # Children of compositions a selection refers to.
       def references(selection)
         found = [selection.reference].compact
-        selection.requirements.selections.explicit.each_value { |v| found << v if v.is_a?(Models::CompositionChild) }
+        selection.requirements.selections.explicit.each_value { |v| found << v if v.is_a?(Models::ChildReference) }
         found
       end
 
       def instantiate_child(composition, name, selection, requirements, context)
         child = composition.model.find_child(name)
-        return composition.add_child(name, referenced_task(selection.reference)) if selection.reference
+        return add_referenced_child(composition, name, selection.reference) if selection.reference
 
         child_requirements = with_composition_conf(composition, name, selection.requirements)
         return if child.optional? && child_requirements.abstract? && !@stub_abstract
@@ -85,6 +86,13 @@ module Syskit
         task = instantiate(child_requirements, child_context, "#{composition.name}.#{name}", composition)
         composition.add_child(name, task)
         composition.child_selections[name] = child_requirements
+      end
+
+      # The child +name+ is the task of another child (+reference+).
+      def add_referenced_child(composition, name, reference)
+        requirements = referenced_requirements(reference)
+        composition.add_child(name, requirements.instance)
+        composition.child_selections[name] = requirements
       end
 
       # The context a child's own children are selected in: without what
@@ -100,19 +108,49 @@ module Syskit
 
       # Selections naming a child of an enclosing composition select its task.
       def resolve_references(selections)
-        return selections unless selections.explicit.each_value.any?(Models::CompositionChild)
+        return selections unless selections.explicit.each_value.any?(Models::ChildReference)
 
         explicit = selections.explicit.transform_values do |value|
-          value.is_a?(Models::CompositionChild) ? InstanceRequirements.from(referenced_task(value)) : value
+          value.is_a?(Models::ChildReference) ? referenced_requirements(value) : value
         end
         DependencyInjection.new(explicit, selections.defaults, selections.declared_at)
       end
 
       def referenced_task(child)
-        owner = @building.reverse.find { |c| c.model <= child.composition_model }
-        owner&.child_task(child.child_name) ||
+        referenced_owner(child).children_by_role[child.child_name] || missing_child(child, referenced_owner(child))
+      end
+
+      # What a selection naming +child+ selects: its task, through the
+      # service selected for that child when there was one (the most
+      # narrowed information, as in Syskit).
+      def referenced_requirements(reference)
+        child = reference.referenced_child
+        task = referenced_task(child)
+        service = reference.referenced_service || referenced_owner(child).child_selections[child.child_name]&.service
+        InstanceRequirements.new([task.model], service: service, instance: task, declared_at: child.declared_at)
+      end
+
+      # The composition of the network being built that has +child+: an
+      # enclosing one, or the child composition a child is reached through.
+      def referenced_owner(child)
+        if child.reached_through
+          owner = referenced_task(child.reached_through)
+          return owner if owner.is_a?(Composition)
+
+          missing_child(child, owner)
+        end
+
+        @building.reverse.find { |c| c.model <= child.composition_model } ||
           raise(NetworkError.new("#{child} is selected, but no enclosing composition has that child",
                                  location: child.declared_at, hint: 'select a child of an enclosing composition'))
+      end
+
+      # A child that is not in the network (an optional child with nothing
+      # selected).
+      def missing_child(child, owner)
+        raise NetworkError.new("#{child} is selected, but #{owner} has no child '#{child.child_name}' in this network",
+                               location: child.declared_at,
+                               hint: "select something for the optional child '#{child.path}'")
       end
 
       # +conf 'name', child => [...]+ of the composition applies to the

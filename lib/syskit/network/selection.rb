@@ -37,7 +37,7 @@ module Syskit
         value, used = context.selection_for(child.child_name, child.models)
         explicit = used.include?(child.child_name)
         return Result.new(child.requirements, used, explicit, nil) if value.nil?
-        return Result.new(child.requirements, used, explicit, value) if value.is_a?(Models::CompositionChild)
+        return Result.new(child.requirements, used, explicit, value) if value.is_a?(Models::ChildReference)
 
         value = resolve_tag(value, context)
         location = context.location_of(used.first) || child.declared_at

@@ -1,0 +1,62 @@
+# frozen_string_literal: true
+
+require 'compositions/composition_test_helper'
+
+module Syskit
+  # What a child overloaded in a submodel (+overload 'pose', Odometry+)
+  # does to the declarations written against it: they follow the child,
+  # its ports mapped through the services that replaced what it required.
+  class TestChildOverloads < Minitest::Test
+    include CompositionTestHelper
+
+    def setup
+      super
+      load_rig
+    end
+
+    def new_cmp(name = nil, &)
+      Composition.new_submodel(name: name, &)
+    end
+
+    # A pose following composition, and a submodel of it in which the
+    # pose child is overloaded with odometry.
+    def overloaded_pose_child
+      parent = new_cmp do
+        add Rig::Services::Pose, as: 'pose'
+        add OroGen.rig.Follower, as: 'follow'
+        pose_child.pose_port.connect_to follow_child.pose_port
+        export pose_child.pose_port, as: 'out'
+      end
+      model = parent.new_submodel
+      model.overload 'pose', Rig::Services::Odometry
+      [parent, model]
+    end
+
+    # A parent's exports and connections are seen from a submodel through
+    # the child as the submodel overloads it, the service's ports mapped.
+    def test_exports_follow_an_overload_in_a_submodel
+      parent, model = overloaded_pose_child
+      assert_equal model.pose_child.odometry_port, model.find_exported_output('out')
+      assert_same parent.pose_child, parent.find_exported_output('out').child, 'the parent is left as it is'
+    end
+
+    def test_connections_follow_an_overload_in_a_submodel
+      parent, model = overloaded_pose_child
+      assert_same model.pose_child, model.connections.first.from.child
+      assert model.pose_child.odometry_port.connected_to?(model.follow_child.pose_port)
+      assert_same parent.pose_child, parent.connections.first.from.child
+    end
+
+    # The child keeps the ports of what it was required as, mapped onto
+    # the model that replaced it.
+    def test_an_overloaded_child_keeps_the_ports_of_the_services_it_was
+      model = new_cmp { add Rig::Services::Pose, as: 'pose' }
+      model.overload 'pose', Rig::Services::Odometry
+      assert_equal [Rig::Services::Odometry], model.pose_child.models
+      assert_equal [Rig::Services::Pose], model.pose_child.facets
+      assert_equal %w[odometry pose], model.pose_child.ports.keys.sort
+      assert_equal model.pose_child.odometry_port, model.pose_child.pose_port
+      assert_equal [Rig::Services::Pose], model.new_submodel.pose_child.facets
+    end
+  end
+end

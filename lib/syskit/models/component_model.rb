@@ -4,6 +4,7 @@ require 'syskit/models/not_a_model'
 
 require 'syskit/models/bound_service'
 require 'syskit/models/port_mapper'
+require 'syskit/models/service_lookups'
 require 'syskit/models/task_arguments'
 require 'syskit/models/task_requirements'
 
@@ -16,6 +17,7 @@ module Syskit
     module ComponentModel
       include TaskArguments
       include TaskRequirementStatements
+      include ServiceLookups
 
       class << self
         # Bumped whenever a component model gains a service or a stub: the
@@ -149,6 +151,7 @@ module Syskit
         (@services ||= {})[srv.full_name] = srv
         ComponentModel.declarations_changed
         define_service_reader(srv)
+        srv.master&.define_slave_reader(srv)
         srv
       end
 

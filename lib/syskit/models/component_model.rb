@@ -41,6 +41,12 @@ module Syskit
         @doc = text.to_s
       end
 
+      # Whether it is a placeholder model (see Placeholder): a component
+      # model declared in a file is not.
+      def placeholder?
+        false
+      end
+
       # Services by name, inherited ones included.
       def services
         cached(:services) do

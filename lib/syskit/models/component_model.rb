@@ -143,10 +143,7 @@ module Syskit
         master = master_service(slave_of, location) if slave_of
         full_name = master ? "#{master.full_name}.#{name}" : name
         existing = find_service(full_name)
-        if existing
-          raise DeclarationError.new("#{self.name} already has a #{existing} declared at #{existing.declared_at}",
-                                     location: location, hint: "give this one another name with as: 'other_name'")
-        end
+        check_override(existing, model, location) if existing
 
         port_mappings = PortMapper.new(self, model, mappings, location).map
         register_service(BoundService.new(self, name, model, port_mappings, location, master: master))
@@ -168,6 +165,25 @@ module Syskit
 
         reader = "#{srv.name}_srv"
         define_singleton_method(reader) { srv } unless singleton_class.method_defined?(reader, false)
+      end
+
+      # A submodel may declare again a service of its parent model, with
+      # the parent service's model or one providing it (a driver package's
+      # subclass driving a more specific device); a service is declared
+      # once per model.
+      def check_override(existing, model, location)
+        if existing.task_model.equal?(self)
+          raise DeclarationError.new("#{name} already has a #{existing} declared at #{existing.declared_at}",
+                                     location: location, hint: "give this one another name with as: 'other_name'")
+        end
+        return if model.fullfills?(existing.model)
+
+        raise DeclarationError.new(
+          "#{model} cannot replace the #{existing} declared at #{existing.declared_at}: " \
+          "it does not provide #{existing.model}",
+          location: location,
+          hint: "give the service another name with as: 'other_name', or use a model providing #{existing.model}"
+        )
       end
 
       def master_service(slave_of, location)

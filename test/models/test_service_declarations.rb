@@ -47,6 +47,16 @@ module Syskit
       assert_equal [OroGen.gps.F9Task.gps_srv], OroGen.gps.F9Task.each_data_service.to_a
     end
 
+    def test_a_device_driven_through_an_inherited_service_is_driven_by_the_subclass
+      extension = "Syskit.extend_model(OroGen.gps.Task) { driver_for MyApp::Devices::Gps }\n"
+      root = my_app("device(MyApp::Devices::Gps, as: 'gps', using: OroGen.gps.F9Task.gps_srv)",
+                    { 'models/devices/things.rb' => DEVICES, 'models/orogen/gps.orogen' => ORO,
+                      'models/orogen/gps.rb' => extension }, libraries: %w[gps])
+      load_app(root)
+      device = MyApp::Profiles::Base.syskit_profile.robot.find_device('gps')
+      assert_equal OroGen.gps.F9Task, device.driver_model
+    end
+
     def test_a_subclass_cannot_replace_a_service_by_an_unrelated_one
       root, app = app_with(<<~RUBY)
         Syskit.extend_model(OroGen.gps.Task) { driver_for MyApp::Devices::RtkGps, as: 'gps' }

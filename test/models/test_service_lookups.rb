@@ -124,6 +124,20 @@ module Syskit
       assert_equal 'right', stereo.right_srv.image_port.name
     end
 
+    def test_a_submodel_has_the_services_of_its_parent_as_its_own
+      sub = @stereo_task.new_submodel
+      srv = sub.stereo_srv
+      assert_equal sub, srv.component_model
+      assert_same @stereo_task.stereo_srv, srv.demoted
+      assert srv.same_service?(@stereo_task.stereo_srv)
+      refute_equal @stereo_task.stereo_srv, srv, 'services of two models'
+      assert_equal sub, srv.left_srv.component_model
+      assert_same srv, srv.left_srv.master
+      assert_same sub.find_data_service('stereo.left'), srv.left_srv
+      assert_equal srv, @stereo_task.stereo_srv.attach(sub)
+      assert_raises(DeclarationError) { sub.stereo_srv.attach(@stereo_task) }
+    end
+
     def test_bind_checks_that_a_model_stands_for_another
       assert_equal @gps_task, @gps_task.bind(@gps_task)
       assert_equal @gps_task.gps_srv, @gps_task.try_bind(@gps_task.gps_srv)

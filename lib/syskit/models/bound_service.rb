@@ -24,7 +24,8 @@ module Syskit
       attr_reader :dynamic_service, :dynamic_service_options
 
       def initialize(task_model, name, model, port_mappings, location, master: nil,
-                     dynamic_service: nil, dynamic_service_options: NO_OPTIONS)
+                     dynamic_service: nil, dynamic_service_options: NO_OPTIONS, demoted: nil)
+        @demoted = demoted
         @task_model = task_model
         @name = name
         @model = model
@@ -99,7 +100,30 @@ module Syskit
 
         BoundService.new(task_model, name, other, port_mappings_for(other), declared_at,
                          master: master, dynamic_service: dynamic_service,
-                         dynamic_service_options: dynamic_service_options)
+                         dynamic_service_options: dynamic_service_options, demoted: demoted)
+      end
+
+      # This service as a service of +component_model+, a submodel of its
+      # task model (Syskit's promotion): what +Sub.gps_srv+ is when Sub
+      # inherits the service; +master+ is the promoted master of a slave.
+      def attach(component_model, master: nil)
+        return self if component_model.equal?(task_model)
+
+        unless component_model.is_a?(Class) && component_model < task_model
+          raise DeclarationError.new("#{component_model.inspect} is not a submodel of #{task_model.name}",
+                                     location: Location.of_caller,
+                                     hint: "attach #{self} to a submodel of its task model")
+        end
+
+        BoundService.new(component_model, name, model, port_mappings, declared_at,
+                         master: master || self.master&.attach(component_model), dynamic_service: dynamic_service,
+                         dynamic_service_options: dynamic_service_options, demoted: demoted)
+      end
+
+      # The service as its task model's first declaration made it (itself
+      # unless it was promoted to a submodel, see #attach).
+      def demoted
+        @demoted || self
       end
 
       # Whether +other+ is this service of this task model (or of one it

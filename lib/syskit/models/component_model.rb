@@ -48,10 +48,18 @@ module Syskit
       end
 
       # Services by name, inherited ones included.
+      # Those of the parent model are promoted to this one (their
+      # +component_model+ is this model, as in Syskit), so that selecting
+      # +Sub.gps_srv+ selects Sub.
       def services
         cached(:services) do
           inherited = superclass.respond_to?(:services) ? superclass.services : {}
-          inherited.merge(@services || {}).freeze
+          own = @services || {}
+          promoted = {}
+          inherited.each do |full_name, srv|
+            promoted[full_name] = own[full_name] || promote(srv, own, promoted)
+          end
+          promoted.merge(own).freeze
         end
       end
 
@@ -160,11 +168,22 @@ module Syskit
 
       # +name_srv+ on the model, for a master service: Syskit's way of
       # selecting one service of a component (+use('pose' => Task.gps_srv)+).
+      # Submodels inherit the reader and get their own (promoted) service.
       def define_service_reader(srv)
         return unless srv.master?
 
         reader = "#{srv.name}_srv"
-        define_singleton_method(reader) { srv } unless singleton_class.method_defined?(reader, false)
+        name = srv.full_name
+        define_singleton_method(reader) { find_service(name) } unless singleton_class.method_defined?(reader, false)
+      end
+
+      # A parent's service +srv+ as a service of this model, its master
+      # being this model's (+own+ or already +promoted+).
+      def promote(srv, own, promoted)
+        master = srv.master && (own[srv.master.full_name] || promoted[srv.master.full_name])
+        copy = srv.attach(self, master: master)
+        master&.define_slave_reader(copy)
+        copy
       end
 
       # A submodel may declare again a service of its parent model, with
@@ -172,7 +191,8 @@ module Syskit
       # subclass driving a more specific device); a service is declared
       # once per model.
       def check_override(existing, model, location)
-        if existing.task_model.equal?(self)
+        existing = existing.demoted
+        if @services&.key?(existing.full_name)
           raise DeclarationError.new("#{name} already has a #{existing} declared at #{existing.declared_at}",
                                      location: location, hint: "give this one another name with as: 'other_name'")
         end

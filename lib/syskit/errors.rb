@@ -99,6 +99,9 @@ module Syskit
   # A name (device, bus, property...) that is not known.
   class UnknownName < DeclarationError; end
 
+  # A service asked for by its model when a component has several of it.
+  class AmbiguousServiceSelection < DeclarationError; end
+
   # A file of the app that cannot be loaded: syntax errors, exceptions raised
   # while it is evaluated, unknown task libraries or typekits.
   class FileLoadError < Error; end

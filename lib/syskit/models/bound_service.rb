@@ -1,12 +1,17 @@
 # frozen_string_literal: true
 
+require 'syskit/models/bound_service_ports'
+
 module Syskit
   module Models
     # A service provided by a task model, from +provides+ or +driver_for+:
     # its name (+as:+), the service model and which task port each service
     # port is. A service declared +slave_of:+ another has that service as
-    # its +master+ and is named after it (+stereo.left+).
+    # its +master+ and is named after it (+stereo.left+). Its ports and
+    # lookups (+Task.gps_srv.pose_port+) are in BoundServicePorts.
     class BoundService
+      include BoundServicePorts
+
       NO_OPTIONS = {}.freeze
       private_constant :NO_OPTIONS
 
@@ -19,7 +24,8 @@ module Syskit
       attr_reader :dynamic_service, :dynamic_service_options
 
       def initialize(task_model, name, model, port_mappings, location, master: nil,
-                     dynamic_service: nil, dynamic_service_options: NO_OPTIONS)
+                     dynamic_service: nil, dynamic_service_options: NO_OPTIONS, demoted: nil)
+        @demoted = demoted
         @task_model = task_model
         @name = name
         @model = model
@@ -28,6 +34,17 @@ module Syskit
         @master = master
         @dynamic_service = dynamic_service
         @dynamic_service_options = options_frozen(dynamic_service_options)
+        define_port_readers
+      end
+
+      # Syskit's name for the task model the service belongs to.
+      def component_model
+        task_model
+      end
+
+      # The service model (Syskit's +fullfilled_model+ of a bound service).
+      def fullfilled_model
+        model
       end
 
       # The name the task model knows the service by: +name+, after its
@@ -39,6 +56,11 @@ module Syskit
       # Whether it is a root service (not slave of another).
       def master?
         master.nil?
+      end
+
+      # Whether it is an instance of a dynamic service.
+      def dynamic?
+        !dynamic_service.nil?
       end
 
       # The device or bus model the task drives through this service, if any.
@@ -55,6 +77,62 @@ module Syskit
         model.fullfills?(other)
       end
 
+      # The slave service +name+ of this service (+stereo_srv.find_data_service('left')+).
+      def find_data_service(name)
+        task_model.find_service("#{full_name}.#{name}")
+      end
+
+      # Enumerates this service's slaves, in declaration order.
+      def each_slave_data_service(&)
+        task_model.each_slave_data_service(self, &)
+      end
+
+      # The same service seen through +other+, a model it provides: its
+      # ports are then +other+'s (+Task.bus_srv.as(Bus::ClientInSrv)+).
+      def as(other)
+        return self if other.equal?(model)
+
+        unless fullfills?(other)
+          raise DeclarationError.new("#{self} does not provide #{other}",
+                                     location: Location.of_caller,
+                                     hint: "its model provides #{model.each_fullfilled_model.to_a.join(', ')}")
+        end
+
+        BoundService.new(task_model, name, other, port_mappings_for(other), declared_at,
+                         master: master, dynamic_service: dynamic_service,
+                         dynamic_service_options: dynamic_service_options, demoted: demoted)
+      end
+
+      # This service as a service of +component_model+, a submodel of its
+      # task model (Syskit's promotion): what +Sub.gps_srv+ is when Sub
+      # inherits the service; +master+ is the promoted master of a slave.
+      def attach(component_model, master: nil)
+        return self if component_model.equal?(task_model)
+
+        unless component_model.is_a?(Class) && component_model < task_model
+          raise DeclarationError.new("#{component_model.inspect} is not a submodel of #{task_model.name}",
+                                     location: Location.of_caller,
+                                     hint: "attach #{self} to a submodel of its task model")
+        end
+
+        BoundService.new(component_model, name, model, port_mappings, declared_at,
+                         master: master || self.master&.attach(component_model), dynamic_service: dynamic_service,
+                         dynamic_service_options: dynamic_service_options, demoted: demoted)
+      end
+
+      # The service as its task model's first declaration made it (itself
+      # unless it was promoted to a submodel, see #attach).
+      def demoted
+        @demoted || self
+      end
+
+      # Whether +other+ is this service of this task model (or of one it
+      # derives from, or derives from it), whatever model it is seen through.
+      def same_service?(other)
+        other.is_a?(BoundService) && other.full_name == full_name &&
+          (task_model <= other.task_model || other.task_model <= task_model)
+      end
+
       # This service of +task+ (a task of a network), as its configure
       # method sees it (see Syskit::BoundService).
       def bind(task)
@@ -65,6 +143,17 @@ module Syskit
       # provides) is bound to.
       def task_port_for(srv_model, srv_port_name)
         task_model.find_port(port_mappings.fetch(model.port_mappings_for(srv_model).fetch(srv_port_name)))
+      end
+
+      # Two views of one service through the same model are equal.
+      def ==(other)
+        other.is_a?(BoundService) && other.task_model.equal?(task_model) &&
+          other.full_name == full_name && other.model.equal?(model)
+      end
+      alias eql? ==
+
+      def hash
+        [task_model, full_name, model].hash
       end
 
       def to_s

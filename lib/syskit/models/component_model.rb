@@ -4,6 +4,7 @@ require 'syskit/models/not_a_model'
 
 require 'syskit/models/bound_service'
 require 'syskit/models/port_mapper'
+require 'syskit/models/service_lookups'
 require 'syskit/models/task_arguments'
 require 'syskit/models/task_requirements'
 
@@ -16,6 +17,7 @@ module Syskit
     module ComponentModel
       include TaskArguments
       include TaskRequirementStatements
+      include ServiceLookups
 
       class << self
         # Bumped whenever a component model gains a service or a stub: the
@@ -39,11 +41,25 @@ module Syskit
         @doc = text.to_s
       end
 
+      # Whether it is a placeholder model (see Placeholder): a component
+      # model declared in a file is not.
+      def placeholder?
+        false
+      end
+
       # Services by name, inherited ones included.
+      # Those of the parent model are promoted to this one (their
+      # +component_model+ is this model, as in Syskit), so that selecting
+      # +Sub.gps_srv+ selects Sub.
       def services
         cached(:services) do
           inherited = superclass.respond_to?(:services) ? superclass.services : {}
-          inherited.merge(@services || {}).freeze
+          own = @services || {}
+          promoted = {}
+          inherited.each do |full_name, srv|
+            promoted[full_name] = own[full_name] || promote(srv, own, promoted)
+          end
+          promoted.merge(own).freeze
         end
       end
 
@@ -135,10 +151,7 @@ module Syskit
         master = master_service(slave_of, location) if slave_of
         full_name = master ? "#{master.full_name}.#{name}" : name
         existing = find_service(full_name)
-        if existing
-          raise DeclarationError.new("#{self.name} already has a #{existing} declared at #{existing.declared_at}",
-                                     location: location, hint: "give this one another name with as: 'other_name'")
-        end
+        check_override(existing, model, location) if existing
 
         port_mappings = PortMapper.new(self, model, mappings, location).map
         register_service(BoundService.new(self, name, model, port_mappings, location, master: master))
@@ -149,16 +162,48 @@ module Syskit
         (@services ||= {})[srv.full_name] = srv
         ComponentModel.declarations_changed
         define_service_reader(srv)
+        srv.master&.define_slave_reader(srv)
         srv
       end
 
       # +name_srv+ on the model, for a master service: Syskit's way of
       # selecting one service of a component (+use('pose' => Task.gps_srv)+).
+      # Submodels inherit the reader and get their own (promoted) service.
       def define_service_reader(srv)
         return unless srv.master?
 
         reader = "#{srv.name}_srv"
-        define_singleton_method(reader) { srv } unless singleton_class.method_defined?(reader, false)
+        name = srv.full_name
+        define_singleton_method(reader) { find_service(name) } unless singleton_class.method_defined?(reader, false)
+      end
+
+      # A parent's service +srv+ as a service of this model, its master
+      # being this model's (+own+ or already +promoted+).
+      def promote(srv, own, promoted)
+        master = srv.master && (own[srv.master.full_name] || promoted[srv.master.full_name])
+        copy = srv.attach(self, master: master)
+        master&.define_slave_reader(copy)
+        copy
+      end
+
+      # A submodel may declare again a service of its parent model, with
+      # the parent service's model or one providing it (a driver package's
+      # subclass driving a more specific device); a service is declared
+      # once per model.
+      def check_override(existing, model, location)
+        existing = existing.demoted
+        if @services&.key?(existing.full_name)
+          raise DeclarationError.new("#{name} already has a #{existing} declared at #{existing.declared_at}",
+                                     location: location, hint: "give this one another name with as: 'other_name'")
+        end
+        return if model.fullfills?(existing.model)
+
+        raise DeclarationError.new(
+          "#{model} cannot replace the #{existing} declared at #{existing.declared_at}: " \
+          "it does not provide #{existing.model}",
+          location: location,
+          hint: "give the service another name with as: 'other_name', or use a model providing #{existing.model}"
+        )
       end
 
       def master_service(slave_of, location)

@@ -5,6 +5,7 @@ require 'syskit/models/model_hierarchy'
 require 'syskit/models/port_lookup'
 require 'syskit/models/provided_models'
 require 'syskit/models/bus_service_role'
+require 'syskit/models/service_model_binding'
 
 module Syskit
   # The plain model objects the DSL records declarations into.
@@ -12,7 +13,8 @@ module Syskit
     # A data service: a named set of ports that components provide
     # (+data_service_type 'Pose' do output_port 'pose', '/base/Pose' end+).
     # This file holds its declaration, naming and ports; what it provides
-    # is in ProvidedModels, what a bus's services add in BusServiceRole.
+    # is in ProvidedModels, what a bus's services add in BusServiceRole,
+    # how components are bound to it in ServiceModelBinding.
     #
     # Models are modules so that assigning one to a constant names it, as Ruby
     # does for any module (+Device = DeviceModel.new+ is then called Device).
@@ -21,6 +23,7 @@ module Syskit
       include PortLookup
       include ProvidedModels
       include BusServiceRole
+      include ServiceModelBinding
 
       attr_reader :ports, :parents, :declared_at
       attr_accessor :doc

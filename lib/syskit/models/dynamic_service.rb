@@ -85,9 +85,16 @@ module Syskit
         end
         alias driver_for provides
 
+        # Declares a task argument of the model the instance is made on
+        # (+argument "#{name}_frame"+), as the task model's +argument+.
+        def argument(arg_name, **options)
+          component_model.argument(arg_name, **options)
+        end
+
         def explain_missing(method_name)
           ["unknown statement '#{method_name}' in dynamic service '#{@dynamic.name}'",
-           'the block declares the instance with provides or driver_for, from its name and options']
+           'the block declares the instance with provides or driver_for (and task arguments with argument), ' \
+           'from its name and options']
         end
 
         private

@@ -3,7 +3,7 @@
 module Syskit
   module Models
     # Syskit's port lookups on anything that has its ports by name in
-    # +ports+ (data services, composition models and their children).
+    # +ports+ (data services, task and composition models, children).
     module PortLookup
       def find_port(name)
         ports[name.to_s]
@@ -21,6 +21,14 @@ module Syskit
 
       def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
         ports.key?(name.to_s)
+      end
+
+      def has_input_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        !find_input_port(name).nil?
+      end
+
+      def has_output_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        !find_output_port(name).nil?
       end
 
       def each_port(&)

@@ -50,6 +50,12 @@ module Syskit
         self
       end
 
+      # The models this one provides, directly or not (Syskit's
+      # +parent_models+), in the order of #fullfilled_models.
+      def parent_models
+        fullfilled_models.drop(1)
+      end
+
       # Whether this model provides +model+, directly or not (Syskit's
       # +provides?+: a model does not provide itself).
       def provides?(model)

@@ -51,6 +51,11 @@ module Syskit
           (superclass.respond_to?(:argument_declared?) && superclass.argument_declared?(name))
       end
 
+      # Syskit's name for #argument_declared?.
+      def has_argument?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        argument_declared?(name.to_sym)
+      end
+
       def argument_declarations
         inherited = superclass.respond_to?(:argument_declarations) ? superclass.argument_declarations : {}
         inherited.merge(@argument_declarations || {})

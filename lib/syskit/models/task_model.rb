@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/component_model'
+require 'syskit/models/port_lookup'
 require 'syskit/models/driver_services'
 require 'syskit/models/dynamic_services'
 require 'syskit/models/task_specialization'
@@ -14,6 +15,7 @@ module Syskit
     # methods, +def configure+ defines the method the generator runs.
     module TaskModel
       include ComponentModel
+      include PortLookup
       include DynamicServices
       include DriverServices
       include TaskSpecialization

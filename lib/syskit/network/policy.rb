@@ -68,7 +68,8 @@ module Syskit
         period = device.period
         return burst + DEFAULT_BUFFER_SIZE - 1 unless period
 
-        burst + ((latency || DEFAULT_LATENCY) / period.to_f).ceil
+        # burst(0) with no latency would otherwise make an empty buffer.
+        [burst + ((latency || DEFAULT_LATENCY) / period.to_f).ceil, 1].max
       end
     end
   end

@@ -1,9 +1,13 @@
 # frozen_string_literal: true
 
+require 'syskit/robot/robot_lookups'
+
 module Syskit
   module Robot
     # The devices and buses of a profile's robot, in declaration order.
     class Definition
+      include RobotLookups
+
       DEVICE_OPTIONS = %i[client_to_bus bus_to_client].freeze
 
       attr_reader :profile
@@ -42,36 +46,6 @@ module Syskit
       # Whether a robot block of this robot is being evaluated.
       def declaring?
         @declaring
-      end
-
-      # The device +name+; +master.slave+ names a slave device.
-      def find_device(name)
-        name = name.to_s
-        found = @devices[name] || used_device(name)
-        return found if found || !name.include?('.')
-
-        master, slave = name.split('.', 2)
-        find_device(master)&.find_slave(slave)
-      end
-
-      # The device +name+ of a used robot.
-      def used_device(name)
-        @used.each do |robot|
-          found = robot.find_device(name)
-          return found if found
-        end
-        nil
-      end
-
-      # Enumerates the slave devices of every device, master by master.
-      def each_slave_device(&block)
-        return enum_for(__method__) unless block
-
-        devices.each { |device| device.each_slave(&block) }
-      end
-
-      def device_names
-        devices.map(&:name)
       end
 
       # Declares a device (+klass+ Device) or a bus (ComBus); +bus+ is the
@@ -287,20 +261,6 @@ module Syskit
 
           current = current.bus
         end
-      end
-    end
-
-    # A robot made alone, as Syskit's tests make one
-    # (+Syskit::Robot::RobotDefinition.new.device(Devices::Camera, as: 'x', using: model)+):
-    # the statements of a robot block are its methods.
-    class RobotDefinition < Definition
-      def initialize
-        super(nil)
-        @dsl = DSL.new(self)
-      end
-
-      %i[device com_bus through].each do |statement|
-        define_method(statement) { |*args, **options, &block| @dsl.public_send(statement, *args, **options, &block) }
       end
     end
   end

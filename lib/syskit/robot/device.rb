@@ -109,9 +109,10 @@ module Syskit
         setting(:period, seconds, 'a positive number of seconds') { |v| v.is_a?(Numeric) && v.positive? }
       end
 
-      # How many messages the device may send at once.
+      # How many messages the device may send at once, beyond one per
+      # period (0, Syskit's default, for none).
       def burst(count = nil)
-        setting(:burst, count, 'a positive integer') { |v| v.is_a?(Integer) && v.positive? }
+        setting(:burst, count, 'an integer, 0 or more') { |v| v.is_a?(Integer) && !v.negative? }
       end
 
       # Size of one message, for drivers that size their buffers.

@@ -1,0 +1,75 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Models
+    # What a data service model says of the components that provide it, as
+    # Syskit's service models do: a component model's (or a task's) service
+    # of this model (+Pose.bind(Task)+), the placeholder standing for "any
+    # component providing it", and, for devices, the loaded task models
+    # that drive it. Part of DataServiceModel.
+    module ServiceModelBinding
+      # The service of +component+ (a component model, or one of its
+      # services) that is or provides this model, seen as this model; nil
+      # if it has none or several.
+      def try_bind(component)
+        return component.as(self) if component.is_a?(BoundService) && component.fullfills?(self)
+        return unless component.respond_to?(:find_all_data_services_from_type)
+
+        found = component.find_all_data_services_from_type(self)
+        found.first if found.size == 1
+      end
+
+      # As #try_bind, but an error saying why there is no single service.
+      def bind(component)
+        found = try_bind(component)
+        return found if found
+
+        raise unbound(component, Location.of_caller)
+      end
+      alias resolve bind
+      alias try_resolve try_bind
+
+      # Why +component+ has no single service of this model.
+      def unbound(component, location)
+        services = []
+        if component.respond_to?(:find_all_data_services_from_type)
+          services = component.find_all_data_services_from_type(self)
+        end
+        if services.empty?
+          return DeclarationError.new("#{component.inspect} provides no service of type #{self}",
+                                      location: location, hint: "give a component that provides #{self}")
+        end
+
+        names = services.map(&:full_name).sort
+        AmbiguousServiceSelection.new("#{component.inspect} has several services of type #{self}: #{names.join(', ')}",
+                                      location: location,
+                                      hint: "choose one by its name: #{component.inspect}.#{names.first}_srv")
+      end
+
+      # The abstract task model standing for any component providing this
+      # model (see Placeholder), made once.
+      def placeholder_model
+        @placeholder_model ||= Placeholder.for([self])
+      end
+
+      # The loaded task models (not abstract) that drive this device model,
+      # by name.
+      def find_all_drivers
+        app = Syskit.app
+        app ? app.orogen.current_driver_index.drivers_for(self) : []
+      end
+
+      # The only loaded task model driving this device model; an error when
+      # there are none or several.
+      def default_driver
+        drivers = find_all_drivers
+        return drivers.first if drivers.size == 1
+
+        message = drivers.empty? ? 'no loaded task model drives' : "several task models drive (#{drivers.join(', ')})"
+        raise DriverError.new("#{message} #{self}",
+                              location: Location.of_caller,
+                              hint: drivers.empty? ? "load its driver's task library (using_task_library)" : 'pick one')
+      end
+    end
+  end
+end

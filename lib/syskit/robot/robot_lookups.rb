@@ -1,0 +1,64 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Robot
+    # Finding a robot's devices, under Syskit's names (+robot.find_device('gps')+,
+    # +has_device?('stereo.left')+, +each_master_device+). Part of Definition
+    # (uses its +devices+ and the robots it uses).
+    module RobotLookups
+      # The device +name+; +master.slave+ names a slave device.
+      def find_device(name)
+        name = name.to_s
+        found = @devices[name] || used_device(name)
+        return found if found || !name.include?('.')
+
+        master, slave = name.split('.', 2)
+        find_device(master)&.find_slave(slave)
+      end
+
+      # The device +name+ of a used robot.
+      def used_device(name)
+        @used.each do |robot|
+          found = robot.find_device(name)
+          return found if found
+        end
+        nil
+      end
+
+      # Enumerates the slave devices of every device, master by master.
+      def each_slave_device(&block)
+        return enum_for(__method__) unless block
+
+        devices.each { |device| device.each_slave(&block) }
+      end
+
+      def device_names
+        devices.map(&:name)
+      end
+
+      # Whether +name+ is a device (or bus) of this robot; +master.slave+
+      # names a slave device.
+      def has_device?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        !find_device(name).nil?
+      end
+
+      # Enumerates the devices and buses, then the slave devices.
+      def each_device(&block)
+        return enum_for(__method__) unless block
+
+        devices.each(&block)
+        each_slave_device(&block)
+      end
+
+      # Enumerates the devices and buses declared with device or com_bus.
+      def each_master_device(&)
+        devices.each(&)
+      end
+
+      # Whether it has no device.
+      def empty?
+        devices.empty?
+      end
+    end
+  end
+end

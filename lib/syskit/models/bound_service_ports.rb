@@ -7,6 +7,8 @@ module Syskit
     # is mapped to (+Task.gps_srv.pose_port+ is the task's port behind the
     # service's 'pose'). Part of BoundService.
     module BoundServicePorts
+      include PortLookup
+
       # +{service port name => task port name}+, for every port of the
       # service model (Syskit's +port_mappings_for_task+).
       def port_mappings_for_task
@@ -19,40 +21,12 @@ module Syskit
         model.port_mappings_for(srv_model).transform_values { |name| port_mappings.fetch(name) }
       end
 
-      # The task port behind the service port +name+; nil if the service
-      # model has no such port.
-      def find_port(name)
-        task_port_name = port_mappings[name.to_s]
-        task_model.find_port(task_port_name) if task_port_name
-      end
-
-      def find_output_port(name)
-        port = find_port(name)
-        port if port&.output?
-      end
-
-      def find_input_port(name)
-        port = find_port(name)
-        port if port&.input?
-      end
-
-      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-        port_mappings.key?(name.to_s)
-      end
-
-      # The task ports behind the service's ports, in the service model's order.
-      def each_port(&block)
-        return enum_for(__method__) unless block
-
-        model.ports.each_key { |name| yield find_port(name) }
-      end
-
-      def each_input_port(&)
-        each_port.select(&:input?).each(&)
-      end
-
-      def each_output_port(&)
-        each_port.select(&:output?).each(&)
+      # +{service port name => task port}+: the task port behind each port
+      # of the service model, in its order. Syskit's lookups (find_port,
+      # find_input_port, has_port?, each_port...) read it (PortLookup).
+      def ports
+        task_ports = task_model.ports
+        model.ports.each_key.filter_map { |name| (task = port_mappings[name]) && [name, task_ports[task]] }.to_h
       end
 
       # The task port behind a port of the service model (a port object

@@ -21,7 +21,6 @@ module Syskit
             hint: "write dynamic_service Model, as: 'name' do provides Model, 'port' => \"\#{name}_port\" end"
           )
         end
-        check_dynamic_service_ports(model, location)
         if find_dynamic_service(as)
           raise DeclarationError.new("#{name} already has a dynamic service named '#{as}'",
                                      location: location, hint: "give this one another name with as: 'other_name'")
@@ -97,27 +96,6 @@ module Syskit
       end
 
       private
-
-      # Each port of +model+ needs a static port or a dynamic_*_port pattern
-      # of its direction and type on the task: else no instance could be made.
-      def check_dynamic_service_ports(model, location)
-        missing = model.ports.values.reject { |port| port_for_dynamic_service?(port) }
-        return if missing.empty?
-
-        raise DeclarationError.new(
-          "#{name} has no port and no dynamic port for #{model}'s #{missing.join(', ')}: " \
-          'no instance of the dynamic service could be made',
-          location: location,
-          hint: "declare a dynamic_#{missing.first.direction}_port(/\\w+/, '#{missing.first.type.name}') " \
-                "in #{name}'s .orogen declaration, or a port of that type"
-        )
-      end
-
-      # Whether a static port or a dynamic port pattern can stand for +port+.
-      def port_for_dynamic_service?(port)
-        ports.each_value.any? { |p| p.direction == port.direction && p.type == port.type } ||
-          dynamic_ports.any? { |d| d.direction == port.direction && (d.type.nil? || d.type == port.type) }
-      end
 
       # Syskit changes the task model itself; here the ports a dynamic
       # service creates go on a specialization, made for the purpose.

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/device_enumeration'
+
 module Syskit
   # What a driver's configure method (and a test) asks a task about the
   # devices it drives, under Syskit's names:
@@ -10,22 +12,15 @@ module Syskit
   #     dev = find_device_attached_to('left')     # by service name, model or service
   #     each_attached_device { |dev| ... }        # on a bus driver: the devices it serves
   #   end
+  #
+  # each_master_device enumerates the devices the task drives (the devices
+  # of its master driver services, each once), each_slave_device their
+  # slaves (DeviceEnumeration).
   module DeviceLookups
+    include DeviceEnumeration
+
     NO_DEVICES = [].freeze
     private_constant :NO_DEVICES
-
-    # Enumerates the devices the task drives (the devices of its master
-    # driver services), each once.
-    def each_master_device(&)
-      devices.each(&)
-    end
-
-    # Enumerates the slave devices of the devices it drives.
-    def each_slave_device(&block)
-      return enum_for(__method__) unless block
-
-      devices.each { |device| device.each_slave(&block) }
-    end
 
     # Enumerates the buses it drives.
     def each_com_bus_device(&block)

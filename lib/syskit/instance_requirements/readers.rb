@@ -19,12 +19,22 @@ module Syskit
       def self.for(model)
         return unless model.is_a?(Class)
 
-        services = model.respond_to?(:each_data_service) ? model.each_data_service.select(&:master?).map(&:name) : []
-        children = model.respond_to?(:child_names) ? model.child_names : []
+        services = service_names(model)
+        children = child_names(model)
         return if services.empty? && children.empty?
 
         key = [services, children].freeze
         LOCK.synchronize { MODULES[key] ||= build(services, children) }
+      end
+
+      # The names of +model+'s master services (readers x_srv).
+      def self.service_names(model)
+        model.respond_to?(:each_data_service) ? model.each_data_service.select(&:master?).map(&:name) : []
+      end
+
+      # The names of +model+'s children (readers x_child).
+      def self.child_names(model)
+        model.respond_to?(:child_names) ? model.child_names : []
       end
 
       def self.build(services, children)
@@ -64,23 +74,11 @@ module Syskit
         return unless suffix
 
         wanted = name.delete_suffix(suffix)
-        names = what == 'service' ? reader_service_names : reader_child_names
+        names = what == 'service' ? Readers.service_names(component_model) : Readers.child_names(component_model)
         hint = if names.empty? then "#{component_model || models.join(', ')} has no #{plural}"
                else "its #{plural}: #{names.join(', ')}"
                end
         ["#{self} has no #{what} '#{wanted}'#{Naming.did_you_mean(wanted, names)}", hint]
-      end
-
-      private
-
-      def reader_service_names
-        model = component_model
-        model.respond_to?(:each_data_service) ? model.each_data_service.select(&:master?).map(&:name) : []
-      end
-
-      def reader_child_names
-        model = component_model
-        model.respond_to?(:child_names) ? model.child_names : []
       end
     end
   end

@@ -1,11 +1,17 @@
 # frozen_string_literal: true
 
+require 'syskit/device_enumeration'
+
 module Syskit
   module Robot
     # Finding a robot's devices, under Syskit's names (+robot.find_device('gps')+,
     # +has_device?('stereo.left')+, +each_master_device+). Part of Definition
     # (uses its +devices+ and the robots it uses).
     module RobotLookups
+      # each_master_device (the devices and buses declared with device or
+      # com_bus) and each_slave_device.
+      include DeviceEnumeration
+
       # The device +name+; +master.slave+ names a slave device.
       def find_device(name)
         name = name.to_s
@@ -25,13 +31,6 @@ module Syskit
         nil
       end
 
-      # Enumerates the slave devices of every device, master by master.
-      def each_slave_device(&block)
-        return enum_for(__method__) unless block
-
-        devices.each { |device| device.each_slave(&block) }
-      end
-
       def device_names
         devices.map(&:name)
       end
@@ -48,11 +47,6 @@ module Syskit
 
         devices.each(&block)
         each_slave_device(&block)
-      end
-
-      # Enumerates the devices and buses declared with device or com_bus.
-      def each_master_device(&)
-        devices.each(&)
       end
 
       # Whether it has no device.

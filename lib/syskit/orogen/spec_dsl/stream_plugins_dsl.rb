@@ -40,10 +40,12 @@ module Syskit
         @plugin.streams << StreamAlignerSpec::Stream.new(port.name, Float(period))
       end
 
-      # Evaluates +block+, then gives the task what the plugin adds.
+      # Evaluates +block+, then gives the task what the plugin adds (and
+      # makes it need configuring, as the plugin does). Returns the plugin's
+      # declarations.
       def evaluate(location, &block)
         instance_eval(&block) if block
-        return unless @plugin.needed?
+        return @plugin unless @plugin.needed?
 
         unless @plugin.max_latency
           raise SpecError.new("#{@task_spec.name}'s #{plugin_name} block declares no max_latency",
@@ -51,6 +53,8 @@ module Syskit
         end
 
         add_interface
+        @task_spec.needs_configuration = true
+        @plugin
       end
 
       private
@@ -76,12 +80,19 @@ module Syskit
         port = @task_spec.find_port(name)
         return port if port&.input?
 
-        inputs = @task_spec.all_ports.values.select(&:input?).map(&:name).sort
-        raise SpecError.new(
-          "#{statement} '#{name}': #{@task_spec.name} has no input port '#{name}'#{Naming.did_you_mean(name, inputs)}",
-          location: Location.of_caller,
-          hint: inputs.empty? ? 'declare the input port before this block' : "its input ports are #{inputs.join(', ')}"
-        )
+        raise no_port(name, statement, :input)
+      end
+
+      # The error for a statement naming a port the task does not have (of
+      # +direction+, when given).
+      def no_port(name, statement, direction = nil)
+        ports = @task_spec.all_ports.values
+        ports = ports.select { |p| p.direction == direction } if direction
+        names = ports.map(&:name).sort
+        what = direction ? "#{direction} port" : 'port'
+        hint = names.empty? ? "declare the #{what} before this block" : "its #{what}s are #{names.join(', ')}"
+        SpecError.new("#{statement} '#{name}': #{@task_spec.name} has no #{what} '#{name}'" \
+                      "#{Naming.did_you_mean(name.to_s, names)}", location: Location.of_caller, hint: hint)
       end
     end
 
@@ -154,16 +165,6 @@ module Syskit
                             "got #{transform.inspect}",
                             location: Location.of_caller,
                             hint: "write #{statement} '#{port_name}', 'body' => 'world'")
-      end
-
-      def no_port(name, statement, direction = nil)
-        ports = @task_spec.all_ports.values
-        ports = ports.select { |p| p.direction == direction } if direction
-        names = ports.map(&:name).sort
-        what = direction ? "#{direction} port" : 'port'
-        hint = names.empty? ? "declare the #{what} before this block" : "its #{what}s are #{names.join(', ')}"
-        SpecError.new("#{statement} '#{name}': #{@task_spec.name} has no #{what} '#{name}'" \
-                      "#{Naming.did_you_mean(name.to_s, names)}", location: Location.of_caller, hint: hint)
       end
 
       # What oroGen's transformer adds to the task: its latency and status,

@@ -114,20 +114,12 @@ module Syskit
       # ports, and the properties and ports the plugin adds to the task
       # (see TransformerDSL). Repeated blocks add to the first.
       def transformer(&)
-        location = Location.of_caller
-        plugin = @spec.own_transformer
-        TransformerDSL.new(self, @spec, plugin).evaluate(location, &)
-        @spec.needs_configuration = true if plugin.needed?
-        plugin
+        TransformerDSL.new(self, @spec, @spec.own_transformer).evaluate(Location.of_caller, &)
       end
 
       # oroGen's stream aligner plugin (see StreamAlignerDSL).
       def stream_aligner(&)
-        location = Location.of_caller
-        plugin = @spec.own_stream_aligner
-        StreamAlignerDSL.new(self, @spec, plugin).evaluate(location, &)
-        @spec.needs_configuration = true if plugin.needed?
-        plugin
+        StreamAlignerDSL.new(self, @spec, @spec.own_stream_aligner).evaluate(Location.of_caller, &)
       end
 
       # A property an oroGen plugin adds, unless the task (or its parent)

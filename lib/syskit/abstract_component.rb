@@ -1,13 +1,13 @@
 # frozen_string_literal: true
 
-require 'syskit/models/component_model'
+require 'syskit/models/component'
 
 module Syskit
   # The root of the components of a network, as in Syskit: task contexts
   # and compositions are Components. Models (the subclasses) are extended
-  # with Models::ComponentModel.
+  # with Models::Component.
   class AbstractComponent
-    extend Models::ComponentModel
+    extend Models::Component
   end
 
   # What task contexts and compositions are (Syskit::Component): the

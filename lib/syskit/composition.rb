@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'syskit/models/composition_model'
+require 'syskit/models/composition'
 
 module Syskit
   # A composition: components put together for one purpose, their ports
@@ -17,7 +17,7 @@ module Syskit
   # the generator makes. It is named after where it stands in the plan
   # (+arm_control+, +arm_control.controller+ for a composition child).
   class Composition < Component
-    extend Models::CompositionModel
+    extend Models::Composition
 
     attr_reader :arguments
     attr_accessor :conf, :name, :requirement, :parent

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'syskit/dependency_injection/context'
+require 'syskit/dependency_injection_context'
 
 module Syskit
   # What +use+ says: which model, device or definition to put in place of a

@@ -165,7 +165,7 @@ module Syskit
     def narrow_model
       return component_model unless composition?
 
-      context = profile ? profile.dependency_injection_context : DependencyInjection::Context::EMPTY
+      context = profile ? profile.dependency_injection_context : DependencyInjectionContext::EMPTY
       component_model.narrow(context.with(selections), hints: specialization_hints)
     end
 

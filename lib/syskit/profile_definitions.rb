@@ -169,7 +169,7 @@ module Syskit
       # selections of the profiles it uses, then its own.
       def dependency_injection_context
         @dependency_injection_context ||= begin
-          context = DependencyInjection::Context::EMPTY.with(robot_injection)
+          context = DependencyInjectionContext::EMPTY.with(robot_injection)
           all_used_profiles.each { |p| context = context.with(p.selections) }
           context.with(selections)
         end

@@ -85,7 +85,7 @@ module Syskit
         name = check_name(name, "#{direction}_port")
         port = Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
         spec.ports[name] = port
-        Models::ComponentModel.declarations_changed
+        Models::Component.declarations_changed
         define_method("#{name}_port") { find_bound_port(name) } unless method_defined?("#{name}_port")
         PortModifiers.new(port)
       end

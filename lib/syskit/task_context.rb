@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'syskit/models/task_model'
+require 'syskit/models/task_context'
 require 'syskit/properties'
 
 module Syskit
@@ -11,7 +11,7 @@ module Syskit
   # arguments, applies configuration sections, then calls {#configure}, which
   # users override in extension files (calling +super+ first).
   class TaskContext < Component
-    extend Models::TaskModel
+    extend Models::TaskContext
 
     # A task model made in Ruby, as Syskit's tests make them:
     # +Syskit::TaskContext.new_submodel { input_port 'in', '/double' }+ is

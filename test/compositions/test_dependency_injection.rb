@@ -20,7 +20,7 @@ module Syskit
     end
 
     def context(*mappings)
-      DependencyInjection::Context::EMPTY.with(DependencyInjection::EMPTY.add(mappings, nil))
+      DependencyInjectionContext::EMPTY.with(DependencyInjection::EMPTY.add(mappings, nil))
     end
 
     def selected(context, child = @watch.pose_child)
@@ -98,7 +98,7 @@ module Syskit
     # itself) does not undo what an outer one selected for that model.
     def test_a_default_does_not_undo_an_outer_selection_of_its_model
       front = OroGen.rig.Tracker.front_pose_srv
-      layered = DependencyInjection::Context::EMPTY
+      layered = DependencyInjectionContext::EMPTY
                 .with(DependencyInjection::EMPTY.add([{ Rig::Services::Pose => front }], nil))
                 .with(DependencyInjection::EMPTY.add([Rig::Services::Pose, { 'name' => Rig::Services::Pose }], nil))
       assert_same front, layered.direct_selection_for(Rig::Services::Pose)

@@ -17,7 +17,7 @@ module Syskit
 
       # Frames and transformations given in Ruby (Syskit's transformer
       # extension) are runtime. Without a block, a task model answers what
-      # its .orogen file declares (Models::TaskModel#transformer).
+      # its .orogen file declares (Models::TaskContext#transformer).
       def transformer(*_args, **_options, &block)
         return super() if block.nil? && defined?(super)
 

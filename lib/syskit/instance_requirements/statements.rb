@@ -20,7 +20,7 @@ module Syskit
         copy(conf: names, conf_location: location)
       end
 
-      # Task arguments (see ComponentModel#argument).
+      # Task arguments (see Component#argument).
       def with_arguments(**arguments)
         copy(arguments: self.arguments.merge(arguments).freeze)
       end

@@ -5,7 +5,7 @@ module Syskit
     # Finding a composition's children by the names users write: the keys
     # of +use+ ('arm', 'control.arm' for a child of a child composition),
     # and the +x_child+ readers. A name no child has is an error that says
-    # which children there are. Part of CompositionModel.
+    # which children there are. Part of Composition.
     module CompositionLookups
       # Checks that each of +keys+ (the string keys of a +use+) names a
       # child, as Syskit does: a child of this model or of one of its

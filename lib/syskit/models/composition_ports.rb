@@ -7,7 +7,7 @@ module Syskit
     # The dataflow of composition models: the ports a composition exports
     # (its own ports are its children's, +export controller_child.cmd_port,
     # as: 'cmd'+) and the connections between its children. Part of
-    # CompositionModel.
+    # Composition.
     module CompositionPorts
       include PortLookup
 
@@ -38,7 +38,7 @@ module Syskit
         end
 
         (@exports ||= {})[name] = Export.new(name, port, location)
-        ComponentModel.declarations_changed
+        Component.declarations_changed
         define_port_reader(name)
         find_port(name)
       end

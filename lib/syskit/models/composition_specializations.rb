@@ -16,7 +16,7 @@ module Syskit
     # apply together are merged into one submodel, unless a constraint
     # (+add_specialization_constraint { |a, b| ... }+) says they cannot be
     # combined; then the choice is ambiguous (an error), unless
-    # +prefer_specializations+ picks one. Part of CompositionModel.
+    # +prefer_specializations+ picks one. Part of Composition.
     module CompositionSpecializations
       include SpecializationMappings
 

@@ -1,13 +1,13 @@
 # frozen_string_literal: true
 
-require 'syskit/models/dynamic_service'
+require 'syskit/models/dynamic_data_service'
 
 module Syskit
   module Models
-    # +dynamic_service+ on task models (see DynamicService).
+    # +dynamic_service+ on task models (see DynamicDataService).
     module DynamicServices
       # Declares a dynamic service of +model+ named +as+; the block declares
-      # each instance (see DynamicService). Syskit's +dynamic:+,
+      # each instance (see DynamicDataService). Syskit's +dynamic:+,
       # +remove_when_unused:+ and +addition_requires_reconfiguration:+ say
       # when a running component is reconfigured: accepted, no effect on a
       # plan.
@@ -26,8 +26,8 @@ module Syskit
                                      location: location, hint: "give this one another name with as: 'other_name'")
         end
 
-        ComponentModel.declarations_changed
-        (@dynamic_services ||= {})[as.to_s] = DynamicService.new(self, as.to_s, model, block, location)
+        Component.declarations_changed
+        (@dynamic_services ||= {})[as.to_s] = DynamicDataService.new(self, as.to_s, model, block, location)
       end
 
       # Syskit's +require_dynamic_service+: the instance +as+ of the dynamic

@@ -4,7 +4,7 @@ module Syskit
   module Models
     # Finding a component model's services by their model, and checking
     # that a model stands for another, as Syskit's component models do.
-    # Part of ComponentModel (uses #services_fulfilling).
+    # Part of Component (uses #services_fulfilling).
     #
     #   Task.find_data_service_from_type(Pose)       # its only Pose service, or nil
     #   Task.find_all_data_services_from_type(Pose)  # each, seen as a Pose

@@ -33,7 +33,7 @@ module Syskit
         # hash, since a profile of 10,000 devices has 10,000 roots.
         @root_requirements = {}.compare_by_identity
         profile = context.profile
-        @base = profile ? profile.dependency_injection_context : DependencyInjection::Context::EMPTY
+        @base = profile ? profile.dependency_injection_context : DependencyInjectionContext::EMPTY
       end
 
       def run

@@ -3,7 +3,7 @@
 module Syskit
   module Network
     # What fills a composition's child, from the dependency injection in
-    # effect (see DependencyInjection::Context): one function of (child,
+    # effect (see DependencyInjectionContext): one function of (child,
     # context), used by the generator and by +narrow+.
     module Selection
       # The selected requirements of a child (the child's own when nothing
@@ -18,10 +18,10 @@ module Syskit
       # selections, a DependencyInjection, a context, or nil.
       def context_from(value)
         case value
-        when DependencyInjection::Context then value
-        when DependencyInjection then DependencyInjection::Context::EMPTY.with(value)
-        when nil then DependencyInjection::Context::EMPTY
-        when Hash then DependencyInjection::Context::EMPTY.with(DependencyInjection::EMPTY.add([value], nil))
+        when DependencyInjectionContext then value
+        when DependencyInjection then DependencyInjectionContext::EMPTY.with(value)
+        when nil then DependencyInjectionContext::EMPTY
+        when Hash then DependencyInjectionContext::EMPTY.with(DependencyInjection::EMPTY.add([value], nil))
         else raise ArgumentError, "expected selections, got #{value.inspect}"
         end
       end

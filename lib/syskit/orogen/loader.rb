@@ -89,7 +89,7 @@ module Syskit
       # library is loaded or a task model gains a service; the app settles
       # every device's driver with an index of its own once all is loaded.
       def current_driver_index
-        key = [@libraries.size, Models::ComponentModel.declarations_version]
+        key = [@libraries.size, Models::Component.declarations_version]
         return @driver_index if @driver_index_key == key
 
         @driver_index_key = key

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'syskit/models/component_model'
+require 'syskit/models/component'
 require 'syskit/models/port_lookup'
 require 'syskit/models/driver_services'
 require 'syskit/models/dynamic_services'
@@ -13,8 +13,8 @@ module Syskit
     # module, so that +Syskit.extend_model OroGen.lib.Task do ... end+ is a
     # plain +class_eval+: +driver_for+, +provides+ and +stub+ are class
     # methods, +def configure+ defines the method the generator runs.
-    module TaskModel
-      include ComponentModel
+    module TaskContext
+      include Component
       include PortLookup
       include DynamicServices
       include DriverServices
@@ -136,7 +136,7 @@ module Syskit
       # from the property the configure method just set).
       def stub(&block)
         (@stub_blocks ||= []) << block
-        ComponentModel.declarations_changed
+        Component.declarations_changed
         block
       end
 

@@ -14,7 +14,7 @@ module Syskit
     # Component: the data services they provide (+provides Srv, as: 'name'+,
     # each then reachable as +name_srv+), their arguments, the requirement
     # statements (+with_conf+, +use+...), and what they fullfill.
-    module ComponentModel
+    module Component
       include TaskArguments
       include TaskRequirementStatements
       include ServiceLookups
@@ -135,7 +135,7 @@ module Syskit
 
       # A view computed once per +key+ (and +subkey+), until declarations change.
       def cached(key, subkey = nil)
-        version = ComponentModel.declarations_version
+        version = Component.declarations_version
         if @cache_version != version
           @cache = {}
           @cache_version = version
@@ -160,7 +160,7 @@ module Syskit
       # Makes +srv+ (a BoundService of this model) one of its services.
       def register_service(srv)
         (@services ||= {})[srv.full_name] = srv
-        ComponentModel.declarations_changed
+        Component.declarations_changed
         define_service_reader(srv)
         srv.master&.define_slave_reader(srv)
         srv

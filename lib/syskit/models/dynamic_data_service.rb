@@ -16,7 +16,7 @@ module Syskit
     # as: 'camera_link')+), with the instance's +name+ and +options+. Its
     # mappings may name ports the task does not have: they are created,
     # when one of the task's dynamic_*_port patterns allows them.
-    class DynamicService
+    class DynamicDataService
       attr_reader :task_model, :name, :model, :declared_at
 
       def initialize(task_model, name, model, block, location)

@@ -23,8 +23,8 @@ module Syskit
     #
     # Each child is reachable as +name_child+, on the model (the
     # CompositionChild) and on its instances (the child's task).
-    module CompositionModel
-      include ComponentModel
+    module Composition
+      include Component
       include CompositionPorts
       include CompositionSpecializations
       include CompositionLookups

@@ -137,7 +137,7 @@ module Syskit
     # model, as far as can be told while files load.
     def selection_of_model?(key, value)
       if key.is_a?(Class)
-        return true unless [Module, InstanceRequirements, Models::BoundService].any? { |kind| value.is_a?(kind) }
+        return true unless [Module, InstanceRequirements, Models::BoundDataService].any? { |kind| value.is_a?(kind) }
 
         component = InstanceRequirements.from(value).component_model
         component.is_a?(Class) && component <= key

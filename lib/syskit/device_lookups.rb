@@ -70,8 +70,8 @@ module Syskit
 
     def service_for_device_lookup(service, location)
       case service
-      when Models::BoundService then service
-      when BoundService then service.model
+      when Models::BoundDataService then service
+      when BoundDataService then service.model
       when nil then only(model.driver_services, 'driver service', location)
       when Models::DataServiceModel then only(model.services_fulfilling(service), "service of #{service}", location)
       else model.find_service(service.to_s) || raise(unknown_service(service.to_s, location))

@@ -38,7 +38,7 @@ module Syskit
     # .from): requirements, a model's service, a device, a tag, a
     # composition's child, a task of the network being generated.
     def self.selectable_kinds
-      [InstanceRequirements, Models::DataServiceModel, Robot::Device, Models::BoundService,
+      [InstanceRequirements, Models::DataServiceModel, Robot::MasterDeviceInstance, Models::BoundDataService,
        Models::ChildReference, Profile::Tag, AbstractComponent]
     end
 
@@ -57,8 +57,8 @@ module Syskit
       case value
       when InstanceRequirements then value
       when Profile::Tag, Models::ChildReference then value.requirements
-      when Robot::Device then new(device: value, declared_at: value.declared_at)
-      when Models::BoundService then new([value.task_model], service: value, declared_at: location)
+      when Robot::MasterDeviceInstance then new(device: value, declared_at: value.declared_at)
+      when Models::BoundDataService then new([value.task_model], service: value, declared_at: location)
       when AbstractComponent then new([value.model], instance: value, declared_at: location)
       when Array then new(value.map { |v| from(v, location: location).models }.flatten.uniq, declared_at: location)
       else new([value], declared_at: location)

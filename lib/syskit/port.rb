@@ -114,7 +114,7 @@ module Syskit
     end
 
     # The component's own port: this one (a service's port readers give
-    # the task's ports already, see BoundService).
+    # the task's ports already, see BoundDataService).
     def to_component_port
       self
     end

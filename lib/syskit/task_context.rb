@@ -55,7 +55,7 @@ module Syskit
       @children = []
       @child_tasks = []
       @connections = NO_CONNECTIONS
-      @conf = Robot::Device::DEFAULT_CONF
+      @conf = Robot::MasterDeviceInstance::DEFAULT_CONF
       assign_arguments(arguments)
     end
 
@@ -101,13 +101,13 @@ module Syskit
     def devices
       @devices ||= begin
         found = []
-        arguments.each_value { |value| found << value if value.is_a?(Robot::Device) && !found.include?(value) }
+        arguments.each_value { |value| found << value if value.is_a?(Robot::MasterDeviceInstance) && !found.include?(value) }
         found.freeze
       end
     end
 
     # The services made for this task from dynamic services, as Syskit's
-    # required dynamic services (Syskit::BoundService, their options in
+    # required dynamic services (Syskit::BoundDataService, their options in
     # +srv.model.dynamic_service_options+): those its model requires (a
     # specialization's, see Models::DynamicServices#require_dynamic_service)
     # and its devices' slaves declared from one.

@@ -46,7 +46,7 @@ module Syskit
 
       # What a definition selects for the children of its composition,
       # as [key, selected] pairs: the key's name, and the device selected
-      # (a Robot::Device) or the name of what is.
+      # (a Robot::MasterDeviceInstance) or the name of what is.
       def selections(definition)
         injection = definition.requirements.selections
         explicit = injection.explicit.map { |k, v| [k.is_a?(String) ? k : k.to_s, selected(v)] }
@@ -63,7 +63,7 @@ module Syskit
       # deployment preferences, timing and declared traffic.
       def settings(device)
         list = device.dsl_attributes.map { |name, v| [name.to_s, code(Render::Text.plain(v, +'', ids: true))] }
-        list << ['with_conf', device.conf.map { |c| code(c) }.join(', ')] if device.conf != Robot::Device::DEFAULT_CONF
+        list << ['with_conf', device.conf.map { |c| code(c) }.join(', ')] if device.conf != Robot::MasterDeviceInstance::DEFAULT_CONF
         unless device.deployment_hints.empty?
           list << ['prefer_deployed_tasks', device.deployment_hints.map { |d| code(d.inspect) }.join(', ')]
         end

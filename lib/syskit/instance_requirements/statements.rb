@@ -113,7 +113,7 @@ module Syskit
       def select_service(srv)
         srv = srv.service if srv.is_a?(InstanceRequirements)
         model = component_model
-        unless srv.is_a?(Models::BoundService) && model.is_a?(Class) && model <= srv.task_model
+        unless srv.is_a?(Models::BoundDataService) && model.is_a?(Class) && model <= srv.task_model
           shown = srv.respond_to?(:task_model) ? srv : Arguments.shown(srv)
           raise DeclarationError.new("#{shown} is not a service of #{self}",
                                      location: Location.of_caller, hint: 'select one of its x_srv')

@@ -7,7 +7,7 @@ module Syskit
   module Models
     class CompositionChild
       # A child seen through one of its service models; through one of the
-      # services of its component model (+bound_service+, a BoundService)
+      # services of its component model (+bound_service+, a BoundDataService)
       # when it comes from find_data_service or
       # find_all_data_services_from_type.
       class ServiceView

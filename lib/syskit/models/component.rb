@@ -2,7 +2,7 @@
 
 require 'syskit/models/not_a_model'
 
-require 'syskit/models/bound_service'
+require 'syskit/models/bound_data_service'
 require 'syskit/models/port_mapper'
 require 'syskit/models/service_lookups'
 require 'syskit/models/task_arguments'
@@ -154,10 +154,10 @@ module Syskit
         check_override(existing, model, location) if existing
 
         port_mappings = PortMapper.new(self, model, mappings, location).map
-        register_service(BoundService.new(self, name, model, port_mappings, location, master: master))
+        register_service(BoundDataService.new(self, name, model, port_mappings, location, master: master))
       end
 
-      # Makes +srv+ (a BoundService of this model) one of its services.
+      # Makes +srv+ (a BoundDataService of this model) one of its services.
       def register_service(srv)
         (@services ||= {})[srv.full_name] = srv
         Component.declarations_changed

@@ -27,7 +27,7 @@ module Syskit
         @declared_at = location
       end
 
-      # The service named +as+ (a BoundService of +on+, the task model or
+      # The service named +as+ (a BoundDataService of +on+, the task model or
       # a specialization of it) and the ports it needs created; +location+
       # is where the instance is asked for.
       def instantiate(as, options, location, on: task_model)
@@ -78,7 +78,7 @@ module Syskit
           check(model, as, location)
           master = master_service(slave_of, location) if slave_of
           mapper = PortMapper.new(component_model, model, mappings.merge(more), location, dynamic: true)
-          @service = BoundService.new(component_model, name, model, mapper.map, location,
+          @service = BoundDataService.new(component_model, name, model, mapper.map, location,
                                       master: master, dynamic_service: @dynamic, dynamic_service_options: options)
           @created_ports = mapper.created
           @service

@@ -26,7 +26,7 @@ module Syskit
         base, services = split(models)
         return base if services.empty?
 
-        component = base.is_a?(BoundService) ? base.task_model : base
+        component = base.is_a?(BoundDataService) ? base.task_model : base
         model = Network::StubModels.service_provider(services, base: component)
         model.spec.abstract = true
         model.extend(Proxy)
@@ -37,7 +37,7 @@ module Syskit
       # The component model (or service) of +models+, and the services it
       # does not provide yet.
       def split(models)
-        bases = models.select { |m| m.is_a?(Class) || m.is_a?(BoundService) }
+        bases = models.select { |m| m.is_a?(Class) || m.is_a?(BoundDataService) }
         if bases.size > 1
           raise DeclarationError.new("a placeholder derives from one component model at most, got #{bases.join(', ')}",
                                      location: Location.of_caller, hint: 'give one component model and services')

@@ -34,7 +34,7 @@ module Syskit
       # +object+ itself if it is this model, a submodel of it or one of
       # their services, nil otherwise (Syskit's +try_bind+).
       def try_bind(object)
-        component = object.is_a?(BoundService) ? object.task_model : object
+        component = object.is_a?(BoundDataService) ? object.task_model : object
         object if component.is_a?(Class) && component <= self
       end
 

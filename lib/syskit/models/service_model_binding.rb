@@ -12,7 +12,7 @@ module Syskit
       # services) that is or provides this model, seen as this model; nil
       # if it has none or several.
       def try_bind(component)
-        return component.as(self) if component.is_a?(BoundService) && component.fullfills?(self)
+        return component.as(self) if component.is_a?(BoundDataService) && component.fullfills?(self)
         return unless component.respond_to?(:find_all_data_services_from_type)
 
         found = component.find_all_data_services_from_type(self)

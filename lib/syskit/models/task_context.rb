@@ -116,7 +116,7 @@ module Syskit
       # to the task as its +<as>_dev+ argument. Ports of the device model are
       # bound by name and type, or by +'device_port' => 'task_port'+ mappings
       # (keywords or a hash). +slave_of: 'master'+ makes it a slave device
-      # of the master service's device (see Robot::SlaveDevice).
+      # of the master service's device (see Robot::SlaveDeviceInstance).
       def driver_for(model, mappings = {}, as: nil, slave_of: nil, **more)
         location = Location.of_caller
         unless model.is_a?(DeviceModel)

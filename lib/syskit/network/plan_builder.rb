@@ -101,7 +101,7 @@ module Syskit
           when Types::StructValue then value.class.type.to_plain(value)
           when Array then value.map { |v| plain_argument(v) }
           when Hash then value.to_h { |k, v| [k.to_s, plain_argument(v)] }
-          when Symbol, Robot::Device, Module then value.to_s
+          when Symbol, Robot::MasterDeviceInstance, Module then value.to_s
           else value
           end
         end

@@ -1,12 +1,12 @@
 # frozen_string_literal: true
 
-require 'syskit/robot/device'
+require 'syskit/robot/master_device_instance'
 
 module Syskit
   module Robot
     # A communication bus on a robot (+com_bus CAN, as: 'can0'+). It is a
     # device too: its driver is the bus driver task.
-    class ComBus < Device
+    class ComBus < MasterDeviceInstance
       include CanTraffic::BusStatements
 
       def initialize(*args, **options)

@@ -195,7 +195,7 @@ module Syskit
       # driver model, and the requirements the device takes over.
       def driver_requirements(using, location)
         case using
-        when Models::BoundService then [using.task_model, nil]
+        when Models::BoundDataService then [using.task_model, nil]
         when InstanceRequirements
           unless using.arguments.empty? && using.selections.empty? && !using.device
             raise DeclarationError.new(

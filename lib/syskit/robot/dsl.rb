@@ -13,7 +13,7 @@ module Syskit
       # Declares a device: +device(Devices::GPS::Ublox::F9, as: 'gps')+.
       # +doc:+, or else the comment block just above, documents it.
       def device(model, as: nil, using: nil, doc: nil, **options)
-        declare(Device, model, as, using, doc, options, Location.of_caller)
+        declare(MasterDeviceInstance, model, as, using, doc, options, Location.of_caller)
       end
 
       # Declares a communication bus: +com_bus Devices::Bus::CAN, as: 'can0'+.
@@ -70,7 +70,7 @@ module Syskit
       end
 
       def chained?(name)
-        Device.public_method_defined?(name)
+        MasterDeviceInstance.public_method_defined?(name)
       end
     end
   end

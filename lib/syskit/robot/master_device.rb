@@ -66,7 +66,7 @@ module Syskit
         elsif (existing = find_slave(name))
           existing.claim(location)
         else
-          early_bind(register_slave(SlaveDevice.new(self, check_slave_name(name.to_s, location),
+          early_bind(register_slave(SlaveDeviceInstance.new(self, check_slave_name(name.to_s, location),
                                                     location: location)))
         end
       end
@@ -83,7 +83,7 @@ module Syskit
         driver.driver_services_for(model).each do |srv|
           driver.each_slave_data_service(srv) do |slave_srv|
             slave = find_slave(slave_srv.name) ||
-                    register_slave(SlaveDevice.new(self, slave_srv.name, location: declared_at, implicit: true))
+                    register_slave(SlaveDeviceInstance.new(self, slave_srv.name, location: declared_at, implicit: true))
             slave.bind_early(driver)
           end
         end
@@ -151,11 +151,11 @@ module Syskit
         driver_model.driver_services_for(model).each do |srv|
           driver_model.each_slave_data_service(srv) do |slave_srv|
             register_slave(known[slave_srv.name] ||
-                           SlaveDevice.new(self, slave_srv.name, location: declared_at, implicit: true))
+                           SlaveDeviceInstance.new(self, slave_srv.name, location: declared_at, implicit: true))
           end
         end
         # Slaves asked for that the driver does not have are errors
-        # (SlaveDevice#resolve); the driver's own are all registered above.
+        # (SlaveDeviceInstance#resolve); the driver's own are all registered above.
         known.each_value { |slave| register_slave(slave) unless slave.implicit? || find_slave(slave.name) }
       end
 
@@ -172,7 +172,7 @@ module Syskit
         return existing if existing && existing.dynamic_service_name == dynamic && existing.dynamic_options == options
 
         check_slave_name(as, location)
-        register_slave(SlaveDevice.new(self, as, location: location, dynamic: dynamic, options: options))
+        register_slave(SlaveDeviceInstance.new(self, as, location: location, dynamic: dynamic, options: options))
       end
 
       def check_slave_name(name, location)
@@ -204,7 +204,7 @@ module Syskit
       end
     end
 
-    class Device
+    class MasterDeviceInstance
       include MasterDevice
     end
   end

@@ -13,7 +13,7 @@ module Syskit
       def syskit_stub_device(model, as: nil, driver: nil, using: nil, **settings)
         location = Location.of_caller
         driver ||= using || described_driver_for(model) || StubModels.device_driver(model)
-        device = syskit_stub_robot.add_device(Robot::Device, model, as || syskit_stub_name('dev'),
+        device = syskit_stub_robot.add_device(Robot::MasterDeviceInstance, model, as || syskit_stub_name('dev'),
                                               using: driver, options: {}, location: location)
         device.driver_model = driver
         apply_stub_settings(device, settings, location)
@@ -43,7 +43,7 @@ module Syskit
         base = base_model || parent_model || Syskit::Device
         model, driver = attached_model_and_driver(bus, base, driver, bus_to_client, client_to_bus)
         # A bus attached to a bus (+base_model: N2k::Bus+) is a bus itself.
-        kind = model.is_a?(Models::ComBusModel) ? Robot::ComBus : Robot::Device
+        kind = model.is_a?(Models::ComBusModel) ? Robot::ComBus : Robot::MasterDeviceInstance
         device = syskit_stub_robot.add_device(kind, model, as || syskit_stub_name('dev'),
                                               using: driver, options: {}, location: Location.of_caller)
         device.driver_model = driver
@@ -67,7 +67,7 @@ module Syskit
           return syskit_stub_and_deploy(device)
         end
 
-        requirement = device.is_a?(Robot::Device) ? InstanceRequirements.from(device) : device
+        requirement = device.is_a?(Robot::MasterDeviceInstance) ? InstanceRequirements.from(device) : device
         result = syskit_stub_generate([requirement])
         @task = result.task_for(requirement.device)
       end

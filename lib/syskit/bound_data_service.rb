@@ -14,10 +14,10 @@ module Syskit
   #     find_device_attached_to(srv)               # the device it drives
   #   end
   #
-  # Its +model+ is the task model's service (a Models::BoundService); it is
+  # Its +model+ is the task model's service (a Models::BoundDataService); it is
   # seen through +service_model+ (the service's model, or one it provides
   # after +as+), whose ports it has as +x_port+.
-  class BoundService
+  class BoundDataService
     attr_reader :component, :model, :service_model
 
     def initialize(component, model, service_model = model.model)
@@ -50,7 +50,7 @@ module Syskit
     # then +other+'s.
     def as(other)
       return self if other.equal?(service_model)
-      return BoundService.new(component, model, other) if fullfills?(other)
+      return BoundDataService.new(component, model, other) if fullfills?(other)
 
       raise ArgumentError, "#{self} does not provide #{other}"
     end
@@ -63,7 +63,7 @@ module Syskit
     end
 
     def ==(other)
-      other.is_a?(BoundService) && other.component.equal?(component) && other.model.equal?(model)
+      other.is_a?(BoundDataService) && other.component.equal?(component) && other.model.equal?(model)
     end
     alias eql? ==
 

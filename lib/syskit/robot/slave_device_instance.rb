@@ -12,7 +12,7 @@ module Syskit
     # Its period, burst and sample_size are its own, or else its master's.
     # What configures the driver (with_conf, prefer_deployed_tasks,
     # deployed_as, attach_to) is declared on the master.
-    class SlaveDevice < Device
+    class SlaveDeviceInstance < MasterDeviceInstance
       attr_reader :master_device, :service, :dynamic_service_name, :dynamic_options
 
       # Not Device#initialize: a slave has no model of its own until its
@@ -136,7 +136,7 @@ module Syskit
       end
 
       def inspect
-        "#<Syskit::Robot::SlaveDevice #{full_name}>"
+        "#<Syskit::Robot::SlaveDeviceInstance #{full_name}>"
       end
 
       private

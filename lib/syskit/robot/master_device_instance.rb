@@ -14,7 +14,7 @@ module Syskit
     # modules of its device model and of the bus it is attached to.
     # Their values are kept by DslAttributes; its slaves and a deployment of
     # its own are MasterDevice's; a bus is a ComBus.
-    class Device
+    class MasterDeviceInstance
       include CanTraffic::DeviceStatements
       include DslAttributes
 
@@ -197,7 +197,7 @@ module Syskit
       end
 
       def inspect
-        "#<#{com_bus? ? 'Syskit::Robot::ComBus' : 'Syskit::Robot::Device'} #{name}>"
+        "#<#{com_bus? ? 'Syskit::Robot::ComBus' : 'Syskit::Robot::MasterDeviceInstance'} #{name}>"
       end
 
       private

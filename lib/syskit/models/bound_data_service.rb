@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require 'syskit/models/bound_service_ports'
+require 'syskit/models/bound_data_service_ports'
 
 module Syskit
   module Models
@@ -8,9 +8,9 @@ module Syskit
     # its name (+as:+), the service model and which task port each service
     # port is. A service declared +slave_of:+ another has that service as
     # its +master+ and is named after it (+stereo.left+). Its ports and
-    # lookups (+Task.gps_srv.pose_port+) are in BoundServicePorts.
-    class BoundService
-      include BoundServicePorts
+    # lookups (+Task.gps_srv.pose_port+) are in BoundDataServicePorts.
+    class BoundDataService
+      include BoundDataServicePorts
 
       NO_OPTIONS = {}.freeze
       private_constant :NO_OPTIONS
@@ -98,7 +98,7 @@ module Syskit
                                      hint: "its model provides #{model.each_fullfilled_model.to_a.join(', ')}")
         end
 
-        BoundService.new(task_model, name, other, port_mappings_for(other), declared_at,
+        BoundDataService.new(task_model, name, other, port_mappings_for(other), declared_at,
                          master: master, dynamic_service: dynamic_service,
                          dynamic_service_options: dynamic_service_options, demoted: demoted)
       end
@@ -115,7 +115,7 @@ module Syskit
                                      hint: "attach #{self} to a submodel of its task model")
         end
 
-        BoundService.new(component_model, name, model, port_mappings, declared_at,
+        BoundDataService.new(component_model, name, model, port_mappings, declared_at,
                          master: master || self.master&.attach(component_model), dynamic_service: dynamic_service,
                          dynamic_service_options: dynamic_service_options, demoted: demoted)
       end
@@ -129,14 +129,14 @@ module Syskit
       # Whether +other+ is this service of this task model (or of one it
       # derives from, or derives from it), whatever model it is seen through.
       def same_service?(other)
-        other.is_a?(BoundService) && other.full_name == full_name &&
+        other.is_a?(BoundDataService) && other.full_name == full_name &&
           (task_model <= other.task_model || other.task_model <= task_model)
       end
 
       # This service of +task+ (a task of a network), as its configure
-      # method sees it (see Syskit::BoundService).
+      # method sees it (see Syskit::BoundDataService).
       def bind(task)
-        Syskit::BoundService.new(task, self)
+        Syskit::BoundDataService.new(task, self)
       end
 
       # The task port a port of +srv_model+ (this service's model or one it
@@ -147,7 +147,7 @@ module Syskit
 
       # Two views of one service through the same model are equal.
       def ==(other)
-        other.is_a?(BoundService) && other.task_model.equal?(task_model) &&
+        other.is_a?(BoundDataService) && other.task_model.equal?(task_model) &&
           other.full_name == full_name && other.model.equal?(model)
       end
       alias eql? ==

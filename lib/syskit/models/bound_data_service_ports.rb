@@ -5,8 +5,8 @@ module Syskit
     # The ports of a task model's service, as Syskit's bound data service
     # models give them: each port of the service model is the task port it
     # is mapped to (+Task.gps_srv.pose_port+ is the task's port behind the
-    # service's 'pose'). Part of BoundService.
-    module BoundServicePorts
+    # service's 'pose'). Part of BoundDataService.
+    module BoundDataServicePorts
       include PortLookup
 
       # +{service port name => task port name}+, for every port of the

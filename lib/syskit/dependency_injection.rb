@@ -107,7 +107,7 @@ module Syskit
       case key
       when String, Symbol then key.to_s
       when Models::CompositionChild then key.path
-      when Models::DataServiceModel, Profile::Tag then key
+      when Models::DataServiceModel, Actions::Profile::Tag then key
       else
         return key if key.is_a?(Class) && key < AbstractComponent
 

@@ -105,7 +105,7 @@ module Syskit
     def self.follow_chains(state)
       state.transform_values do |value|
         seen = []
-        while (value.is_a?(Module) || value.is_a?(Profile::Tag)) && state.key?(value) && !seen.include?(value)
+        while (value.is_a?(Module) || value.is_a?(Actions::Profile::Tag)) && state.key?(value) && !seen.include?(value)
           seen << value
           next_value = state[value]
           break if DependencyInjectionContext.placeholder?(next_value) || next_value.equal?(value)

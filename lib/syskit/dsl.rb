@@ -87,14 +87,14 @@ module Syskit
       def profile(name, &block)
         location = Location.of_caller
         mod = profile_module(name.to_s, location)
-        Profile.for_module(mod, location)
+        Actions::Profile.for_module(mod, location)
         mod.module_eval(&block) if block
         mod
       end
 
       # A robot block in a module makes the module a profile.
       def robot(&)
-        Profile.for_module(self, Location.of_caller).robot_block(&)
+        Actions::Profile.for_module(self, Location.of_caller).robot_block(&)
       end
 
       private

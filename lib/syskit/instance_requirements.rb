@@ -39,7 +39,7 @@ module Syskit
     # composition's child, a task of the network being generated.
     def self.selectable_kinds
       [InstanceRequirements, Models::DataServiceModel, Robot::MasterDeviceInstance, Models::BoundDataService,
-       Models::ChildReference, Profile::Tag, AbstractComponent]
+       Models::ChildReference, Actions::Profile::Tag, AbstractComponent]
     end
 
     # Whether +value+ can stand for a component in a network (what +use+
@@ -56,7 +56,7 @@ module Syskit
     def self.from(value, location: nil)
       case value
       when InstanceRequirements then value
-      when Profile::Tag, Models::ChildReference then value.requirements
+      when Actions::Profile::Tag, Models::ChildReference then value.requirements
       when Robot::MasterDeviceInstance then new(device: value, declared_at: value.declared_at)
       when Models::BoundDataService then new([value.task_model], service: value, declared_at: location)
       when AbstractComponent then new([value.model], instance: value, declared_at: location)

@@ -90,7 +90,7 @@ module Syskit
           use_profile Generic
         end
       RUBY
-      assert_kind_of Profile::Tag, Rig::Profiles::Generic.localization_tag
+      assert_kind_of Actions::Profile::Tag, Rig::Profiles::Generic.localization_tag
       plan = plan_of(app, 'watch_def')
       assert_equal 'gps', plan.find_composition('watch').children['pose']
       error = assert_raises(NetworkError) do

@@ -62,7 +62,7 @@ module Syskit
       def doc(text = nil)
         return super if text
 
-        @doc ||= (Profile.doc_above(declared_at) if declared_at && !specialization?)
+        @doc ||= (Actions::Profile.doc_above(declared_at) if declared_at && !specialization?)
       end
 
       def to_s

@@ -48,7 +48,7 @@ module Syskit
 
       # A tag selected by the profile's (or a using profile's) injection.
       def resolve_tag(value, context)
-        return value unless value.is_a?(Profile::Tag)
+        return value unless value.is_a?(Actions::Profile::Tag)
 
         context.direct_selection_for(value) || value
       end

@@ -68,7 +68,7 @@ module Syskit
 
       def syskit_action_requirements(action)
         return action.syskit_profile.all_requirements if action.respond_to?(:syskit_profile)
-        return action.all_requirements if action.is_a?(Profile)
+        return action.all_requirements if action.is_a?(Actions::Profile)
         return [InstanceRequirements.from(action)] if InstanceRequirements.selectable?(action)
 
         profile = syskit_profile

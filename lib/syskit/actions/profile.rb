@@ -1,0 +1,213 @@
+# frozen_string_literal: true
+
+require 'syskit/actions/profile_definitions'
+require 'syskit/actions/profile/queries'
+
+module Syskit
+  module Actions
+    # A profile: a module with a robot definition and definitions. Each
+    # device declared in its robot block gives the profile an action,
+    # +Base.gps_dev+, that stands for the device's driver in plans and tests;
+    # each definition one too, +Base.arm_control_def+.
+    #
+    # Both forms of the seed define one:
+    #
+    #   profile 'Base' do robot do ... end end
+    #   module Base; robot do ... end; end
+    class Profile
+      include Definitions
+
+      attr_reader :namespace, :robot, :declared_at
+
+      # The profile of +mod+, making it one if it is not yet.
+      def self.for_module(mod, location)
+        existing = mod.instance_variable_get(:@syskit_profile)
+        return existing if existing
+
+        profile = new(mod, location)
+        mod.instance_variable_set(:@syskit_profile, profile)
+        mod.extend(ModuleMethods)
+        Syskit.app&.register_profile(profile)
+        profile
+      end
+
+      def initialize(namespace, location)
+        @namespace = namespace
+        @declared_at = location
+        @robot = Robot::Definition.new(self)
+      end
+
+      def name
+        namespace.name
+      end
+
+      def to_s
+        name || 'anonymous profile'
+      end
+
+      # Evaluates a robot block.
+      def robot_block(&block)
+        robot.declaring { Robot::DSL.new(robot).instance_eval(&block) } if block
+        robot
+      end
+
+      # Defines +<device>_dev+ on the profile module: an alias of one shared
+      # method, which finds the device from the name it is called by.
+      def define_device_action(device)
+        action = "#{device.name}_dev"
+        namespace.singleton_class.send(:alias_method, action, :syskit_device_action)
+        namespace.singleton_class.send(:public, action)
+      end
+
+      # Action names (+gps_dev+, ...), in declaration order, each device's
+      # slaves after it (+stereo.left_dev+), then the definitions (+x_def+).
+      def action_names
+        devices = robot.devices.flat_map do |device|
+          ["#{device.name}_dev", *device.each_slave.map { |slave| "#{slave.full_name}_dev" }]
+        end
+        devices + definitions.keys.map { |name| "#{name}_def" }
+      end
+
+      # The requirements of action +name+ ('gps_dev', or the device name
+      # 'gps'; 'arm_control_def' or 'arm_control'), the same object every
+      # time. The action of a device named 'gps_dev' is 'gps_dev_dev'.
+      def find_action(name)
+        name = name.to_s
+        return find_definition(name) if name.end_with?('_def') && has_definition?(name)
+
+        device = (robot.find_device(name.delete_suffix('_dev')) if name.end_with?('_dev')) || robot.find_device(name)
+        return requirement_for(device) if device
+
+        find_definition(name)
+      end
+
+      # The requirements of every device and definition, for plans of the
+      # whole profile.
+      def all_requirements
+        device_requirements + definition_requirements
+      end
+
+      def device_requirements
+        robot.devices.map { |d| requirement_for(d) }
+      end
+
+      def definition_requirements
+        definitions.each_value.map(&:requirements)
+      end
+
+      # The action of +device+ (see InstanceRequirements): left unfrozen, so
+      # that its slaves' actions can be added to it (+stereo_dev.left_dev+).
+      def requirement_for(device)
+        (@requirements ||= {}.compare_by_identity)[device] ||= begin
+          requirement = InstanceRequirements.new(device: device, profile: self, name: "#{device.full_name}_dev",
+                                                 declared_at: device.declared_at, open: true)
+          device.each_slave { |slave| define_slave_action(requirement, slave) }
+          requirement
+        end
+      end
+
+      # Called when +slave+ is registered on its master: the master's action
+      # gains +<slave>_dev+ (+Base.stereo_dev.left_dev+).
+      def slave_registered(slave)
+        requirement = @requirements && @requirements[slave.master_device]
+        define_slave_action(requirement, slave) if requirement
+      end
+
+      def define_slave_action(requirement, slave)
+        profile = self
+        requirement.define_singleton_method("#{slave.name}_dev") { profile.requirement_for(slave) }
+      end
+
+      # Profile statements about simulation and the transformer: accepted,
+      # with a "not modelled" warning each (see Compat). The value says which
+      # action name a statement defines, when it defines one, so that later
+      # statements can refer to it.
+      # Deployment groups (+use_deployment+ and its kin in a profile) are
+      # runtime choices of Syskit's action interface: this gem deploys from
+      # the robot configuration (config/robots/*.rb).
+      NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: nil, transformer: nil, use_deployment: nil,
+                       use_ruby_tasks: nil, use_unmanaged_task: nil, use_deployments_from: nil, use_group: nil,
+                       define_deployment_group: ->(name, *) { "#{name}_deployment_group" } }.freeze
+
+      # The comment block above +location+ (documentation of a statement).
+      def self.doc_above(location)
+        (@doc_comments ||= Robot::DocComment.new).above(location)
+      end
+
+      # Methods of profile modules.
+      module ModuleMethods
+        include Queries
+
+        NOT_MODELLED.each do |statement, action|
+          define_method(statement) do |*args, **options, &_block|
+            Syskit.app&.not_modelled("#{statement} in profile #{self}", Location.of_caller)
+            name = action&.call(*args, **options)
+            if name && !respond_to?(name)
+              ignored = Compat::Ignored.instance
+              define_singleton_method(name) { ignored }
+            end
+            Compat::Ignored.instance
+          end
+        end
+
+        def robot(&)
+          syskit_profile.robot_block(&)
+        end
+
+        # Defines +name_def+: what the robot can run (see Definitions#define).
+        # The comment block above the statement documents it.
+        def define(name, requirements)
+          location = Location.of_caller
+          syskit_profile.define(name, requirements, location: location, doc: Profile.doc_above(location))
+        end
+
+        def tag(name, *models)
+          syskit_profile.tag(name, models, location: Location.of_caller)
+        end
+
+        def use(*mappings)
+          syskit_profile.use(mappings, location: Location.of_caller)
+          self
+        end
+
+        # rock_gazebo's statement: the model's device (see Compat::Gazebo),
+        # else not modelled.
+        def use_gazebo_model(url, *, as: nil, **)
+          location = Location.of_caller
+          device = Compat::Gazebo.use_model(syskit_profile, url, as: as, location: location)
+          return device if device
+
+          Syskit.app&.not_modelled("use_gazebo_model in profile #{self}", location)
+          name = "#{as || url.to_s.sub(%r{\Amodel://}, '').split('/').first}_dev"
+          define_singleton_method(name) { Compat::Ignored.instance } unless respond_to?(name)
+          Compat::Ignored.instance
+        end
+
+        # Uses +profile+ (see Definitions#use_profile): +tags+ select for its
+        # tags ('localization' => X, or localization: X), +transform_names+
+        # renames its definitions (->(name) { "left_\#{name}" }).
+        def use_profile(profile, tags = {}, transform_names: nil, **more_tags)
+          syskit_profile.use_profile(profile, tags.merge(more_tags), transform_names: transform_names,
+                                                                     location: Location.of_caller)
+          self
+        end
+
+        def syskit_profile
+          @syskit_profile
+        end
+
+        # What every +<device>_dev+ method is an alias of.
+        def syskit_device_action
+          @syskit_profile.find_action(__callee__)
+        end
+        private :syskit_device_action
+
+        def explain_missing(name)
+          actions = syskit_profile.action_names + syskit_profile.tags.keys.map { |t| "#{t}_tag" }
+          ["#{self} has no action '#{name}'#{Naming.did_you_mean(name, actions)}",
+           actions.empty? ? 'declare devices in its robot block' : "its actions are #{actions.join(', ')}"]
+        end
+      end
+    end
+  end
+end

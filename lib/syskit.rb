@@ -2,6 +2,7 @@
 
 require 'syskit/version'
 require 'syskit/errors'
+require 'syskit/model_errors'
 require 'syskit/naming'
 require 'syskit/can'
 require 'syskit/user_file'

@@ -74,17 +74,17 @@ module Syskit
       locate(location, hint)
     end
 
-    # `rescue Syskit::Error` also catches InvalidArgument, which must be a
+    # `rescue Syskit::Error` also catches DeclarationError, which must be a
     # Ruby ArgumentError as well.
     def self.===(other)
       super || (equal?(Error) && other.is_a?(Reported))
     end
   end
 
-  # An invalid value given to a device attribute (a CAN id beyond 29
-  # bits): a Syskit error that is also an ArgumentError, as Rock's
-  # tests expect (+assert_raises(ArgumentError) { dev.can_id(...) }+).
-  class InvalidArgument < ArgumentError
+  # Misuse of the modelling DSL: a declaration that cannot mean anything.
+  # It is a Ruby ArgumentError too, as Syskit raises ArgumentError for the
+  # same misuses (+assert_raises(ArgumentError) { cmp.add(srv) }+).
+  class DeclarationError < ArgumentError
     include Reported
 
     def initialize(message, location: nil, hint: nil)
@@ -93,8 +93,10 @@ module Syskit
     end
   end
 
-  # Misuse of the modelling DSL: a declaration that cannot mean anything.
-  class DeclarationError < Error; end
+  # An invalid value given to a device attribute (a CAN id beyond 29
+  # bits), as Rock's tests expect it (+assert_raises(ArgumentError) {
+  # dev.can_id(...) }+).
+  class InvalidArgument < DeclarationError; end
 
   # A name (device, bus, property...) that is not known.
   class UnknownName < DeclarationError; end

@@ -1,0 +1,82 @@
+# frozen_string_literal: true
+
+module Syskit
+  # Errors in models and their use, under the names Syskit gives them
+  # (+assert_raises(Syskit::InvalidSelection) { ... }+, +rescue
+  # Syskit::Ambiguous+). Like every error of the gem, each may carry the
+  # user's file:line and a hint.
+
+  # Syskit's base of what is ambiguous: several services, specializations
+  # or ports fit where one is needed.
+  class Ambiguous < SpecError; end
+
+  # Ports of a service mapped onto ports of a component that cannot
+  # stand for them (+provides Srv, 'in' => 'nonexistent'+).
+  class InvalidPortMapping < SpecError; end
+
+  # A component model that cannot provide the service it declares.
+  class InvalidProvides < SpecError; end
+
+  # A selection (+use('child' => Model)+) that cannot fulfil what it is
+  # selected for.
+  class InvalidSelection < SpecError; end
+
+  # No service of a component fits the service model asked for.
+  class NoMatchingService < Ambiguous; end
+
+  # A service name that a component model does not have.
+  class UnknownServiceName < SpecError; end
+
+  # Requirements that cannot be turned into tasks.
+  class InstanciationError < SpecError; end
+
+  # A name (+child_name+, a definition) that nothing in the context resolves.
+  class NameResolutionError < InstanciationError; end
+
+  # No task can be allocated for a requirement.
+  class TaskAllocationFailed < SpecError; end
+
+  # Several specializations of a composition fit one selection.
+  class AmbiguousSpecialization < Ambiguous; end
+
+  # Several ports of a component fit a service port.
+  class AmbiguousPortMappings < Ambiguous; end
+
+  # A port of a composition whose children have several candidates.
+  class AmbiguousPortOnCompositeModel < Ambiguous; end
+
+  # +connect_to+ between components whose ports match in more than one way.
+  class AmbiguousAutoConnection < Ambiguous; end
+
+  # +connect_to+ between components none of whose ports match.
+  class InvalidAutoConnection < Error; end
+
+  # Models that cannot be merged into one (two task models, unrelated).
+  class IncompatibleComponentModels < Error; end
+
+  # A connection from an input, or to an output.
+  class WrongPortConnectionDirection < Error; end
+
+  # A connection between ports of different types.
+  class WrongPortConnectionTypes < Error; end
+
+  # A connection from a component to itself.
+  class SelfConnection < Error; end
+
+  # Specializations of a composition that contradict one another.
+  class NonSymmetricSpecializationConstraint < Error; end
+
+  # A dynamic service block that does not provide its service.
+  class InvalidDynamicServiceBlock < Error; end
+
+  # A task that needs a name and has none.
+  class TaskNameRequired < DeclarationError; end
+
+  # Something the gem expected never to happen.
+  class InternalError < Error; end
+
+  module Models
+    # A port asked of a composition child that its models do not have.
+    class InvalidCompositionChildPort < Error; end
+  end
+end

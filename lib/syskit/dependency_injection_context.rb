@@ -30,7 +30,9 @@ module Syskit
 
       # A model selected for itself (what a default gives) does not
       # undo what an earlier layer selected for it, as in Syskit.
-      added = DependencyInjectionContext.resolve_defaults(injection).reject { |key, value| value.equal?(key) && state.key?(key) }
+      added = DependencyInjectionContext.resolve_defaults(injection).reject do |key, value|
+        value.equal?(key) && state.key?(key)
+      end
       locations = @locations.merge(added.transform_values { injection.declared_at })
       DependencyInjectionContext.new(DependencyInjectionContext.follow_chains(state.merge(added)), locations)
     end

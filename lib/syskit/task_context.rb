@@ -101,7 +101,9 @@ module Syskit
     def devices
       @devices ||= begin
         found = []
-        arguments.each_value { |value| found << value if value.is_a?(Robot::MasterDeviceInstance) && !found.include?(value) }
+        arguments.each_value do |value|
+          found << value if value.is_a?(Robot::MasterDeviceInstance) && !found.include?(value)
+        end
         found.freeze
       end
     end

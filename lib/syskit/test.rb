@@ -35,6 +35,11 @@ module Syskit
       include SubjectModel
       extend RuntimeOnly::ClassMethods
       extend SubjectModel::ClassMethods
+
+      # The task returned by the last syskit_stub_deploy_and_configure (or
+      # syskit_stub_and_deploy). Not in Syskit's own harness, whose tests
+      # name their tasks with +let(:task)+.
+      attr_reader :task
     end
 
     # Syskit's test base classes, for tests written as classes

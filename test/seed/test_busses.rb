@@ -93,11 +93,11 @@ module Syskit
       robot = Robot::Definition.new(nil)
       bus = robot.add_device(Robot::ComBus, MyApp::Devices::Bus::CANWithID, 'bus', using: nil, options: {},
                                                                                    location: nil)
-      dev = robot.add_device(Robot::MasterDeviceInstance, MyApp::Devices::ECU::Engine, 'engine', using: nil, options: {},
-                                                                                   location: nil, bus: bus)
+      dev = robot.add_device(Robot::MasterDeviceInstance, MyApp::Devices::ECU::Engine, 'engine',
+                             using: nil, options: {}, location: nil, bus: bus)
       assert_nil dev.can_id(1, 2)
-      free = robot.add_device(Robot::MasterDeviceInstance, MyApp::Devices::ECU::Engine, 'free', using: nil, options: {},
-                                                                                  location: nil)
+      free = robot.add_device(Robot::MasterDeviceInstance, MyApp::Devices::ECU::Engine, 'free',
+                              using: nil, options: {}, location: nil)
       refute_respond_to free, :can_id
     end
 
@@ -106,8 +106,8 @@ module Syskit
       robot = Robot::Definition.new(nil)
       bus = robot.add_device(Robot::ComBus, MyApp::Devices::Bus::Doubling, 'bus', using: nil, options: {},
                                                                                   location: nil)
-      device = robot.add_device(Robot::MasterDeviceInstance, MyApp::Devices::ECU::Engine, 'engine', using: nil, options: {},
-                                                                                      location: nil, bus: bus)
+      device = robot.add_device(Robot::MasterDeviceInstance, MyApp::Devices::ECU::Engine, 'engine',
+                                using: nil, options: {}, location: nil, bus: bus)
       assert_nil device.can_id
       assert_same device, device.can_id(1, 2)
       assert_equal [2, 4], device.can_id

@@ -200,7 +200,9 @@ module Syskit
 
         def robot_injection
           by_model = robot.devices.group_by(&:model)
-          selected = by_model.filter_map { |model, devices| [model, requirement_for(devices.first)] if devices.size == 1 }
+          selected = by_model.filter_map do |model, devices|
+            [model, requirement_for(devices.first)] if devices.size == 1
+          end
           DependencyInjection.new(selected.to_h)
         end
 
@@ -218,8 +220,10 @@ module Syskit
           return name unless transform
 
           unless transform.respond_to?(:call)
-            raise DeclarationError.new("use_profile's transform_names expects a block, got #{Arguments.shown(transform)}",
-                                       location: location, hint: "write #{TRANSFORM_EXAMPLE}")
+            raise DeclarationError.new(
+              "use_profile's transform_names expects a block, got #{Arguments.shown(transform)}",
+              location: location, hint: "write #{TRANSFORM_EXAMPLE}"
+            )
           end
 
           result = transform.call(name)
@@ -232,7 +236,8 @@ module Syskit
           known = profile.tags.keys
           DeclarationError.new(
             "#{profile.name} has no tag '#{key}'#{Naming.did_you_mean(key.to_s, known)}",
-            location: location, hint: known.empty? ? "#{profile.name} declares no tags" : "its tags: #{known.join(', ')}"
+            location: location,
+            hint: known.empty? ? "#{profile.name} declares no tags" : "its tags: #{known.join(', ')}"
           )
         end
 

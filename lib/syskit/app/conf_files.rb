@@ -18,7 +18,7 @@ module Syskit
       def conf_file(task_model)
         @conf_files ||= {}
         file = @conf_files.fetch(task_model.name) { @conf_files[task_model.name] = read_conf_file(task_model.name) }
-        raise file if Syskit::Error === file
+        raise file if file.is_a?(Syskit::Error)
 
         file
       end

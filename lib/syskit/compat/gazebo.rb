@@ -23,7 +23,8 @@ module Syskit
 
         app.not_modelled("the links, joints and sensors of #{url} (use_gazebo_model reads them from its SDF file)",
                          location)
-        device = profile.robot.add_device(Robot::MasterDeviceInstance, model, name, using: driver, options: {}, location: location)
+        device = profile.robot.add_device(Robot::MasterDeviceInstance, model, name, using: driver, options: {},
+                                                                                    location: location)
         device.deployed_as_unmanaged("gazebo_#{name}")
         define_sdf_model(profile.namespace)
         device

@@ -63,7 +63,9 @@ module Syskit
       # deployment preferences, timing and declared traffic.
       def settings(device)
         list = device.dsl_attributes.map { |name, v| [name.to_s, code(Render::Text.plain(v, +'', ids: true))] }
-        list << ['with_conf', device.conf.map { |c| code(c) }.join(', ')] if device.conf != Robot::MasterDeviceInstance::DEFAULT_CONF
+        if device.conf != Robot::MasterDeviceInstance::DEFAULT_CONF
+          list << ['with_conf', device.conf.map { |c| code(c) }.join(', ')]
+        end
         unless device.deployment_hints.empty?
           list << ['prefer_deployed_tasks', device.deployment_hints.map { |d| code(d.inspect) }.join(', ')]
         end

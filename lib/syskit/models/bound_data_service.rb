@@ -99,8 +99,8 @@ module Syskit
         end
 
         BoundDataService.new(task_model, name, other, port_mappings_for(other), declared_at,
-                         master: master, dynamic_service: dynamic_service,
-                         dynamic_service_options: dynamic_service_options, demoted: demoted)
+                             master: master, dynamic_service: dynamic_service,
+                             dynamic_service_options: dynamic_service_options, demoted: demoted)
       end
 
       # This service as a service of +component_model+, a submodel of its
@@ -116,8 +116,8 @@ module Syskit
         end
 
         BoundDataService.new(component_model, name, model, port_mappings, declared_at,
-                         master: master || self.master&.attach(component_model), dynamic_service: dynamic_service,
-                         dynamic_service_options: dynamic_service_options, demoted: demoted)
+                             master: master || self.master&.attach(component_model), dynamic_service: dynamic_service,
+                             dynamic_service_options: dynamic_service_options, demoted: demoted)
       end
 
       # The service as its task model's first declaration made it (itself

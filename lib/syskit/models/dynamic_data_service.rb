@@ -79,7 +79,7 @@ module Syskit
           master = master_service(slave_of, location) if slave_of
           mapper = PortMapper.new(component_model, model, mappings.merge(more), location, dynamic: true)
           @service = BoundDataService.new(component_model, name, model, mapper.map, location,
-                                      master: master, dynamic_service: @dynamic, dynamic_service_options: options)
+                                          master: master, dynamic_service: @dynamic, dynamic_service_options: options)
           @created_ports = mapper.created
           @service
         end

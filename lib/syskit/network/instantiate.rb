@@ -182,8 +182,8 @@ module Syskit
       def stub_device_task(model, requirements, path)
         robot = (@stub_robot ||= Robot::Definition.new(nil))
         driver = Test::StubModels.device_driver(model)
-        device = robot.add_device(Robot::MasterDeviceInstance, model, path.tr('.', '_'), using: driver, options: {},
-                                                                           location: requirements.declared_at)
+        device = robot.add_device(Robot::MasterDeviceInstance, model, path.tr('.', '_'),
+                                  using: driver, options: {}, location: requirements.declared_at)
         device.driver_model = driver
         device_task(requirements, device)
       end
@@ -191,7 +191,8 @@ module Syskit
       def stub_driver(model, requirements)
         srv = model.driver_services.first
         robot = (@stub_robot ||= Robot::Definition.new(nil))
-        device = robot.add_device(Robot::MasterDeviceInstance, srv.driven_device_model, "#{srv.name}_stub#{robot.devices.size}",
+        device = robot.add_device(Robot::MasterDeviceInstance, srv.driven_device_model,
+                                  "#{srv.name}_stub#{robot.devices.size}",
                                   using: model, options: {}, location: requirements.declared_at)
         device.driver_model = model
         device_task(requirements, device, model: model)

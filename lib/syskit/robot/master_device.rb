@@ -67,7 +67,7 @@ module Syskit
           existing.claim(location)
         else
           early_bind(register_slave(SlaveDeviceInstance.new(self, check_slave_name(name.to_s, location),
-                                                    location: location)))
+                                                            location: location)))
         end
       end
 

@@ -1,6 +1,8 @@
 # frozen_string_literal: true
 
 module Syskit
+  # Test support: see syskit/test (apps' tests) and syskit/test/self
+  # (Syskit's own tests).
   module Test
     class << self
       # The app under test: SYSKIT_APP, else the app containing the current

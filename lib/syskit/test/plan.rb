@@ -63,8 +63,8 @@ module Syskit
         @tasks.include?(task)
       end
 
-      def each(&block)
-        @tasks.each(&block)
+      def each(&)
+        @tasks.each(&)
       end
 
       def empty?
@@ -93,15 +93,15 @@ module Syskit
         def with_model(model)
           return self unless model
 
-          Query.new(@tasks.select { |t| model === t || (t.respond_to?(:fullfills?) && t.fullfills?(model)) })
+          Query.new(@tasks.select { |t| t.is_a?(model) || (t.respond_to?(:fullfills?) && t.fullfills?(model)) })
         end
 
         def with_arguments(**arguments)
           Query.new(@tasks.select { |t| arguments.all? { |key, value| t.arguments[key] == value } })
         end
 
-        def each(&block)
-          @tasks.each(&block)
+        def each(&)
+          @tasks.each(&)
         end
       end
     end

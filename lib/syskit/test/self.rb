@@ -57,8 +57,8 @@ module Syskit
 
       # +data_service_type 'Name' do ... end+: a data service model of
       # that name, as Syskit's harness makes them.
-      def data_service_type(name, &block)
-        DataService.new_submodel(name: name, &block)
+      def data_service_type(name, &)
+        DataService.new_submodel(name: name, &)
       end
 
       # Asserts that +result+ is the placeholder model standing for

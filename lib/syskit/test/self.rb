@@ -50,6 +50,13 @@ module Syskit
       # The plan of the test: task instances added as data.
       attr_reader :plan
 
+      # The models the test defined are removed, and the constants naming
+      # them, as Syskit's harness does.
+      def after_teardown
+        super
+        clear_newly_defined_models
+      end
+
       # The app the tests run in: empty, made once per process (see SelfApp).
       def app
         SelfApp.app

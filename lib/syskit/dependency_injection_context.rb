@@ -16,14 +16,31 @@ module Syskit
 
     attr_reader :state
 
-    # +locations+: where each key was selected (the +use+ statement).
+    # Syskit's +DependencyInjectionContext.new(injection, ...)+: the given
+    # layers (DependencyInjection values, or hashes of selections as +use+
+    # takes them), later ones winning.
+    def self.new(*injections)
+      injections.reduce(EMPTY) do |context, injection|
+        injection = DependencyInjection::EMPTY.add([injection], nil) if injection.is_a?(Hash)
+        context.with(injection)
+      end
+    end
+
+    # The context of a resolved +state+; +locations+: where each key was
+    # selected (the +use+ statement).
+    def self.resolved(state, locations)
+      context = allocate
+      context.send(:initialize, state, locations)
+      context
+    end
+
     def initialize(state = {}, locations = {})
       @state = state.freeze
       @locations = locations.freeze
       freeze
     end
 
-    EMPTY = new
+    EMPTY = resolved({}, {})
 
     def with(injection)
       return self if injection.nil? || injection.empty?
@@ -34,7 +51,7 @@ module Syskit
         value.equal?(key) && state.key?(key)
       end
       locations = @locations.merge(added.transform_values { injection.declared_at })
-      DependencyInjectionContext.new(DependencyInjectionContext.follow_chains(state.merge(added)), locations)
+      DependencyInjectionContext.resolved(DependencyInjectionContext.follow_chains(state.merge(added)), locations)
     end
 
     # The context without +keys+ (the selections a child used, which
@@ -42,7 +59,7 @@ module Syskit
     def mask(keys)
       return self if keys.empty?
 
-      DependencyInjectionContext.new(state.except(*keys), @locations)
+      DependencyInjectionContext.resolved(state.except(*keys), @locations)
     end
 
     # Where +key+ was selected.

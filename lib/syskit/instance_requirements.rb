@@ -173,6 +173,20 @@ module Syskit
       self
     end
 
+    # Syskit's +instanciate+: the task these requirements stand for, its
+    # children selected in +context+ (a DependencyInjectionContext), added
+    # to +plan+ with them (see Network::Instantiate.into_plan).
+    # +task_arguments+ are the root task's arguments (+conf:+ its
+    # sections); +specialization_hints+ the specializations to prefer.
+    def instanciate(plan, context = DependencyInjectionContext::EMPTY, task_arguments: {}, specialization_hints: [])
+      arguments = task_arguments.dup
+      conf = Array(arguments.delete(:conf))
+      requirements = with_arguments(**arguments)
+      requirements = requirements.with_conf(*conf) unless conf.empty?
+      requirements = requirements.prefer_specializations(specialization_hints) unless specialization_hints.empty?
+      Network::Instantiate.into_plan(plan, requirements, context)
+    end
+
     # The child +name+ of the composition model (as +Cmp.use(...).x_child+).
     def find_child(name)
       component_model.respond_to?(:find_child) ? component_model.find_child(name) : nil

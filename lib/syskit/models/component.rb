@@ -167,7 +167,8 @@ module Syskit
       end
 
       # +name_srv+ on the model, for a master service: Syskit's way of
-      # selecting one service of a component (+use('pose' => Task.gps_srv)+).
+      # selecting one service of a component (+use('pose' => Task.gps_srv)+);
+      # on its instances, the task's service (a Syskit::BoundDataService).
       # Submodels inherit the reader and get their own (promoted) service.
       def define_service_reader(srv)
         return unless srv.master?
@@ -175,6 +176,7 @@ module Syskit
         reader = "#{srv.name}_srv"
         name = srv.full_name
         define_singleton_method(reader) { find_service(name) } unless singleton_class.method_defined?(reader, false)
+        define_method(reader) { find_data_service(name) } unless method_defined?(reader, false)
       end
 
       # A parent's service +srv+ as a service of this model, its master
@@ -220,11 +222,12 @@ module Syskit
       end
 
       def check_service_options(name, mappings, location)
-        # Syskit takes any identifier (common_models names services after
-        # their models: as: 'Test').
-        unless name.match?(/\A[A-Za-z_]\w*\z/)
+        # Syskit takes any name (common_models names services after their
+        # models: as: 'Test'; its tests after anonymous ones, as: srv.to_s)
+        # but a dot, which separates a slave's name from its master's.
+        if name.empty? || name.include?('.')
           raise DeclarationError.new("'#{name}' is not a valid service name",
-                                     location: location, hint: "use an identifier, e.g. as: 'gps'")
+                                     location: location, hint: "use a name without dots, e.g. as: 'gps'")
         end
         options = mappings.keys.grep(Symbol)
         return if options.empty?

@@ -50,8 +50,8 @@ module Syskit
       spec = @model.specialize @model.pose_child => Rig::Services::Odometry do
         pose_child.odometry_port.connect_to follow_child.pose_port
       end
-      assert_equal 1, spec.composition_model.connections.size
-      assert_empty @model.connections
+      assert_equal 1, spec.composition_model.port_connections.size
+      assert_empty @model.port_connections
     end
 
     def test_specializations_that_apply_together_are_merged

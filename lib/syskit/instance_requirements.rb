@@ -3,6 +3,7 @@
 require 'syskit/models/fullfillment'
 require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
+require 'syskit/models/faceted_access'
 
 module Syskit
   # What a network must contain, as Syskit's InstanceRequirements: a model
@@ -171,6 +172,14 @@ module Syskit
 
     def to_instance_requirements
       self
+    end
+
+    # These requirements seen through +models+ (models they fullfill): the
+    # selected service seen as them, else a Models::FacetedAccess.
+    def as(models)
+      return copy(service: service.as(models)) if service
+
+      Models::FacetedAccess.new(self, Models::Placeholder.for(Array(models)))
     end
 
     # Syskit's +instanciate+: the task these requirements stand for, its

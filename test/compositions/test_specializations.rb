@@ -101,10 +101,13 @@ module Syskit
       refute odometry.compatible_with?(tracker)
     end
 
-    def test_a_specialization_value_merges_others
+    def test_an_empty_specialization_is_compatible_with_any
       empty = Models::CompositionSpecialization.new
       assert empty.empty?
       assert empty.compatible_with?(Models::CompositionSpecialization.new('pose' => Rig::Services::Odometry))
+    end
+
+    def test_a_specialization_value_merges_others
       pose = Models::CompositionSpecialization.new('pose' => Rig::Services::Odometry)
       follow = Models::CompositionSpecialization.new('follow' => [OroGen.rig.Follower])
       shared = Object.new

@@ -99,10 +99,10 @@ module Syskit
         requirements.models
       end
 
-      # The child's model: its component model, else its one service model,
-      # else the list of its service models.
+      # The child's model, as Syskit's: its component model, else the
+      # placeholder model of what it requires (see Placeholder).
       def model
-        requirements.component_model || (models.size == 1 ? models.first : models)
+        Placeholder.for(models)
       end
 
       def fullfills?(model)

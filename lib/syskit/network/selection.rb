@@ -42,8 +42,18 @@ module Syskit
         value = resolve_tag(value, context)
         location = context.location_of(used.first) || child.declared_at
         selected = InstanceRequirements.from(value, location: location)
+        # Data services selected for a child add to what it requires, as
+        # in Syskit (+narrow('pose' => Srv)+: a Pose that also provides Srv).
+        selected = selected.add_models(child.models, location: location) if services_only?(selected)
         check_fullfills(child, selected, value, location)
         Result.new(child.requirements.merge_selection(selected), used, explicit, nil)
+      end
+
+      # Whether +selected+ names data services only (no component, device
+      # or task).
+      def services_only?(selected)
+        !selected.device && !selected.instance && !selected.models.empty? &&
+          selected.models.all?(Models::DataServiceModel)
       end
 
       # A tag selected by the profile's (or a using profile's) injection.

@@ -77,6 +77,18 @@ module Syskit
 
   module Models
     # A port asked of a composition child that its models do not have.
-    class InvalidCompositionChildPort < Error; end
+    class InvalidCompositionChildPort < Error
+      attr_reader :composition_model, :child_name, :port_name
+
+      def initialize(composition_model, child_name, port_name, location: nil)
+        @composition_model = composition_model
+        @child_name = child_name
+        @port_name = port_name
+        child = composition_model.find_child(child_name)
+        known = child ? child.ports.keys.sort : []
+        super("#{child || "#{composition_model}.#{child_name}_child"} has no port '#{port_name}'",
+              location: location, hint: known.empty? ? nil : "its ports are #{known.join(', ')}")
+      end
+    end
   end
 end

@@ -43,5 +43,20 @@ module Syskit
       assert_equal({ %w[pose follow] => { %w[front pose] => {} } }, submodel.connections)
       assert_equal({ %w[pose follow] => { %w[pose pose] => {} } }, parent.connections)
     end
+
+    def test_connect_ports_connects_by_name_within_one_composition
+      model = new_cmp do
+        add OroGen.rig.Follower, as: 'follow'
+        add OroGen.rig.Splitter, as: 'split'
+      end
+      model.follow_child.connect_ports(model.split_child, %w[command in] => { type: :buffer, size: 4 })
+      assert_equal({ %w[follow split] => { %w[command in] => { 'type' => 'buffer', 'size' => 4 } } }, model.connections)
+      other = new_cmp { add OroGen.rig.Splitter, as: 'split' }
+      assert_raises(ArgumentError) { model.follow_child.connect_ports(other.split_child, %w[command in] => {}) }
+      error = assert_raises(Models::InvalidCompositionChildPort) do
+        model.follow_child.connect_ports(model.split_child, %w[nope in] => {})
+      end
+      assert_match(/follow_child has no port 'nope'/, error.message)
+    end
   end
 end

@@ -7,6 +7,7 @@ require 'syskit/models/port_mapper'
 require 'syskit/models/service_lookups'
 require 'syskit/models/task_arguments'
 require 'syskit/models/task_requirements'
+require 'syskit/models/component_submodels'
 
 module Syskit
   module Models
@@ -18,6 +19,7 @@ module Syskit
       include TaskArguments
       include TaskRequirementStatements
       include ServiceLookups
+      include ComponentSubmodels
 
       class << self
         # Bumped whenever a component model gains a service or a stub: the

@@ -3,6 +3,7 @@
 require 'syskit/models/child_port'
 require 'syskit/models/port_lookup'
 require 'syskit/models/child_service_view'
+require 'syskit/models/composition_child_binding'
 
 module Syskit
   module Models
@@ -17,6 +18,7 @@ module Syskit
       include PortLookup
       include ChildConnections
       include ChildReference
+      include Binding
 
       # +reached_through+: for a child of a child composition, reached as
       # +first_child.src_child+, the child it is reached through (nil for a
@@ -26,8 +28,8 @@ module Syskit
 
       attr_reader :composition_model, :child_name, :requirements, :declared_at, :reached_through
 
-      def initialize(composition_model, child_name, requirements, location, optional: false, reached_through: nil,
-                     facets: [])
+      def initialize(composition_model, child_name, requirements = InstanceRequirements.new([Syskit::Component]),
+                     location = nil, optional: false, reached_through: nil, facets: [])
         @composition_model = composition_model
         @facets = facets.freeze
         @child_name = child_name
@@ -226,11 +228,11 @@ module Syskit
       end
 
       # +x_child+ for each child of a child composition.
+      # (the readers of that composition model, see
+      # Composition#child_readers: a child it gets later is readable too).
       def define_child_readers
-        child_names.each do |name|
-          reader = "#{name}_child"
-          define_singleton_method(reader) { find_child(name) } unless respond_to?(reader)
-        end
+        model = child_composition_model
+        extend(model.child_readers) if model.respond_to?(:child_readers)
       end
 
       def service_names

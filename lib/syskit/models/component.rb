@@ -32,6 +32,23 @@ module Syskit
         end
       end
 
+      # A submodel made in Ruby, as Syskit's tests and model helpers make
+      # them: +Syskit::Component.new_submodel(name: 'Cmp') { provides Srv,
+      # as: 'srv' }+. The one implementation behind every component
+      # model's new_submodel (task contexts, Ruby tasks, compositions): each
+      # says how its submodel class is made (#submodel_class).
+      def new_submodel(name: nil, &block)
+        model = submodel_class
+        model.instance_variable_set(:@given_name, name) if name
+        model.class_eval(&block) if block
+        model
+      end
+
+      # The model's constant name, else the one given to new_submodel.
+      def name
+        super || @given_name
+      end
+
       # Documentation of the model (the comment above its declaration).
       attr_writer :doc
 
@@ -132,6 +149,11 @@ module Syskit
       end
 
       private
+
+      # The class of a new submodel (see #new_submodel).
+      def submodel_class
+        Class.new(self)
+      end
 
       # A view computed once per +key+ (and +subkey+), until declarations change.
       def cached(key, subkey = nil)

@@ -58,10 +58,6 @@ module Syskit
       assign_arguments(arguments)
     end
 
-    def model
-      self.class
-    end
-
     # The ports created at configure time, by name.
     attr_reader :created_ports
 

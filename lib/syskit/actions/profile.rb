@@ -166,7 +166,7 @@ module Syskit
         end
 
         def use(*mappings)
-          syskit_profile.use(mappings, location: Location.of_caller)
+          syskit_profile.use(*mappings)
           self
         end
 

@@ -135,8 +135,8 @@ module Syskit
         end
 
         # Adds selections every definition of the profile uses.
-        def use(mappings, location:)
-          @selections = selections.add(mappings, location)
+        def use(*mappings)
+          @selections = selections.dup.add(*mappings).freeze
           @dependency_injection_context = nil
           self
         end
@@ -203,7 +203,7 @@ module Syskit
           selected = by_model.filter_map do |model, devices|
             [model, requirement_for(devices.first)] if devices.size == 1
           end
-          DependencyInjection.new(selected.to_h)
+          DependencyInjection.of(selected.to_h)
         end
 
         def resolve_tag_selection(profile, tags, location)

@@ -55,7 +55,7 @@ module Syskit
                                      location: location, hint: 'call use on a composition model or its requirements')
         end
 
-        injection = selections.add(mappings, location)
+        injection = selections.dup.add(*mappings).freeze
         component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
         copy(selections: injection, declared_at: declared_at || location)
       end
@@ -96,6 +96,12 @@ module Syskit
           Syskit.app&.not_modelled("#{statement} on #{self} (deployment groups)", Location.of_caller)
           self
         end
+      end
+
+      # The same requirements, marked abstract: what fills them must still
+      # be chosen (Syskit's +abstract+).
+      def abstract
+        copy(abstract: true)
       end
 
       # Without the arguments given so far.

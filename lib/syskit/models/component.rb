@@ -58,6 +58,17 @@ module Syskit
         @doc = text.to_s
       end
 
+      # Marks the model abstract: it stands for its submodels (and a
+      # composition's specializations), and cannot be put in a network as
+      # it is.
+      def abstract
+        @abstract = true
+      end
+
+      def abstract?
+        @abstract == true
+      end
+
       # Whether it is a placeholder model (see Placeholder): a component
       # model declared in a file is not.
       def placeholder?
@@ -188,8 +199,9 @@ module Syskit
         srv
       end
 
-      # +name_srv+ on the model, for a master service: Syskit's way of
-      # selecting one service of a component (+use('pose' => Task.gps_srv)+).
+      # +name_srv+ on the model and its tasks, for a master service:
+      # Syskit's way of selecting one service of a component
+      # (+use('pose' => Task.gps_srv)+).
       # Submodels inherit the reader and get their own (promoted) service.
       def define_service_reader(srv)
         return unless srv.master?
@@ -197,6 +209,7 @@ module Syskit
         reader = "#{srv.name}_srv"
         name = srv.full_name
         define_singleton_method(reader) { find_service(name) } unless singleton_class.method_defined?(reader, false)
+        define_method(reader) { find_data_service(name) } unless method_defined?(reader, false)
       end
 
       # A parent's service +srv+ as a service of this model, its master

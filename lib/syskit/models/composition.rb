@@ -63,16 +63,6 @@ module Syskit
         to_s
       end
 
-      # Marks the model abstract: it stands for its submodels (and its
-      # specializations), and cannot be put in a network as it is.
-      def abstract
-        @abstract = true
-      end
-
-      def abstract?
-        @abstract == true
-      end
-
       # Adds the child +as+ requiring +models+ (a task, composition, service
       # or device model, a list of them, or requirements such as
       # +Model.with_arguments(...)+). Adding again a child of a parent

@@ -32,6 +32,7 @@ module Syskit
       include TaskAssertions
       include ModelHelpers
       include RuntimeOnly
+      include RuntimeOnly::Mocks
       include SubjectModel
       extend RuntimeOnly::ClassMethods
       extend SubjectModel::ClassMethods

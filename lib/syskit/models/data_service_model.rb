@@ -52,7 +52,6 @@ module Syskit
         end
 
         model = model_class.build(location: location, name: namespace.name ? "#{namespace}::#{name}" : name)
-        Models.register_model(model)
         begin
           model.send(:declare, root, options, block)
         ensure

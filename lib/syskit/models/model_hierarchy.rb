@@ -23,10 +23,12 @@ module Syskit
         # A new model of this class, declared at +location+, named +name+
         # until a constant names it.
         def build(location:, name: nil)
-          return new(location: location, name: name) if takes_identity?
-
-          model = new
-          model.send(:identify, location, name)
+          model = if takes_identity?
+                    new(location: location, name: name)
+                  else
+                    new.tap { |m| m.send(:identify, location, name) }
+                  end
+          Models.register_model(model)
           model
         end
 

@@ -14,6 +14,7 @@ require 'syskit/test/runtime_only'
 require 'syskit/test/model_helpers'
 require 'syskit/test/network_manipulation'
 require 'syskit/test/conformance_report'
+require 'syskit/test/unmodelled_classes'
 
 begin
   require 'flexmock/minitest'
@@ -51,6 +52,13 @@ module Syskit
       # The plan of the test: task instances added as data.
       attr_reader :plan
 
+      # The models the test defined are removed, and the constants naming
+      # them, as Syskit's harness does.
+      def after_teardown
+        super
+        clear_newly_defined_models
+      end
+
       # The app the tests run in: empty, made once per process (see SelfApp).
       def app
         SelfApp.app
@@ -81,5 +89,6 @@ module Syskit
 end
 
 Syskit::Test::SelfApp.app
+Syskit::Test::UnmodelledClasses.define_all
 Minitest::Test.include(Syskit::Test::Self)
 Minitest::Test.extend(Syskit::Test::RuntimeOnly::ClassMethods)

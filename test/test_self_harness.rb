@@ -1,0 +1,162 @@
+# frozen_string_literal: true
+
+require 'helper'
+require 'json'
+
+module Syskit
+  # require 'syskit/test/self', the harness of Syskit's own test files, and
+  # rake conformance, which runs them: in processes of their own, from a
+  # directory that is no app, as a Syskit developer runs them.
+  class TestSelfHarness < Minitest::Test
+    # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
+    parallelize_me!
+
+    # A test file of the shape of Syskit's: specs and a Minitest::Test
+    # class, model definitions, plan-as-data, flexmock, runtime calls.
+    SELF_TEST = <<~RUBY
+      require 'syskit/test/self'
+
+      describe Syskit::Models::Composition do
+        let(:task) { Syskit::TaskContext.new_submodel(name: 'Probe').new }
+
+        it 'defines models without an app' do
+          srv = data_service_type 'Ranging'
+          cmp = Syskit::Composition.new_submodel { add srv, as: 'ranger' }
+          assert_same srv, cmp.ranger_child.model
+        end
+
+        it 'gives each test a robot of its own' do
+          assert_empty robot.devices
+          robot.device(Syskit::Device.new_submodel(name: 'Sonar'), as: 'sonar',
+                                                                   using: Syskit::TaskContext.new_submodel)
+          assert_equal ['sonar'], robot.devices.map(&:name)
+        end
+
+        it 'holds tasks in the plan as data' do
+          plan.add_mission_task(task)
+          assert_equal [task], plan.find_tasks(task.model).to_a
+          assert plan.mission_task?(task)
+        end
+
+        it 'mocks with flexmock' do
+          double = flexmock(range: 3)
+          assert_equal 3, double.range
+        end
+
+        it 'fails as asked' do
+          assert_equal 1, 2
+        end
+
+        it 'skips what needs the runtime' do
+          expect_execution { task.start! }
+        end
+
+        it 'skips the inside of Syskit' do
+          Syskit::NetworkGeneration::MergeSolver.new(plan)
+        end
+      end
+
+      class TC_Plain < Minitest::Test
+        def test_a_test_class_has_the_harness_too
+          assert_kind_of Syskit::Robot::RobotDefinition, robot
+        end
+      end
+    RUBY
+
+    def write_self_test(dir, name, content = SELF_TEST)
+      path = File.join(dir, 'test', name)
+      FileUtils.mkdir_p(File.dirname(path))
+      File.write(path, content)
+      path
+    end
+
+    def ruby_process(*args, chdir:, env: {})
+      Open3.capture3(SelfTest.child_env.merge(env), RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'), *args,
+                     chdir: chdir, unsetenv_others: true)
+    end
+
+    def test_syskit_test_files_run_outside_an_app
+      Dir.mktmpdir do |dir|
+        write_self_test(dir, 'test_shape.rb')
+        report = File.join(dir, 'report.jsonl')
+        out, err, = ruby_process('test/test_shape.rb', chdir: dir, env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
+        assert_match(/8 runs, \d+ assertions, 1 failures, 0 errors, 2 skips/, out, err)
+        outcomes = File.readlines(report).map { |l| JSON.parse(l) }.to_h { |r| [r['name'], r] }
+        assert_equal 'fail', outcomes.fetch('test_0005_fails as asked')['result']
+        skip = outcomes.fetch('test_0006_skips what needs the runtime')
+        assert_equal 'skip', skip['result']
+        assert_match(/expect_execution .*runtime/, skip['message'])
+        assert_equal 'pass', outcomes.fetch('test_a_test_class_has_the_harness_too')['result']
+        internal = outcomes.fetch('test_0007_skips the inside of Syskit')
+        assert_equal 'skip', internal['result']
+        assert_match(/MergeSolver is the inside of Syskit's implementation/, internal['message'])
+      end
+    end
+
+    def test_syskit_classes_the_gem_does_not_model_exist_only_under_the_harness
+      out, err, status = ruby_process('-rsyskit', '-e', 'p defined?(Syskit::NetworkGeneration::MergeSolver)',
+                                      chdir: GEM_ROOT)
+      assert status.success?, err
+      assert_equal "nil\n", out
+    end
+
+    def test_syskit_test_can_be_required_after_the_harness
+      Dir.mktmpdir do |dir|
+        write_self_test(dir, 'test_both.rb', <<~RUBY)
+          require 'syskit/test/self'
+          require 'syskit/test'
+
+          describe 'both' do
+            it('runs') { assert_kind_of Syskit::Test::Plan, plan }
+          end
+        RUBY
+        out, err, status = ruby_process('test/test_both.rb', chdir: dir)
+        assert status.success?, "#{out}\n#{err}"
+        assert_match(/1 runs, 1 assertions, 0 failures, 0 errors, 0 skips/, out)
+      end
+    end
+
+    def test_models_a_test_defines_are_removed_after_it
+      Dir.mktmpdir do |dir|
+        write_self_test(dir, 'test_cleanup.rb', <<~RUBY)
+          require 'syskit/test/self'
+
+          module Made; end
+
+          describe 'model constants' do
+            2.times do |i|
+              it("defines Made::Srv (\#{i})") do
+                refute Made.const_defined?(:Srv, false)
+                Made.const_set(:Srv, data_service_type('Made::Srv'))
+              end
+            end
+          end
+        RUBY
+        out, err, = ruby_process('test/test_cleanup.rb', chdir: dir)
+        assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors/, out, err)
+      end
+    end
+
+    def test_rake_conformance_counts_each_file_of_a_checkout
+      Dir.mktmpdir do |dir|
+        write_self_test(dir, 'models/test_shape.rb')
+        write_self_test(dir, 'robot/test_broken.rb', "require 'syskit/test/self'\nSyskit::NoSuchThing\n")
+        out, err, status = Open3.capture3(
+          SelfTest.child_env.merge('SYSKIT_SOURCE' => dir, 'CASES' => File.join(dir, 'none.tsv')),
+          RbConfig.ruby, '-S', 'rake', 'conformance', chdir: GEM_ROOT, unsetenv_others: true
+        )
+        assert status.success?, "#{out}\n#{err}"
+        assert_match(%r{^test/models/test_shape.rb\s+5\s+1\s+0\s+1\s+1\s}, out)
+        assert_match(%r{^test/robot/test_broken.rb\s+0\s+0\s+0\s+0\s+0\s+does not load: .*NoSuchThing}, out)
+        assert_match(/^total \(2 files, 1 not loading\)\s+5\s+1\s+0\s+1\s+1/, out)
+      end
+    end
+
+    def test_rake_conformance_without_a_checkout_says_how_to_give_one
+      out, err, status = Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-S', 'rake', 'conformance',
+                                        chdir: GEM_ROOT, unsetenv_others: true)
+      assert status.success?, err
+      assert_match(%r{skipped, no checkout of rock-core/tools-syskit given \(SYSKIT_SOURCE=DIR}, out)
+    end
+  end
+end

@@ -26,13 +26,13 @@ module Syskit
     NO_HINTS = [].freeze
     DEFAULT_CONF = ['default'].freeze
     FIELDS = %i[models device service profile name arguments conf conf_location deployment_hints deployment
-                selections specialization_hints declared_at instance abstract].freeze
+                selections specialization_hints declared_at instance abstract doc].freeze
 
     # +instance+: a task of the network being generated, when these
     # requirements select it (a composition's child given to another);
     # +conf_location+: where the sections were chosen (with_conf).
     attr_reader :device, :service, :profile, :name, :arguments, :deployment, :selections,
-                :specialization_hints, :declared_at, :instance, :conf_location
+                :specialization_hints, :declared_at, :instance, :conf_location, :doc
 
     # What stands for requirements besides models and lists of them (see
     # .from): requirements, a model's service, a device, a tag, a
@@ -76,7 +76,7 @@ module Syskit
     def initialize(models = nil, device: nil, service: nil, profile: nil, name: nil, arguments: NO_ARGUMENTS,
                    conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil,
                    selections: DependencyInjection::EMPTY, specialization_hints: NO_HINTS, declared_at: nil,
-                   instance: nil, abstract: false, open: false)
+                   instance: nil, abstract: false, doc: nil, open: false)
       @models = models&.freeze
       @device = device
       @service = service
@@ -92,6 +92,7 @@ module Syskit
       @declared_at = declared_at
       @instance = instance
       @abstract = abstract
+      @doc = doc
       readers = Readers.for(component_model)
       extend(readers) if readers
       freeze unless open
@@ -243,7 +244,7 @@ module Syskit
     protected
 
     def compared
-      (FIELDS - %i[declared_at conf_location]).map { |f| instance_variable_get(:"@#{f}") }
+      (FIELDS - %i[declared_at conf_location doc]).map { |f| instance_variable_get(:"@#{f}") }
     end
 
     # A definition's or a device's action, by the name of its profile.
@@ -282,7 +283,7 @@ module Syskit
       values[:specialization_hints] ||= NO_HINTS
       own_models = values.delete(:models)
       models = changes.delete(:models) { own_models }
-      InstanceRequirements.new(models, **values, **changes)
+      changes.delete(:class) { self.class }.new(models, **values, **changes)
     end
   end
 end

@@ -133,9 +133,9 @@ module Syskit
         copy(specialization_hints: specialization_hints + [hints])
       end
 
-      # A copy named +name+ in +profile+ (a definition).
-      def named(name, profile, location)
-        copy(name: name, profile: profile, declared_at: location)
+      # These requirements as the definition +name+ of +profile+.
+      def named(name, profile, location, doc: nil)
+        copy(class: Actions::Profile::Definition, name: name, profile: profile, declared_at: location, doc: doc)
       end
 
       private

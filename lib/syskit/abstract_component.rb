@@ -8,6 +8,17 @@ module Syskit
   # with Models::Component.
   class AbstractComponent
     extend Models::Component
+
+    def model
+      self.class
+    end
+
+    # The service +name+ of this component (+task.gps_srv+ reads it): its
+    # model's service, bound to this component.
+    def find_data_service(name)
+      srv = model.find_data_service(name)
+      srv && BoundDataService.new(self, srv)
+    end
   end
 
   # What task contexts and compositions are (Syskit::Component): the

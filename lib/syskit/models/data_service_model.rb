@@ -196,9 +196,11 @@ module Syskit
     end
 
     # Syskit's +Syskit::Models.is_model?(object)+: whether +object+ is a
-    # model (a service, device or bus model, a task or composition model).
+    # model (a service, device or bus model, a task or composition model,
+    # a service bound to one of them).
     def self.is_model?(object) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-      object.is_a?(DataServiceModel) || (object.is_a?(Class) && object < Syskit::AbstractComponent) ||
+      object.is_a?(DataServiceModel) || object.is_a?(BoundDataService) ||
+        (object.is_a?(Class) && object <= Syskit::AbstractComponent) ||
         (object.is_a?(Module) && object.singleton_class.include?(Compat::NotModelledModel))
     end
 

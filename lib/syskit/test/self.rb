@@ -2,6 +2,7 @@
 
 require 'minitest/autorun'
 require 'minitest/spec'
+require 'pp'
 require 'tmpdir'
 require 'syskit'
 require 'syskit/test/app_under_test'

@@ -50,6 +50,10 @@ module Syskit
         it 'skips what needs the runtime' do
           expect_execution { task.start! }
         end
+
+        it 'skips the inside of Syskit' do
+          Syskit::NetworkGeneration::MergeSolver.new(plan)
+        end
       end
 
       class TC_Plain < Minitest::Test
@@ -76,14 +80,24 @@ module Syskit
         write_self_test(dir, 'test_shape.rb')
         report = File.join(dir, 'report.jsonl')
         out, err, = ruby_process('test/test_shape.rb', chdir: dir, env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
-        assert_match(/7 runs, \d+ assertions, 1 failures, 0 errors, 1 skips/, out, err)
+        assert_match(/8 runs, \d+ assertions, 1 failures, 0 errors, 2 skips/, out, err)
         outcomes = File.readlines(report).map { |l| JSON.parse(l) }.to_h { |r| [r['name'], r] }
         assert_equal 'fail', outcomes.fetch('test_0005_fails as asked')['result']
         skip = outcomes.fetch('test_0006_skips what needs the runtime')
         assert_equal 'skip', skip['result']
         assert_match(/expect_execution .*runtime/, skip['message'])
         assert_equal 'pass', outcomes.fetch('test_a_test_class_has_the_harness_too')['result']
+        internal = outcomes.fetch('test_0007_skips the inside of Syskit')
+        assert_equal 'skip', internal['result']
+        assert_match(/MergeSolver is the inside of Syskit's implementation/, internal['message'])
       end
+    end
+
+    def test_syskit_classes_the_gem_does_not_model_exist_only_under_the_harness
+      out, err, status = ruby_process('-rsyskit', '-e', 'p defined?(Syskit::NetworkGeneration::MergeSolver)',
+                                      chdir: GEM_ROOT)
+      assert status.success?, err
+      assert_equal "nil\n", out
     end
 
     def test_syskit_test_can_be_required_after_the_harness
@@ -132,9 +146,9 @@ module Syskit
           RbConfig.ruby, '-S', 'rake', 'conformance', chdir: GEM_ROOT, unsetenv_others: true
         )
         assert status.success?, "#{out}\n#{err}"
-        assert_match(%r{^test/models/test_shape.rb\s+5\s+1\s+0\s+1\s+0\s}, out)
+        assert_match(%r{^test/models/test_shape.rb\s+5\s+1\s+0\s+1\s+1\s}, out)
         assert_match(%r{^test/robot/test_broken.rb\s+0\s+0\s+0\s+0\s+0\s+does not load: .*NoSuchThing}, out)
-        assert_match(/^total \(2 files, 1 not loading\)\s+5\s+1\s+0\s+1\s+0/, out)
+        assert_match(/^total \(2 files, 1 not loading\)\s+5\s+1\s+0\s+1\s+1/, out)
       end
     end
 

@@ -14,6 +14,7 @@ require 'syskit/test/runtime_only'
 require 'syskit/test/model_helpers'
 require 'syskit/test/network_manipulation'
 require 'syskit/test/conformance_report'
+require 'syskit/test/unmodelled_classes'
 
 begin
   require 'flexmock/minitest'
@@ -88,5 +89,6 @@ module Syskit
 end
 
 Syskit::Test::SelfApp.app
+Syskit::Test::UnmodelledClasses.define_all
 Minitest::Test.include(Syskit::Test::Self)
 Minitest::Test.extend(Syskit::Test::RuntimeOnly::ClassMethods)

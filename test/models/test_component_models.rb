@@ -38,6 +38,19 @@ module Syskit
       refute root.has_submodel?(child)
     end
 
+    module Named; end
+
+    def test_clearing_submodels_removes_their_constants_but_keeps_the_gems_own_models
+      model = TaskContext.new_submodel
+      Named.const_set(:Task, model)
+      assert TaskContext.has_submodel?(model)
+      TaskContext.clear_submodels
+      refute TaskContext.has_submodel?(model)
+      refute Named.const_defined?(:Task, false)
+      assert TaskContext.has_submodel?(RubyTaskContext)
+      assert TaskContext.has_submodel?(TaskContext.new_submodel)
+    end
+
     def test_a_service_bound_to_a_component_is_a_model
       srv = DataService.new_submodel
       task = Component.new_submodel { provides srv, as: 'srv' }

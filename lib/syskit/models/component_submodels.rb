@@ -30,8 +30,23 @@ module Syskit
       def clear_submodels
         subclasses.each do |sub|
           sub.clear_submodels
+          next if ComponentSubmodels.permanent?(sub)
+
           sub.instance_variable_set(:@forgotten_by_parent, true)
+          Models.remove_constant_of(sub)
         end
+      end
+
+      LIB_DIR = File.expand_path('../..', __dir__)
+
+      # Whether +model+ is one of the gem's own (a constant its lib/ defines;
+      # the constants of an unloaded app's models are gone).
+      def self.permanent?(model)
+        name = Module.instance_method(:name).bind_call(model)
+        file, = Object.const_source_location(name) if name
+        file&.start_with?(LIB_DIR) || false
+      rescue NameError
+        false
       end
 
       # Whether its parent model forgot it (see #clear_submodels).

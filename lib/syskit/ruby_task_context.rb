@@ -83,10 +83,10 @@ module Syskit
 
       def add_port(name, direction, type)
         name = check_name(name, "#{direction}_port")
-        port = Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
+        port = Orogen::Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
         spec.ports[name] = port
         Models::Component.declarations_changed
-        define_method("#{name}_port") { find_bound_port(name) } unless method_defined?("#{name}_port")
+        define_port_reader(name)
         PortModifiers.new(port)
       end
 

@@ -21,6 +21,7 @@ module Syskit
     class DataServiceModel < Module
       include ModelHierarchy
       include PortLookup
+      include PortModelLookups
       include ProvidedModels
       include BusServiceRole
       include ServiceModelBinding
@@ -160,12 +161,13 @@ module Syskit
         @timing[:worstcase_processing_time] = seconds
       end
 
-      # Adds the port +port+ and its reader (+pose_port+, as Syskit's models
-      # have), unless a method of that name exists.
+      # Adds the port +port+ and its reader (+pose_port+, a Models::Port of
+      # this model, as Syskit's models have), unless a method of that name
+      # exists.
       def add_port_entry(port)
         ports[port.name] = port
         reader = "#{port.name}_port"
-        define_singleton_method(reader) { find_port(port.name) } unless respond_to?(reader)
+        define_singleton_method(reader) { Port.for(self, find_port(port.name)) } unless respond_to?(reader)
         port
       end
 
@@ -190,7 +192,8 @@ module Syskit
                                      location: location, hint: 'give each port its own name')
         end
 
-        port = add_port_entry(Port.new(name, direction, Models.resolve_type(type, location), declared_type: type))
+        port = add_port_entry(Orogen::Port.new(name, direction, Models.resolve_type(type, location),
+                                               declared_type: type))
         PortModifiers.new(port)
       end
     end

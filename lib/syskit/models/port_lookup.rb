@@ -44,5 +44,34 @@ module Syskit
         ports.each_value.select(&:output?).each(&)
       end
     end
+
+    # Syskit's port lookups on task and data service models: the
+    # Models::Port of this model (which takes oroGen's port modifiers:
+    # +find_output_port('pose').triggered_once_per_update+); nil when there
+    # is no such port. (+find_port+ and +ports+ give the declarations.)
+    module PortModelLookups
+      def find_output_port(name)
+        port = find_port(name)
+        Port.for(self, port) if port&.output?
+      end
+
+      def find_input_port(name)
+        port = find_port(name)
+        Port.for(self, port) if port&.input?
+      end
+
+      # Its input (output) ports, in declaration order.
+      def each_input_port(&)
+        return enum_for(__method__) unless block_given?
+
+        ports.each_value { |port| yield Port.for(self, port) if port.input? }
+      end
+
+      def each_output_port(&)
+        return enum_for(__method__) unless block_given?
+
+        ports.each_value { |port| yield Port.for(self, port) if port.output? }
+      end
+    end
   end
 end

@@ -14,7 +14,7 @@ module Syskit
 
       # A driver for +model+, with the ports of the model.
       def device_driver(model)
-        ports = model.ports.values.map { |p| Syskit::Port.new(p.name, p.direction, p.type) }
+        ports = model.ports.values.map { |p| Syskit::Orogen::Port.new(p.name, p.direction, p.type) }
         task_model("stub_driver_for_#{model_slug(model)}", ports: ports) do |task|
           task.driver_for(model, as: 'dev')
         end
@@ -34,8 +34,8 @@ module Syskit
       def client_driver(model, bus_model, bus_to_client:, client_to_bus:)
         type = bus_model.message_type
         ports = []
-        ports << Syskit::Port.new('from_bus', :input, type) if bus_to_client
-        ports << Syskit::Port.new('to_bus', :output, type) if client_to_bus
+        ports << Syskit::Orogen::Port.new('from_bus', :input, type) if bus_to_client
+        ports << Syskit::Orogen::Port.new('to_bus', :output, type) if client_to_bus
         dynamic = model.is_a?(Models::ComBusModel) ? bus_ports(model.message_type) : []
         task_model("stub_driver_for_#{model_slug(model)}", ports: ports, dynamic: dynamic) do |task|
           task.driver_for(model, as: model.is_a?(Models::ComBusModel) ? 'bus' : 'dev')
@@ -50,7 +50,7 @@ module Syskit
         @service_providers[[service_models, base]] ||= begin
           ports = {}
           service_models.each do |srv|
-            srv.ports.each_value { |p| ports[p.name] ||= Syskit::Port.new(p.name, p.direction, p.type) }
+            srv.ports.each_value { |p| ports[p.name] ||= Syskit::Orogen::Port.new(p.name, p.direction, p.type) }
           end
           slug = service_models.map { |m| model_slug(m) }.join('_')
           task_model("stub_#{slug}", ports: ports.values, base: base) do |task|

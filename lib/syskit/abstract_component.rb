@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/component'
+require 'syskit/models/component_submodels'
 
 module Syskit
   # The root of the components of a network, as in Syskit: task contexts
@@ -8,6 +9,18 @@ module Syskit
   # with Models::Component.
   class AbstractComponent
     extend Models::Component
+    extend Models::ComponentSubmodels
+
+    def model
+      self.class
+    end
+
+    # The service +name+ of this component (+task.gps_srv+ reads it): its
+    # model's service, bound to this component.
+    def find_data_service(name)
+      srv = model.find_data_service(name)
+      srv && BoundDataService.new(self, srv)
+    end
 
     # The compositions this task is a child of (Roby's +each_parent_task+).
     def each_parent_task(&)
@@ -29,49 +42,45 @@ module Syskit
   # What task contexts and compositions are (Syskit::Component): the
   # class test files and custom models name.
   class Component < AbstractComponent
-    # A component model made in Ruby that is neither a task context nor a
-    # composition (+Syskit::Component.new_submodel { provides Srv, as: 's' }+),
-    # as Syskit's tests make them: services and arguments, no ports.
-    def self.new_submodel(name: nil, &block)
-      model = Class.new(self)
-      model.instance_variable_set(:@given_name, name) if name
-      model.class_eval(&block) if block
-      model
-    end
+    class << self
+      # Where it was made (see Models::Component#new_submodel).
+      attr_reader :declared_at
 
-    # The name given to new_submodel, else the constant's.
-    def self.name
-      super || @given_name
-    end
+      def to_s
+        name || "anonymous component (#{declared_at})"
+      end
 
-    def self.to_s
-      name || 'anonymous component'
-    end
+      # The name shown to users.
+      def short_name
+        to_s
+      end
 
-    def self.short_name
-      to_s
-    end
+      def inspect
+        to_s
+      end
 
-    def self.inspect
-      to_s
-    end
+      # A plain component model has no ports (task contexts and
+      # compositions do), and drives no device.
+      def ports
+        {}
+      end
 
-    # Marked abstract by +abstract+ only (see Models::TaskContext).
-    def self.abstract?
-      false
-    end
+      def find_port(_name); end
 
-    # A component model has no ports of its own (task contexts and
-    # compositions do).
-    def self.ports
-      {}
-    end
+      def driver_services
+        []
+      end
 
-    def self.find_port(_name); end
+      private
 
-    # Nor does it drive devices (task contexts may).
-    def self.driver_services
-      []
+      # A plain component model (+Syskit::Component.new_submodel+): made
+      # where the caller is, and removed after the test that made it.
+      def submodel_class
+        model = Class.new(self)
+        model.instance_variable_set(:@declared_at, Location.of_caller)
+        Models.register_model(model)
+        model
+      end
     end
 
     # What Instantiate sets on the tasks it makes (see TaskContext).
@@ -82,10 +91,6 @@ module Syskit
       super()
       @conf = InstanceRequirements::DEFAULT_CONF
       assign_arguments(arguments)
-    end
-
-    def model
-      self.class
     end
 
     # Syskit's name for Models::Placeholder.for: a model standing for any

@@ -35,10 +35,6 @@ module Syskit
     attr_reader :child_selections
     alias child_selection child_selections
 
-    def model
-      self.class
-    end
-
     # The child task of role +role+ (a task or a composition).
     def child_task(role)
       @children.fetch(role.to_s) do

@@ -56,7 +56,7 @@ module Syskit
       # Definitions of the app's profiles whose model is this one.
       def definitions
         catalog.entries(:profile).flat_map do |entry|
-          entry.object.definitions.values.select { |d| d.requirements.component_model.equal?(model) }
+          entry.object.definitions.values.select { |d| d.component_model.equal?(model) }
                .map { |d| [entry, d] }
         end
       end

@@ -101,7 +101,7 @@ module Syskit
       def child_context(context, selection, requirements, name, child_requirements)
         grandchildren = context.grandchild_selections(name).merge(requirements.selections.grandchild_selections(name))
         context = context.mask(selection.used_keys)
-        context = context.with(DependencyInjection.new(grandchildren, [], requirements.declared_at)) unless
+        context = context.with(DependencyInjection.of(grandchildren, [], requirements.declared_at)) unless
           grandchildren.empty?
         context.with(resolve_references(child_requirements.selections))
       end
@@ -113,7 +113,7 @@ module Syskit
         explicit = selections.explicit.transform_values do |value|
           value.is_a?(Models::ChildReference) ? referenced_requirements(value) : value
         end
-        DependencyInjection.new(explicit, selections.defaults, selections.declared_at)
+        DependencyInjection.of(explicit, selections.defaults, selections.declared_at)
       end
 
       def referenced_task(child)

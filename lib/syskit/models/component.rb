@@ -7,7 +7,6 @@ require 'syskit/models/port_mapper'
 require 'syskit/models/service_lookups'
 require 'syskit/models/task_arguments'
 require 'syskit/models/task_requirements'
-require 'syskit/models/component_submodels'
 
 module Syskit
   module Models
@@ -19,7 +18,6 @@ module Syskit
       include TaskArguments
       include TaskRequirementStatements
       include ServiceLookups
-      include ComponentSubmodels
 
       class << self
         # Bumped whenever a component model gains a service or a stub: the
@@ -69,6 +67,12 @@ module Syskit
 
       def abstract?
         @abstract == true
+      end
+
+      # Whether it is a submodel made by +specialize+ for the use of one
+      # requirement or test (Syskit's private specializations).
+      def private_specialization?
+        @private_specialization == true
       end
 
       # Whether it is a placeholder model (see Placeholder): a component

@@ -5,6 +5,7 @@ require 'syskit/models/composition_configurations'
 require 'syskit/models/composition_ports'
 require 'syskit/models/composition_specializations'
 require 'syskit/models/composition_lookups'
+require 'syskit/models/composition_dynamic_services'
 
 module Syskit
   # The class-level side of components (see Composition).
@@ -30,6 +31,7 @@ module Syskit
       include CompositionSpecializations
       include CompositionLookups
       include CompositionConfigurations
+      include CompositionDynamicServices
 
       # Options of +add+ that only matter to Roby's runtime (what the
       # child's events mean to the composition): accepted, not modelled.

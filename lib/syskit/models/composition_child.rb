@@ -128,6 +128,16 @@ module Syskit
         @optional
       end
 
+      # Syskit's +require_dynamic_service+ on a child (in the block of a
+      # composition's dynamic service): the child is overloaded with a
+      # specialization of its task model that has the instance +as+ of the
+      # dynamic service +dynamic_name+; returns that service.
+      def require_dynamic_service(dynamic_name, as:, **options)
+        overloaded = requirements.with_dynamic_service(dynamic_name, as: as, **options)
+        composition_model.overload(child_name, overloaded.component_model)
+        overloaded.component_model.find_service(as.to_s)
+      end
+
       # Marks the child optional: left out of the network when nothing
       # selects a component for it.
       def optional

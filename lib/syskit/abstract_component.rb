@@ -19,6 +19,12 @@ module Syskit
       Models::Placeholder.for(models)
     end
 
+    # Whether the task is of an abstract model (a placeholder's, an
+    # abstract task's): a network cannot run it.
+    def abstract?
+      model.abstract? || false
+    end
+
     private
 
     # Sets the task's arguments as Roby does: a declared argument through

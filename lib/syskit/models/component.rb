@@ -85,7 +85,7 @@ module Syskit
       # (its full name is then +name.as+).
       def provides(model, mappings = {}, as: nil, slave_of: nil, **more)
         location = Location.of_caller
-        return (@task_services ||= []) << model if model.is_a?(Compat::TaskService) && as.nil?
+        return (@task_services ||= []) << model if model.is_a?(Compat::Roby::TaskServiceModel) && as.nil?
 
         unless model.is_a?(DataServiceModel)
           raise DeclarationError.new("provides expects a data service model, got #{model.inspect}",

@@ -210,6 +210,7 @@ module Syskit
       device = robot.device(MyApp::Devices::Camera, as: 'rear_cam', using: rear)
       assert_equal [rear, robot], [device.using, device.robot]
       assert_equal [device], robot.devices
+      assert_same device, robot.rear_cam_dev
       line = __LINE__ + 1
       error = assert_raises(DeclarationError) { robot.device(MyApp::Devices::Camera, as: 'rear_cam') }
       assert_equal "#{File.expand_path(__FILE__)}:#{line}", error.location.to_s

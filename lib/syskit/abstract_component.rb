@@ -15,8 +15,13 @@ module Syskit
   class Component < AbstractComponent
     # Syskit's name for Models::Placeholder.for: a model standing for any
     # component providing +models+.
-    def self.create_proxy_task_model(models, **)
-      Models::Placeholder.for(models)
+    def self.create_proxy_task_model(models, component_model: nil, as: nil)
+      Models::Placeholder.for(models, component_model: component_model, as: as)
+    end
+
+    # Whether the task stands for a component (see Syskit::Placeholder).
+    def placeholder?
+      false
     end
 
     # Whether the task is of an abstract model (a placeholder's, an

@@ -3,6 +3,7 @@
 require 'syskit/models/not_a_model'
 
 require 'syskit/models/bound_data_service'
+require 'syskit/models/component_merging'
 require 'syskit/models/port_mapper'
 require 'syskit/models/service_lookups'
 require 'syskit/models/task_arguments'
@@ -18,6 +19,7 @@ module Syskit
       include TaskArguments
       include TaskRequirementStatements
       include ServiceLookups
+      include ComponentMerging
 
       class << self
         # Bumped whenever a component model gains a service or a stub: the
@@ -45,6 +47,18 @@ module Syskit
       # model declared in a file is not.
       def placeholder?
         false
+      end
+
+      # The placeholder models made from this one, by kind and services
+      # (see Placeholder.for).
+      def placeholder_models
+        @placeholder_models ||= {}
+      end
+
+      # Syskit's +clear_submodels+: the placeholders made from this model
+      # are made anew when next asked for.
+      def clear_submodels
+        @placeholder_models = nil
       end
 
       # Services by name, inherited ones included.

@@ -95,8 +95,19 @@ module Syskit
 
     # Syskit's name for Models::Placeholder.for: a model standing for any
     # component providing +models+.
-    def self.create_proxy_task_model(models, **)
-      Models::Placeholder.for(models)
+    def self.create_proxy_task_model(models, component_model: nil, as: nil)
+      Models::Placeholder.for(models, component_model: component_model, as: as)
+    end
+
+    # Whether the task stands for a component (see Syskit::Placeholder).
+    def placeholder?
+      false
+    end
+
+    # Whether the task is of an abstract model (a placeholder's, an
+    # abstract task's): a network cannot run it.
+    def abstract?
+      model.abstract? || false
     end
 
     # The service +name+ of this task (a Syskit::BoundDataService), or nil.

@@ -47,6 +47,16 @@ module Syskit
         add_port(name, :output, type)
       end
 
+      # Declares ports the task creates at configure time, by name pattern:
+      # +dynamic_output_port(/^\w+$/, '/double')+ (a type of nil: any type).
+      def dynamic_input_port(pattern, type = nil)
+        add_dynamic_port(pattern, :input, type)
+      end
+
+      def dynamic_output_port(pattern, type = nil)
+        add_dynamic_port(pattern, :output, type)
+      end
+
       # Declares a property: +property 'period', '/double', 0.1+.
       def property(name, type, default = nil)
         name = check_name(name, 'property')
@@ -85,6 +95,15 @@ module Syskit
         spec.ports[name] = port
         Models::Component.declarations_changed
         define_port_reader(name)
+        PortModifiers.new(port)
+      end
+
+      def add_dynamic_port(pattern, direction, type)
+        pattern = Regexp.new(pattern.to_s) unless pattern.is_a?(Regexp)
+        type &&= Models.resolve_type(type, Location.of_caller)
+        port = DynamicPort.new(pattern, direction, type)
+        spec.dynamic_ports << port
+        Models::Component.declarations_changed
         PortModifiers.new(port)
       end
 

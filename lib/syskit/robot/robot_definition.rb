@@ -17,6 +17,14 @@ module Syskit
       %i[device com_bus through].each do |statement|
         define_method(statement) { |*args, **options, &block| @dsl.public_send(statement, *args, **options, &block) }
       end
+
+      # Each device is also +robot.name_dev+, as Syskit's robots give them.
+      def add_device(...)
+        device = super
+        reader = "#{device.name}_dev"
+        define_singleton_method(reader) { device } unless respond_to?(reader)
+        device
+      end
     end
   end
 end

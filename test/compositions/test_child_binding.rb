@@ -42,7 +42,7 @@ module Syskit
       assert_equal tracker.rear_pose_srv, @inner.pose_child.bind(tracker)
       assert_equal tracker.front_pose_srv, @inner.pose_child.bind(tracker.front_pose_srv)
       error = assert_raises(ArgumentError) { @outer.inner_child.bind(tracker) }
-      assert_match(/it is not the child of any Outer composition/, error.message)
+      assert_match(/to rig::Tracker:0x\h+: it is not the child of any Outer composition/, error.message)
     end
 
     def test_a_task_of_another_role_does_not_bind
@@ -52,6 +52,10 @@ module Syskit
       other.depends_on(loose, role: 'spare')
       error = assert_raises(ArgumentError) { @inner.pose_child.bind(loose) }
       assert_match(/but not with the role 'pose'/, error.message)
+      beat = DataService.new_submodel(name: 'Beat')
+      source = Component.new_submodel(name: 'Src') { provides beat, as: 'beat' }.new
+      error = assert_raises(ArgumentError) { @inner.pose_child.bind(source.beat_srv) }
+      assert_match(/cannot bind .* to #<BoundDataService: Src:0x\h+\.beat>/, error.message)
     end
 
     def test_a_child_added_later_is_readable_through_a_parent_child

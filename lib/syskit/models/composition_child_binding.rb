@@ -46,14 +46,14 @@ module Syskit
 
           parents = object.each_parent_task.select { |parent| parent.model.fullfills?(composition_model) }
           if parents.empty?
-            raise ArgumentError, "cannot bind #{self}[#{model}] to #{object}: it is not the child of any " \
+            raise ArgumentError, "cannot bind #{self}[#{model}] to #{identity(object)}: it is not the child of any " \
                                  "#{composition_model} composition"
           end
 
           parent = parents.find { |p| p.find_child_from_role(child_name).equal?(object) }
           return parent.find_required_composition_child_from_role(child_name, composition_model) if parent
 
-          raise ArgumentError, "cannot bind #{self}[#{model}] to #{object}: it is the child of one or more " \
+          raise ArgumentError, "cannot bind #{self}[#{model}] to #{identity(object)}: it is the child of one or more " \
                                "#{composition_model} compositions, but not with the role '#{child_name}'"
         end
 
@@ -63,7 +63,14 @@ module Syskit
           required = models.grep(DataServiceModel)
           return service if required.all? { |m| service.fullfills?(m) }
 
-          raise ArgumentError, "cannot bind #{model} to #{service}"
+          bound = "#<BoundDataService: #{identity(service.component)}.#{service.name}>"
+          raise ArgumentError, "cannot bind #{model} to #{bound}"
+        end
+
+        # A task as Syskit's messages name it: its model and its identity
+        # (+task_m:0x5640+), there may be several tasks of one model.
+        def identity(task)
+          "#{task.model}:0x#{task.object_id.to_s(16)}"
         end
       end
     end

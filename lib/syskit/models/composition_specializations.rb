@@ -131,6 +131,15 @@ module Syskit
         @own_specializations ||= []
       end
 
+      # Two specialized models of one composition model merge into the
+      # specialized model with the specializations of both applied.
+      def merged_specializations(other)
+        return unless specialization? && other.respond_to?(:specialization?) && other.specialization? &&
+                      specialization_root.equal?(other.specialization_root)
+
+        specialization_root.specialized_model(applied_specializations | other.applied_specializations)
+      end
+
       # A submodel of its own, named after this model, on which +block+ is
       # evaluated (see Component#private_specialization?).
       def private_specialization(&block)

@@ -27,9 +27,9 @@ module Syskit
 
         it 'gives each test a robot of its own' do
           assert_empty robot.devices
-          robot.device(Syskit::Device.new_submodel(name: 'Sonar'), as: 'sonar',
-                                                                   using: Syskit::TaskContext.new_submodel)
-          assert_equal ['sonar'], robot.devices.map(&:name)
+          sonar = Syskit::Device.new_submodel(name: 'Sonar')
+          robot.device(sonar, as: 'sonar', using: Syskit::TaskContext.new_submodel { driver_for sonar, as: 'drv' })
+          assert_equal ['sonar'], robot.each_master_device.map(&:name)
         end
 
         it 'holds tasks in the plan as data' do

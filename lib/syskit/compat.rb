@@ -181,8 +181,6 @@ module Syskit
     Syskit.const_set(:NetworkGeneration, Module.new)
     Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
-    # What runs task contexts in Syskit (a Roby task).
-    not_modelled_class(Syskit, :Deployment, 'deployment task')
     not_modelled_class(Roby, :Task, 'Roby task')
     # Roby's task library (Roby::Tasks::Simple, ...).
     Roby.const_set(:Tasks, Module.new)

@@ -8,6 +8,17 @@ module Syskit
   # with Models::Component.
   class AbstractComponent
     extend Models::Component
+
+    def model
+      self.class
+    end
+
+    # The service +name+ of this component (+task.gps_srv+ reads it): its
+    # model's service, bound to this component.
+    def find_data_service(name)
+      srv = model.find_data_service(name)
+      srv && BoundDataService.new(self, srv)
+    end
   end
 
   # What task contexts and compositions are (Syskit::Component): the
@@ -17,6 +28,19 @@ module Syskit
     # component providing +models+.
     def self.create_proxy_task_model(models, **)
       Models::Placeholder.for(models)
+    end
+
+    # The service +name+ of this task (a Syskit::BoundDataService), or nil.
+    def find_data_service(name)
+      srv = model.find_service(name.to_s)
+      srv && BoundDataService.new(self, srv)
+    end
+
+    # The services of this task, as Syskit::BoundDataService.
+    def each_data_service(&block)
+      return enum_for(__method__) unless block
+
+      model.services.each_value { |srv| yield BoundDataService.new(self, srv) }
     end
 
     private

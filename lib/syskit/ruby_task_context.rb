@@ -34,14 +34,6 @@ module Syskit
       # Where the model was declared.
       attr_reader :declared_at
 
-      # A model made in Ruby: +Generator.new_submodel { output_port ... }+.
-      def new_submodel(name: nil, &block)
-        model = Class.new(self)
-        model.instance_variable_set(:@given_name, name) if name
-        model.class_eval(&block) if block
-        model
-      end
-
       # The constant's name, else the one given to new_submodel.
       def name
         Module.instance_method(:name).bind_call(self) || @given_name || "anonymous ruby task (#{declared_at})"
@@ -94,6 +86,12 @@ module Syskit
 
       private
 
+      # Its submodels are declared in Ruby through #inherited (see
+      # Models::Component#new_submodel).
+      def submodel_class
+        Class.new(self)
+      end
+
       def inherited(submodel)
         super
         declared_in_ruby(submodel, Location.of_caller)
@@ -104,7 +102,7 @@ module Syskit
         port = Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
         spec.ports[name] = port
         Models::Component.declarations_changed
-        define_method("#{name}_port") { find_bound_port(name) } unless method_defined?("#{name}_port")
+        define_port_reader(name)
         PortModifiers.new(port)
       end
 

@@ -6,6 +6,7 @@ require 'syskit/models/port_lookup'
 require 'syskit/models/provided_models'
 require 'syskit/models/bus_service_role'
 require 'syskit/models/service_model_binding'
+require 'syskit/models/task_requirements'
 
 module Syskit
   # The plain model objects the DSL records declarations into.
@@ -24,6 +25,7 @@ module Syskit
       include ProvidedModels
       include BusServiceRole
       include ServiceModelBinding
+      include TaskRequirementStatements
 
       attr_reader :ports, :parents, :declared_at
       attr_accessor :doc

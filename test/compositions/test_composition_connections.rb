@@ -58,5 +58,15 @@ module Syskit
       end
       assert_match(/follow_child has no port 'nope'/, error.message)
     end
+
+    def test_an_exported_port_is_a_port_of_the_composition_keeping_the_child_port
+      model = new_cmp { add Rig::Services::Pose, as: 'pose' }
+      exported = model.export model.pose_child.pose_port, as: 'where'
+      assert_kind_of Models::OutputPort, exported
+      assert_same model, exported.component_model
+      assert_equal 'where', exported.name
+      assert_equal Models::OutputPort.new(model, model.pose_child.pose_port.orogen_model, 'where'), exported
+      assert_equal exported, model.find_port('where')
+    end
   end
 end

@@ -37,6 +37,12 @@ module Syskit
         name
       end
 
+      # The oroGen port it is (what an export of it keeps, see
+      # CompositionPorts#ports).
+      def orogen_model
+        @port.is_a?(Port) ? @port.orogen_model : @port
+      end
+
       def input?
         direction == :input
       end

@@ -71,6 +71,12 @@ module Syskit
       self
     end
 
+    # The port of the task that has it (Syskit's +to_actual_port+): this
+    # one, a composition's port being found on the child it exports.
+    def to_actual_port
+      self
+    end
+
     def ==(other)
       other.is_a?(BoundPort) && other.task.equal?(task) && other.name == name
     end

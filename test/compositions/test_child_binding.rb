@@ -85,5 +85,15 @@ module Syskit
       assert_kind_of model, cmp.beat_child
       assert_equal model.pose_srv.bind(cmp.beat_child), @inner.beat_child.try_resolve_and_bind_child(cmp)
     end
+
+    def test_ports_bind_to_the_ports_of_the_tasks
+      @inner.export @inner.pose_child.pose_port, as: 'where'
+      cmp = @inner.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
+      tracker = cmp.pose_child
+      assert_equal tracker.rear_port, @inner.where_port.bind(cmp).to_actual_port
+      gps = OroGen.rig.GPSDriver.new
+      assert_equal gps.position_port, @inner.pose_child.pose_port.bind(gps)
+      assert_raises(ArgumentError) { @inner.pose_child.pose_port.bind(OroGen.rig.Follower.new) }
+    end
   end
 end

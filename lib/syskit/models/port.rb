@@ -57,6 +57,12 @@ module Syskit
         raise ArgumentError, "cannot resolve a port of #{component_model} into a component port"
       end
 
+      # This port on +component+, a task of its component model (for a
+      # composition, the port of the child task it exports).
+      def bind(component)
+        component.find_bound_port(name) || raise(ArgumentError, "#{component} has no port '#{name}'")
+      end
+
       # #to_component_port, or itself when there is none.
       def try_to_component_port
         return self unless component_model.respond_to?(:self_port_to_component_port)

@@ -87,7 +87,7 @@ module Syskit
     def test_a_service_gives_the_task_ports_behind_its_ports
       srv = @gps_task.gps_srv
       assert_equal @gps_task, srv.component_model
-      assert_equal MyApp::Devices::Gps, srv.fullfilled_model
+      assert_equal [MyApp::Devices::Gps], srv.fullfilled_model
       assert_same @gps_task.find_port('fix'), srv.position_port
       assert_same @gps_task.find_port('fix'), srv.find_port('position')
       assert_nil srv.find_port('fix'), 'a port of the task, not of the service'

@@ -27,13 +27,14 @@ module Syskit
         # as +m0+, +m1+...
         def create_for(models, component_model: nil, as: nil)
           task_model, services, = resolve_models_argument(models, component_model: component_model)
-          model = PlaceholderBuilder.new(task_model, services).build
+          builder = PlaceholderBuilder.new(task_model, services)
+          model = builder.build
           model.extend(self)
           model.include(@task_extension) if @task_extension
           model.instance_variable_set(:@proxied_component_model, task_model)
           model.instance_variable_set(:@proxied_data_service_models, services.dup.freeze)
           model.instance_variable_set(:@placeholder_name, as || default_name(task_model, services))
-          services.each_with_index { |srv, i| model.provides(srv, as: "m#{i}") }
+          services.each_with_index { |srv, i| model.provides(srv, builder.mappings[i], as: "m#{i}") }
           model
         end
 
@@ -79,8 +80,13 @@ module Syskit
 
       # Builds the task model of a placeholder: a submodel of its component
       # model (of a task context for services alone) with the ports of its
-      # services that the component does not have, abstract.
+      # services that the component does not have, abstract. A service port
+      # whose name is taken by a port of another type or direction gets a
+      # port of its own (see Network::StubModels.stub_service_ports):
+      # #mappings says which, per service.
       class PlaceholderBuilder
+        attr_reader :mappings
+
         def initialize(task_model, services)
           @task_model = task_model
           @services = services
@@ -88,15 +94,11 @@ module Syskit
 
         def build
           base = @task_model.equal?(Syskit::Component) ? Syskit::TaskContext : @task_model
+          ports = base.ports.dup
+          @mappings = @services.each_with_index.map { |srv, i| Network::StubModels.stub_service_ports(srv, i, ports) }
           spec = Orogen::TaskSpec.new('placeholder', nil)
           spec.superclass = base.spec if base.respond_to?(:spec) && base.spec
-          @services.each do |srv|
-            srv.ports.each_value do |p|
-              next if base.find_port(p.name) || spec.ports.key?(p.name)
-
-              spec.ports[p.name] = Syskit::Port.new(p.name, p.direction, p.type)
-            end
-          end
+          ports.each { |name, port| spec.ports[name] = port unless base.find_port(name) }
           spec.abstract = true
           spec.finalize
           model = base.new_model(spec)

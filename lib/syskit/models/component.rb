@@ -77,18 +77,6 @@ module Syskit
         false
       end
 
-      # The placeholder models made from this one, by kind and services
-      # (see Placeholder.for).
-      def placeholder_models
-        @placeholder_models ||= {}
-      end
-
-      # Syskit's +clear_submodels+: the placeholders made from this model
-      # are made anew when next asked for.
-      def clear_submodels
-        @placeholder_models = nil
-      end
-
       # Services by name, inherited ones included.
       # Those of the parent model are promoted to this one (their
       # +component_model+ is this model, as in Syskit), so that selecting

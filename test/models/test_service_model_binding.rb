@@ -63,7 +63,7 @@ module Syskit
       task = OroGen.nav.GpsTask
       srv = MyApp::Pose.bind(task)
       assert_equal 'gps', srv.full_name
-      assert_equal 'fix', srv.pose_port.name
+      assert_equal 'fix', srv.pose_port.to_component_port.name
       assert_equal task.cmd_srv, MyApp::Cmd.try_bind(task)
       assert_equal srv, MyApp::Pose.try_bind(task.gps_srv), 'a service is seen as the model'
       assert_nil MyApp::Cmd.try_bind(task.gps_srv)

@@ -80,11 +80,9 @@ module Syskit
 
       # Builds the task model of a placeholder: a submodel of its component
       # model (of a task context for services alone) with the ports of its
-      # services that the component does not have, abstract. A service port
-      # whose name is taken by a port of another type or direction gets a
-      # port of its own (see Network::StubModels.stub_service_ports):
-      # #mappings says which, per service.
+      # services that the component does not have, abstract.
       class PlaceholderBuilder
+        # The port mappings of each service, in order (see .service_ports).
         attr_reader :mappings
 
         def initialize(task_model, services)
@@ -92,13 +90,30 @@ module Syskit
           @services = services
         end
 
+        # The ports a task needs to provide each of +services+ (by name),
+        # and each service's port mappings: a port whose name another
+        # service took with another type or direction gets a name of its
+        # own (+pose_srv1+).
+        def self.service_ports(services)
+          ports = {}
+          mappings = services.each_with_index.map do |srv, index|
+            srv.ports.each_value.to_h do |p|
+              taken = ports[p.name]
+              clash = taken && (taken.type != p.type || taken.direction != p.direction)
+              name = clash ? "#{p.name}_srv#{index}" : p.name
+              ports[name] ||= Syskit::Orogen::Port.new(name, p.direction, p.type)
+              [p.name, name]
+            end
+          end
+          [ports, mappings]
+        end
+
         def build
           base = @task_model.equal?(Syskit::Component) ? Syskit::TaskContext : @task_model
-          ports = base.ports.dup
-          @mappings = @services.each_with_index.map { |srv, i| Network::StubModels.stub_service_ports(srv, i, ports) }
           spec = Orogen::TaskSpec.new('placeholder', nil)
           spec.superclass = base.spec if base.respond_to?(:spec) && base.spec
-          ports.each { |name, port| spec.ports[name] = port unless base.find_port(name) }
+          ports, @mappings = PlaceholderBuilder.service_ports(@services)
+          ports.each_value { |p| spec.ports[p.name] = p unless base.find_port(p.name) }
           spec.abstract = true
           spec.finalize
           model = base.new_model(spec)

@@ -121,10 +121,17 @@ module Syskit
       assert_equal [OroGen.nav.GpsTask], MyApp::Devices::Gps.find_all_drivers
       assert_equal OroGen.nav.GpsTask, MyApp::Devices::Gps.default_driver
       assert_equal [OroGen.nav.MonoTask, OroGen.nav.StereoTask], MyApp::Devices::Camera.find_all_drivers
-      error = assert_raises(DriverError) { MyApp::Devices::Camera.default_driver }
+      error = assert_raises(Ambiguous) { MyApp::Devices::Camera.default_driver }
       assert_match 'several task models drive (nav::MonoTask, nav::StereoTask) MyApp::Devices::Camera', error.message
-      error = assert_raises(DriverError) { MyApp::Devices::Lidar.default_driver }
+      error = assert_raises(ArgumentError) { MyApp::Devices::Lidar.default_driver }
       assert_match 'no loaded task model drives MyApp::Devices::Lidar', error.message
+    end
+
+    def test_drivers_made_in_ruby_are_found_too
+      ruby_driver = TaskContext.new_submodel { output_port 'range', '/double' }
+      ruby_driver.driver_for MyApp::Devices::Lidar, as: 'lidar'
+      assert_equal [ruby_driver], MyApp::Devices::Lidar.find_all_drivers
+      refute_includes MyApp::Devices::Lidar.find_all_drivers, MyApp::Devices::Lidar.placeholder_model
     end
   end
 end

@@ -47,14 +47,22 @@ module Syskit
         add_port(name, :output, type)
       end
 
-      # Declares ports the task creates at configure time, by name pattern:
-      # +dynamic_output_port(/^\w+$/, '/double')+ (a type of nil: any type).
+      # Ports created at configure time whose names match +pattern+ (a
+      # Regexp), of +type+ (any type without one): +dynamic_input_port
+      # /^w\w+$/, '/double'+.
       def dynamic_input_port(pattern, type = nil)
         add_dynamic_port(pattern, :input, type)
       end
 
       def dynamic_output_port(pattern, type = nil)
         add_dynamic_port(pattern, :output, type)
+      end
+
+      # What Syskit calls the oroGen model of a task model made in Ruby:
+      # ports may be declared through it too
+      # (+model.orogen_model.input_port 'in', '/double'+).
+      def orogen_model
+        Orogen::ModelView.new(spec, declarations: self)
       end
 
       # Declares a property: +property 'period', '/double', 0.1+.

@@ -107,7 +107,7 @@ module Syskit
       RUBY
       root = my_app(robot)
       app = load_app(root, problems: true)
-      bus0, bus1 = MyApp::Profiles::Base.syskit_profile.robot.devices.first(2)
+      bus0, bus1 = MyApp::Profiles::Base.syskit_profile.robot.each_master_device.first(2)
       bus1.attach_to(bus0)
       error = assert_raises(NetworkError) { bus0.attach_to(bus1) }
       assert_match(/attaching bus 'can0' to bus 'can1' makes a cycle: can0 -> can1 -> can0/, error.message)

@@ -209,7 +209,7 @@ module Syskit
       robot = Robot::RobotDefinition.new
       device = robot.device(MyApp::Devices::Camera, as: 'rear_cam', using: rear)
       assert_equal [rear, robot], [device.using, device.robot]
-      assert_equal [device], robot.devices
+      assert_equal [device], robot.each_master_device.to_a
       assert_same device, robot.rear_cam_dev
       line = __LINE__ + 1
       error = assert_raises(DeclarationError) { robot.device(MyApp::Devices::Camera, as: 'rear_cam') }

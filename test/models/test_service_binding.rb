@@ -84,6 +84,12 @@ module Syskit
       assert @task_m.new_submodel.fullfills?(MyApp::Pose.placeholder_model)
     end
 
+    def test_ports_of_task_and_service_models_are_never_connected
+      refute MyApp::Pose.pose_port.connected_to?(MyApp::Cmd.cmd_port)
+      refute @task_m.odo_srv.pose_port.connected_to?(@task_m.in_port)
+      refute @task_m.out_port.connected_to?(@task_m.in_port)
+    end
+
     def test_instances_of_a_dynamic_service_bind_across_specializations
       cmd = MyApp::Cmd
       task_m = TaskContext.new_submodel do

@@ -65,6 +65,17 @@ module Syskit
         component_model.self_port_to_component_port(self)
       end
 
+      # Whether a connection of its component model links this port to
+      # +sink+: never for the ports of task and service models, whose
+      # connections are kept by compositions (see ChildPort#connected_to?).
+      def connected_to?(sink)
+        source = try_to_component_port
+        return source.connected_to?(sink) unless source.equal?(self)
+
+        sink = sink.try_to_component_port if sink.respond_to?(:try_to_component_port)
+        !!(component_model.respond_to?(:connected?) && component_model.connected?(self, sink))
+      end
+
       # Whether this output port can feed +sink+, an input port of the
       # same type, once both are resolved to component ports.
       def can_connect_to?(sink)

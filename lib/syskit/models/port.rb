@@ -38,7 +38,8 @@ module Syskit
       # (+find_output_port('samples').triggered_once_per_update+).
       def_delegators :orogen_model, *(PortModifiers.public_instance_methods(false) - %i[name type ==])
 
-      def_delegators :@port, :direction, :input?, :output?, :multiplexes?, :reliable?, :orocos_type_name
+      def_delegators :@port, :direction, :input?, :output?, :multiplexes?, :reliable?, :orocos_type_name,
+                     :type_name
 
       # The same port, on +model+ (a submodel, a specialization).
       def attach(model)
@@ -62,6 +63,17 @@ module Syskit
         return self unless component_model.respond_to?(:self_port_to_component_port)
 
         component_model.self_port_to_component_port(self)
+      end
+
+      # Whether a connection of its component model links this port to
+      # +sink+: never for the ports of task and service models, whose
+      # connections are kept by compositions (see ChildPort#connected_to?).
+      def connected_to?(sink)
+        source = try_to_component_port
+        return source.connected_to?(sink) unless source.equal?(self)
+
+        sink = sink.try_to_component_port if sink.respond_to?(:try_to_component_port)
+        !!(component_model.respond_to?(:connected?) && component_model.connected?(self, sink))
       end
 
       # Whether this output port can feed +sink+, an input port of the

@@ -3,6 +3,7 @@
 require 'syskit/models/fullfillment'
 require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
+require 'syskit/instance_requirements/combination'
 
 module Syskit
   # What a network must contain, as Syskit's InstanceRequirements: a model
@@ -19,6 +20,7 @@ module Syskit
   class InstanceRequirements
     include Statements
     include Readers
+    include Combination
     # Whether these requirements fullfill a model (or each of a list).
     include Models::Fullfillment
 
@@ -67,6 +69,15 @@ module Syskit
       end
     end
 
+    # +models+ with the component model's service +bound+ replaced by its
+    # component model: a service among the models stands for its component
+    # model with that service selected, as in Syskit.
+    def self.without_service(models, bound)
+      return models&.freeze unless bound
+
+      models.map { |m| m.equal?(bound) ? bound.component_model : m }.freeze
+    end
+
     # The models +value+ (a selection) fullfills: what a default selection
     # is registered under.
     def self.fullfilled_models_of(value)
@@ -77,9 +88,10 @@ module Syskit
                    conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil,
                    selections: DependencyInjection::EMPTY, specialization_hints: NO_HINTS, declared_at: nil,
                    instance: nil, abstract: false, doc: nil, open: false)
-      @models = models&.freeze
+      bound = models&.grep(Models::BoundDataService)&.first
+      @models = InstanceRequirements.without_service(models, bound)
       @device = device
-      @service = service
+      @service = service || bound
       @profile = profile
       @name = name
       @arguments = arguments.frozen? ? arguments : arguments.dup.freeze

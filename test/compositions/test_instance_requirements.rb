@@ -123,5 +123,41 @@ module Syskit
         InstanceRequirements.new([task, odometry]).find_data_service_from_type(pose)
       end
     end
+
+    # Syskit's requirements made on a service (+new([Task.x_srv])+) and
+    # their ports (x_port, of the selected service when there is one).
+    def test_requirements_on_a_service_and_their_ports
+      pose, task = pose_and_task
+      on_service = InstanceRequirements.new([task.fix_srv])
+      assert_equal [[task], task.fix_srv], [on_service.models, on_service.service]
+      assert_equal 'out', on_service.pose_port.name
+      assert_equal 'out', task.to_instance_requirements.out_port.name
+      assert_nil on_service.find_port('nothing')
+      summary = task.with_arguments(a: 1).fullfilled_model
+      assert_equal [task, [pose, AbstractComponent, DataService], { a: 1 }],
+                   [summary[0], summary[1].sort_by(&:to_s), summary[2]]
+    end
+
+    # Merging two requirements, binding a task to requirements.
+    def test_merge_and_bind
+      pose, task = pose_and_task
+      on_service = InstanceRequirements.new([task.fix_srv])
+      merged = task.with_arguments(a: 1).merge(on_service.abstract)
+      assert_equal [task.fix_srv, { a: 1 }, false], [merged.service, merged.arguments, merged.abstract?]
+      assert task.to_instance_requirements.abstract.merge(on_service, keep_abstract: true).abstract?
+      assert_raises(IncompatibleComponentModels) { on_service.merge(TaskContext.new_submodel) }
+      instance = task.new
+      assert_same instance, pose.to_instance_requirements.try_bind(instance)
+      assert_nil on_service.try_bind(TaskContext.new_submodel.new)
+      assert_raises(ArgumentError) { on_service.bind(task) }
+    end
+
+    def pose_and_task
+      tracker_app
+      pose = DataService.new_submodel(name: 'Pose') { output_port 'pose', '/double' }
+      task = TaskContext.new_submodel(name: 'Task') { output_port 'out', '/double' }
+      task.provides pose, as: 'fix'
+      [pose, task]
+    end
   end
 end

@@ -21,10 +21,20 @@ module Syskit
 
         services = service_names(model)
         children = child_names(model)
-        return if services.empty? && children.empty?
+        ports = port_names(model)
+        return if services.empty? && children.empty? && ports.empty?
 
-        key = [services, children].freeze
-        LOCK.synchronize { MODULES[key] ||= build(services, children) }
+        key = [services, children, ports].freeze
+        LOCK.synchronize { MODULES[key] ||= build(services, children, ports) }
+      end
+
+      # The names of the ports of +model+ and of its services (readers
+      # x_port, see #find_port).
+      def self.port_names(model)
+        own = model.respond_to?(:ports) ? model.ports.keys : []
+        services = model.respond_to?(:each_data_service) ? model.each_data_service.to_a : []
+        served = services.flat_map { |s| s.model.ports.keys }
+        (own + served).uniq
       end
 
       # The names of +model+'s master services (readers x_srv).
@@ -37,11 +47,23 @@ module Syskit
         model.respond_to?(:child_names) ? model.child_names : []
       end
 
-      def self.build(services, children)
+      def self.build(services, children, ports)
         Module.new do
           services.each { |name| define_method("#{name}_srv") { find_data_service(name) } }
           children.each { |name| define_method("#{name}_child") { find_child(name) } }
+          ports.each do |name|
+            define_method("#{name}_port") do
+              find_port(name) || raise(NoMethodError.new("#{self} has no port '#{name}'", "#{name}_port"))
+            end
+          end
         end
+      end
+
+      # The port +name+ of the selected service, or of the model when none
+      # is selected (nil when there is none).
+      def find_port(name)
+        owner = service || model
+        owner.respond_to?(:find_port) ? owner.find_port(name) : nil
       end
 
       # These requirements with the service +name+ of the component model

@@ -257,7 +257,7 @@ module Syskit
       def check_service_options(name, mappings, location)
         # Syskit takes any identifier (common_models names services after
         # their models: as: 'Test').
-        unless name.match?(/\A[A-Za-z_]\w*\z/)
+        unless name.match?(/\A\w+\z/)
           raise DeclarationError.new("'#{name}' is not a valid service name",
                                      location: location, hint: "use an identifier, e.g. as: 'gps'")
         end

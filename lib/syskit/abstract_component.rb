@@ -30,6 +30,19 @@ module Syskit
       Models::Placeholder.for(models)
     end
 
+    # The service +name+ of this task (a Syskit::BoundDataService), or nil.
+    def find_data_service(name)
+      srv = model.find_service(name.to_s)
+      srv && BoundDataService.new(self, srv)
+    end
+
+    # The services of this task, as Syskit::BoundDataService.
+    def each_data_service(&block)
+      return enum_for(__method__) unless block
+
+      model.services.each_value { |srv| yield BoundDataService.new(self, srv) }
+    end
+
     private
 
     # Sets the task's arguments as Roby does: a declared argument through

@@ -10,14 +10,31 @@ module Syskit
   class DependencyInjectionContext
     attr_reader :state
 
-    # +locations+: where each key was selected (the +use+ statement).
+    # Syskit's +DependencyInjectionContext.new(injection, ...)+: the given
+    # layers (DependencyInjection values, or hashes of selections as +use+
+    # takes them), later ones winning.
+    def self.new(*injections)
+      injections.reduce(resolved({}, {})) do |context, injection|
+        injection = DependencyInjection.new(injection) if injection.is_a?(Hash)
+        context.with(injection)
+      end
+    end
+
+    # The context of a resolved +state+; +locations+: where each key was
+    # selected (the +use+ statement).
+    def self.resolved(state, locations)
+      context = allocate
+      context.send(:initialize, state, locations)
+      context
+    end
+
     def initialize(state = {}, locations = {})
       @state = state.freeze
       @locations = locations.freeze
       @stack = []
     end
 
-    EMPTY = new.freeze
+    EMPTY = resolved({}, {}).freeze
 
     # Adds the layer +injection+ on top (Syskit's +push+).
     def push(injection)
@@ -53,8 +70,8 @@ module Syskit
       added = DependencyInjection.resolve_default_selections(injection.explicit, injection.defaults)
       added = added.reject { |key, value| value.equal?(key) && state.key?(key) }
       locations = @locations.merge(added.transform_values { injection.declared_at })
-      DependencyInjectionContext.new(DependencyInjection.resolve_recursive_selection_mapping(state.merge(added)),
-                                     locations)
+      DependencyInjectionContext.resolved(DependencyInjection.resolve_recursive_selection_mapping(state.merge(added)),
+                                          locations)
     end
 
     # The context without +keys+ (the selections a child used, which
@@ -62,7 +79,7 @@ module Syskit
     def mask(keys)
       return self if keys.empty?
 
-      DependencyInjectionContext.new(state.except(*keys), @locations)
+      DependencyInjectionContext.resolved(state.except(*keys), @locations)
     end
 
     # Where +key+ was selected.

@@ -4,6 +4,7 @@ require 'syskit/models/fullfillment'
 require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
 require 'syskit/instance_requirements/combination'
+require 'syskit/models/faceted_access'
 
 module Syskit
   # What a network must contain, as Syskit's InstanceRequirements: a model
@@ -214,6 +215,28 @@ module Syskit
 
     def to_instance_requirements
       self
+    end
+
+    # These requirements seen through +models+ (models they fullfill): the
+    # selected service seen as them, else a Models::FacetedAccess.
+    def as(models)
+      return copy(service: service.as(models)) if service
+
+      Models::FacetedAccess.new(self, Models::Placeholder.for(Array(models)))
+    end
+
+    # Syskit's +instanciate+: the task these requirements stand for, its
+    # children selected in +context+ (a DependencyInjectionContext), added
+    # to +plan+ with them (see Network::Instantiate.into_plan).
+    # +task_arguments+ are the root task's arguments (+conf:+ its
+    # sections); +specialization_hints+ the specializations to prefer.
+    def instanciate(plan, context = DependencyInjectionContext::EMPTY, task_arguments: {}, specialization_hints: [])
+      arguments = task_arguments.dup
+      conf = Array(arguments.delete(:conf))
+      requirements = with_arguments(**arguments)
+      requirements = requirements.with_conf(*conf) unless conf.empty?
+      requirements = requirements.prefer_specializations(specialization_hints) unless specialization_hints.empty?
+      Network::Instantiate.into_plan(plan, requirements, context)
     end
 
     # The child +name+ of the composition model (as +Cmp.use(...).x_child+).

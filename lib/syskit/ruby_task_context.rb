@@ -84,7 +84,7 @@ module Syskit
         port = Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
         spec.ports[name] = port
         Models::Component.declarations_changed
-        define_method("#{name}_port") { find_bound_port(name) } unless method_defined?("#{name}_port")
+        define_port_reader(name)
         PortModifiers.new(port)
       end
 

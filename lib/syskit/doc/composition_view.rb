@@ -39,7 +39,7 @@ module Syskit
       end
 
       def connections
-        model.connections.map do |c|
+        model.port_connections.map do |c|
           policy = Render::Output.policy(c.policy.empty? ? { 'type' => 'data' } : c.policy, +'')
           Connection.new("#{c.from.child_name}.#{c.from.name}", "#{c.to.child_name}.#{c.to.name}", policy)
         end

@@ -255,11 +255,12 @@ module Syskit
       end
 
       def check_service_options(name, mappings, location)
-        # Syskit takes any identifier (common_models names services after
-        # their models: as: 'Test').
-        unless name.match?(/\A\w+\z/)
+        # Syskit takes any name (common_models names services after their
+        # models: as: 'Test'; its tests after anonymous ones, as: srv.to_s)
+        # but a dot, which separates a slave's name from its master's.
+        if name.empty? || name.include?('.')
           raise DeclarationError.new("'#{name}' is not a valid service name",
-                                     location: location, hint: "use an identifier, e.g. as: 'gps'")
+                                     location: location, hint: "use a name without dots, e.g. as: 'gps'")
         end
         options = mappings.keys.grep(Symbol)
         return if options.empty?

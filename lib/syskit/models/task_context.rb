@@ -179,12 +179,16 @@ module Syskit
         @stub_blocks = []
       end
 
-      # +out_port+ on the tasks, for each static port of the spec.
+      # +out_port+ on the model (its Port) and on the tasks (theirs), for
+      # each static port of the spec.
       def define_port_readers(spec)
-        spec.all_ports.each_key do |name|
-          reader = "#{name}_port"
-          define_method(reader) { find_bound_port(name) } unless method_defined?(reader)
-        end
+        spec.all_ports.each_key { |name| define_port_reader(name) }
+      end
+
+      def define_port_reader(name)
+        reader = "#{name}_port"
+        define_singleton_method(reader) { find_port(name) } unless singleton_class.method_defined?(reader)
+        define_method(reader) { find_bound_port(name) } unless method_defined?(reader)
       end
 
       def add_service(...)

@@ -14,6 +14,12 @@ module Syskit
         end
       end
 
+      # Syskit's +Model.instanciate(plan, context)+: see
+      # InstanceRequirements#instanciate.
+      def instanciate(plan, context = DependencyInjectionContext::EMPTY, **options)
+        to_instance_requirements.instanciate(plan, context, **options)
+      end
+
       # The model (a component or service model, or a component model's
       # service) as requirements (see InstanceRequirements).
       def to_instance_requirements

@@ -15,7 +15,7 @@ module Syskit
         selections = select_children(model, context)
         specialized = specialize(model, selections, requirements)
         return instantiate_composition(specialized, requirements, context, path, parent) if specialized != model
-        raise abstract(requirements, path, parent, model) if model.abstract?
+        raise abstract(requirements, path, parent, model) if model.abstract? && !@placeholders
 
         composition = model.new(task_arguments(model, requirements, parent))
         composition.conf = requirements.conf

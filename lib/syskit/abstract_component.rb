@@ -24,6 +24,26 @@ module Syskit
   # What task contexts and compositions are (Syskit::Component): the
   # class test files and custom models name.
   class Component < AbstractComponent
+    attr_reader :arguments
+    # The requirements (a device action, a composition's child, what
+    # InstanceRequirements#instanciate was given) the task was made for
+    # (Syskit's +requirements+); its configuration sections; where it
+    # stands in the network; where the requirements of the network's root
+    # it belongs to are declared (the definition).
+    attr_accessor :requirements, :conf, :plan_path, :root_location
+
+    def initialize(arguments = {})
+      super()
+      @conf = InstanceRequirements::DEFAULT_CONF
+      assign_arguments(arguments)
+    end
+
+    # Whether something must still be chosen in its place: it was made
+    # for abstract requirements, or its model is abstract.
+    def abstract?
+      requirements&.abstract? || model.abstract?
+    end
+
     # Syskit's name for Models::Placeholder.for: a model standing for any
     # component providing +models+.
     def self.create_proxy_task_model(models, **)

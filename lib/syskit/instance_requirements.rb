@@ -4,6 +4,7 @@ require 'syskit/models/fullfillment'
 require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
 require 'syskit/instance_requirements/combination'
+require 'syskit/actions/models/action'
 require 'syskit/models/faceted_access'
 
 module Syskit

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'compositions/composition_test_helper'
+require 'syskit/test/plan'
 
 module Syskit
   # Requirements as Syskit's InstanceRequirements read and change: their
@@ -150,6 +151,36 @@ module Syskit
       assert_same instance, pose.to_instance_requirements.try_bind(instance)
       assert_nil on_service.try_bind(TaskContext.new_submodel.new)
       assert_raises(ArgumentError) { on_service.bind(task) }
+    end
+
+    # Requirements as an action of Syskit's action interface: the model it
+    # returns, an argument per task argument (required without default).
+    def test_requirements_as_an_action_model
+      _, task = pose_and_task
+      task.argument :speed, doc: 'in m/s'
+      task.argument :mode, default: 'fast'
+      action = task.with_arguments(mode: 'slow').to_action_model
+      assert_same task, action.returned_type
+      speed = action.find_arg(:speed)
+      assert_equal [true, nil, 'in m/s'], [speed.required, speed.default, speed.doc]
+      mode = action.find_arg(:mode)
+      assert_equal [false, 'slow'], [mode.required, mode.default]
+      refute action.has_arg?(:other)
+    end
+
+    # A task made from requirements knows them (Syskit's +requirements+),
+    # and is abstract when they are marked so.
+    def test_a_plain_component_instanciated_knows_its_requirements
+      component = Component.new_submodel
+      plan = Test::Plan.new
+      task = component.to_instance_requirements.instanciate(plan)
+      assert_kind_of component, task
+      refute task.abstract?
+      assert_equal InstanceRequirements.new([component]), task.requirements.with_models([component])
+      abstract = component.to_instance_requirements.abstract.instanciate(plan)
+      assert abstract.abstract?
+      assert abstract.requirements.abstract?
+      assert plan.include?(abstract)
     end
 
     def pose_and_task

@@ -41,6 +41,11 @@ module Syskit
                                      location: Location.of_caller, hint: "give a task that is a #{self}"))
       end
 
+      # These requirements as an action (see Actions::Models::Action).
+      def to_action_model(doc = nil)
+        Actions::Models::Action.new(self, doc)
+      end
+
       protected
 
       def abstract_flag

@@ -5,6 +5,7 @@ require 'syskit/models/not_a_model'
 require 'syskit/models/bound_data_service'
 require 'syskit/models/port_mapper'
 require 'syskit/models/service_lookups'
+require 'syskit/models/driver_services'
 require 'syskit/models/task_arguments'
 require 'syskit/models/task_requirements'
 
@@ -18,6 +19,7 @@ module Syskit
       include TaskArguments
       include TaskRequirementStatements
       include ServiceLookups
+      include DriverServices
 
       class << self
         # Bumped whenever a component model gains a service or a stub: the

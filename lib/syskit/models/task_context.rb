@@ -2,7 +2,6 @@
 
 require 'syskit/models/component'
 require 'syskit/models/port_lookup'
-require 'syskit/models/driver_services'
 require 'syskit/models/dynamic_services'
 require 'syskit/models/task_specialization'
 
@@ -17,7 +16,6 @@ module Syskit
       include Component
       include PortLookup
       include DynamicServices
-      include DriverServices
       include TaskSpecialization
 
       attr_reader :spec

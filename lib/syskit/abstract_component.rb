@@ -31,6 +31,9 @@ module Syskit
     # stands in the network; where the requirements of the network's root
     # it belongs to are declared (the definition).
     attr_accessor :requirements, :conf, :plan_path, :root_location
+    # What plans it, when it stands for requirements still to be planned
+    # (see InstanceRequirements#as_plan).
+    attr_accessor :planning_task
 
     def initialize(arguments = {})
       super()

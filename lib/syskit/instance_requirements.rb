@@ -5,6 +5,7 @@ require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
 require 'syskit/instance_requirements/combination'
 require 'syskit/actions/models/action'
+require 'syskit/instance_requirements_task'
 require 'syskit/models/faceted_access'
 
 module Syskit

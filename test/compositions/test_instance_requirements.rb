@@ -183,6 +183,19 @@ module Syskit
       assert plan.include?(abstract)
     end
 
+    # A task to be planned from requirements (Syskit's +as_plan+): the
+    # requirements, with the arguments given, are its planning task's.
+    def test_a_task_to_be_planned_carries_its_requirements
+      _, task = pose_and_task
+      requirements = InstanceRequirements.new([task.fix_srv])
+      planned = requirements.as_plan(job_id: 3, speed: 2)
+      assert_kind_of task, planned
+      assert_equal({ speed: 2 }, planned.arguments)
+      assert_equal [requirements.with_arguments(speed: 2), 3],
+                   [planned.planning_task.requirements, planned.planning_task.job_id]
+      assert_empty requirements.arguments
+    end
+
     def pose_and_task
       tracker_app
       pose = DataService.new_submodel(name: 'Pose') { output_port 'pose', '/double' }

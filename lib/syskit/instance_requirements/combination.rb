@@ -41,6 +41,18 @@ module Syskit
                                      location: Location.of_caller, hint: "give a task that is a #{self}"))
       end
 
+      # A task standing for these requirements in a plan, to be planned
+      # (Syskit's +as_plan+): a task of the model, with +arguments+, whose
+      # +planning_task+ holds the requirements (+job_id+ stays there).
+      def as_plan(**arguments)
+        job_id = arguments.delete(:job_id)
+        requirements = with_arguments(**arguments)
+        task = model.new(requirements.arguments)
+        task.requirements = requirements
+        task.planning_task = InstanceRequirementsTask.new(requirements, job_id: job_id)
+        task
+      end
+
       # These requirements as an action (see Actions::Models::Action).
       def to_action_model(doc = nil)
         Actions::Models::Action.new(self, doc)

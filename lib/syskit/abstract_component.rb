@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/component'
+require 'syskit/models/component_submodels'
 
 module Syskit
   # The root of the components of a network, as in Syskit: task contexts
@@ -8,22 +9,41 @@ module Syskit
   # with Models::Component.
   class AbstractComponent
     extend Models::Component
+    extend Models::ComponentSubmodels
 
     def model
       self.class
-    end
-
-    # The service +name+ of this component (+task.gps_srv+ reads it): its
-    # model's service, bound to this component.
-    def find_data_service(name)
-      srv = model.find_data_service(name)
-      srv && BoundDataService.new(self, srv)
     end
   end
 
   # What task contexts and compositions are (Syskit::Component): the
   # class test files and custom models name.
   class Component < AbstractComponent
+    class << self
+      # Where it was made (see Models::Component#new_submodel).
+      attr_reader :declared_at
+
+      def to_s
+        name || "anonymous component (#{declared_at})"
+      end
+
+      # The name shown to users.
+      def short_name
+        to_s
+      end
+
+      private
+
+      # A plain component model (+Syskit::Component.new_submodel+): made
+      # where the caller is, and removed after the test that made it.
+      def submodel_class
+        model = Class.new(self)
+        model.instance_variable_set(:@declared_at, Location.of_caller)
+        Models.register_model(model)
+        model
+      end
+    end
+
     attr_reader :arguments
     # The requirements (a device action, a composition's child, what
     # InstanceRequirements#instanciate was given) the task was made for

@@ -183,6 +183,8 @@ module Syskit
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
     # What runs task contexts in Syskit (a Roby task).
     not_modelled_class(Syskit, :Deployment, 'deployment task')
+    # Where Syskit names its deployment tasks (OroGen.deployments.name).
+    not_modelled_class(Syskit::OroGenNamespace, :DeploymentNamespace, 'namespace of deployment tasks')
     not_modelled_class(Roby, :Task, 'Roby task')
     # Roby's task library (Roby::Tasks::Simple, ...).
     Roby.const_set(:Tasks, Module.new)

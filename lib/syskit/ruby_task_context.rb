@@ -81,7 +81,7 @@ module Syskit
 
       def add_port(name, direction, type)
         name = check_name(name, "#{direction}_port")
-        port = Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
+        port = Orogen::Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
         spec.ports[name] = port
         Models::Component.declarations_changed
         define_port_reader(name)

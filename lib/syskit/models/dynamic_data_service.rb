@@ -31,7 +31,7 @@ module Syskit
       # a specialization of it) and the ports it needs created; +location+
       # is where the instance is asked for.
       def instantiate(as, options, location, on: task_model)
-        context = Context.new(self, as, options, on)
+        context = InstantiationContext.new(on, as, self, **options)
         begin
           context.instance_exec(&@block)
         rescue ScriptError, StandardError => e
@@ -51,13 +51,15 @@ module Syskit
         "dynamic service '#{name}' (#{model}) of #{task_model.name}"
       end
 
-      # What the block of a dynamic service is evaluated on.
-      class Context
+      # What the block of a dynamic service is evaluated on (Syskit's
+      # +DynamicDataService::InstantiationContext.new(task_model, name,
+      # dynamic_service, **options)+).
+      class InstantiationContext
         # The instance's name and options.
         attr_reader :name, :options, :service, :created_ports
 
-        def initialize(dynamic, name, options, component_model)
-          @dynamic = dynamic
+        def initialize(component_model, name, dynamic_service, **options)
+          @dynamic = dynamic_service
           @name = name
           @options = options
           @component_model = component_model

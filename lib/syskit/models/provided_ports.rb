@@ -34,7 +34,8 @@ module Syskit
           [port.name, name]
         end
         added.each do |port|
-          @model.add_port_entry(Port.new(port.name, port.direction, port.type, declared_type: port.declared_type))
+          @model.add_port_entry(Orogen::Port.new(port.name, port.direction, port.type,
+                                                 declared_type: port.declared_type))
         end
         mapping
       end

@@ -14,7 +14,7 @@ module Syskit
 
       # A driver for +model+, with the ports of the model.
       def device_driver(model)
-        ports = model.ports.values.map { |p| Syskit::Port.new(p.name, p.direction, p.type) }
+        ports = model.ports.values.map { |p| Syskit::Orogen::Port.new(p.name, p.direction, p.type) }
         task_model("stub_driver_for_#{model_slug(model)}", ports: ports) do |task|
           task.driver_for(model, as: 'dev')
         end
@@ -34,8 +34,8 @@ module Syskit
       def client_driver(model, bus_model, bus_to_client:, client_to_bus:)
         type = bus_model.message_type
         ports = []
-        ports << Syskit::Port.new('from_bus', :input, type) if bus_to_client
-        ports << Syskit::Port.new('to_bus', :output, type) if client_to_bus
+        ports << Syskit::Orogen::Port.new('from_bus', :input, type) if bus_to_client
+        ports << Syskit::Orogen::Port.new('to_bus', :output, type) if client_to_bus
         dynamic = model.is_a?(Models::ComBusModel) ? bus_ports(model.message_type) : []
         task_model("stub_driver_for_#{model_slug(model)}", ports: ports, dynamic: dynamic) do |task|
           task.driver_for(model, as: model.is_a?(Models::ComBusModel) ? 'bus' : 'dev')
@@ -64,7 +64,7 @@ module Syskit
         srv.ports.each_value.to_h do |p|
           taken = ports[p.name]
           name = taken && (taken.type != p.type || taken.direction != p.direction) ? "#{p.name}_srv#{index}" : p.name
-          ports[name] ||= Syskit::Port.new(name, p.direction, p.type)
+          ports[name] ||= Syskit::Orogen::Port.new(name, p.direction, p.type)
           [p.name, name]
         end
       end

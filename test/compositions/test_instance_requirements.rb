@@ -196,6 +196,22 @@ module Syskit
       assert_empty requirements.arguments
     end
 
+    # As Syskit's +use+: a model selected by name for a child must derive
+    # from the child's component model; children are read off a
+    # composition's requirements only.
+    def test_children_of_requirements_and_what_use_selects_for_them
+      pose, task = pose_and_task
+      other = TaskContext.new_submodel(name: 'Other')
+      cmp = Composition.new_submodel(name: 'Cmp') { add task, as: 'nav' }
+      assert_raises(InvalidSelection) { cmp.use('nav' => other) }
+      assert cmp.use('nav' => task.new_submodel)
+      assert_equal ['nav'], cmp.to_instance_requirements.each_child.map(&:first)
+      assert_raises(ArgumentError) { task.to_instance_requirements.find_child('nav') }
+      assert_nil InstanceRequirements.new([task.fix_srv]).to_component_model.service
+      assert_same task.find_port('out'), task.to_instance_requirements.out_port.to_component_port
+      refute_nil pose
+    end
+
     def pose_and_task
       tracker_app
       pose = DataService.new_submodel(name: 'Pose') { output_port 'pose', '/double' }

@@ -56,7 +56,9 @@ module Syskit
         end
 
         injection = selections.dup.add(*mappings).freeze
-        component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
+        names = injection.explicit.keys.grep(String) - selections.explicit.keys
+        component_model.check_child_keys(names, location)
+        component_model.check_child_selections(injection.explicit.slice(*names), location)
         copy(selections: injection, declared_at: declared_at || location)
       end
 

@@ -4,6 +4,7 @@ require 'syskit/models/fullfillment'
 require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
 require 'syskit/instance_requirements/combination'
+require 'syskit/instance_requirements/changes'
 require 'syskit/actions/models/action'
 require 'syskit/instance_requirements_task'
 require 'syskit/models/faceted_access'
@@ -24,6 +25,7 @@ module Syskit
     include Statements
     include Readers
     include Combination
+    include Changes
     # Whether these requirements fullfill a model (or each of a list).
     include Models::Fullfillment
 
@@ -108,9 +110,8 @@ module Syskit
       @instance = instance
       @abstract = abstract
       @doc = doc
-      readers = Readers.for(component_model)
-      extend(readers) if readers
-      freeze unless open
+      @open = open
+      extend_readers
     end
 
     # The required models: a component model and/or data service models;
@@ -126,11 +127,6 @@ module Syskit
       return component if component && models.all? { |m| component.fullfills?(m) }
 
       Models::Placeholder.for(models)
-    end
-
-    # The same requirements on +models+, without a selected service or task.
-    def with_models(models)
-      copy(models: models, service: nil, instance: nil)
     end
 
     # Equal when they ask for the same thing (where they are written aside).
@@ -235,34 +231,10 @@ module Syskit
     def instanciate(plan, context = DependencyInjectionContext::EMPTY, task_arguments: {}, specialization_hints: [])
       arguments = task_arguments.dup
       conf = Array(arguments.delete(:conf))
-      requirements = with_arguments(**arguments)
+      requirements = dup.with_arguments(**arguments)
       requirements = requirements.with_conf(*conf) unless conf.empty?
       requirements = requirements.prefer_specializations(specialization_hints) unless specialization_hints.empty?
       Network::Instantiate.into_plan(plan, requirements, context)
-    end
-
-    # The child +name+ of the composition model (as +Cmp.use(...).x_child+);
-    # an ArgumentError when the requirements are not a composition's.
-    def find_child(name)
-      unless composition?
-        raise DeclarationError.new("#{self} is not a composition: it has no child '#{name}'",
-                                   location: Location.of_caller, hint: 'ask a composition model for its children')
-      end
-
-      component_model.find_child(name)
-    end
-
-    # Enumerates the children of the composition model.
-    def each_child(&)
-      return enum_for(__method__) unless composition?
-
-      component_model.each_child(&)
-    end
-
-    # The same requirements without a selected service (Syskit's
-    # +to_component_model+).
-    def to_component_model
-      copy(service: nil)
     end
 
     # An action by its name (+Base.drive_def+, +gps_dev+), else the model
@@ -330,16 +302,6 @@ module Syskit
 
       DependencyInjection.of(selections.explicit.merge(other.selections.explicit),
                              selections.defaults | other.selections.defaults, other.selections.declared_at)
-    end
-
-    def copy(**changes)
-      values = FIELDS.to_h { |f| [f, instance_variable_get(:"@#{f}")] }
-      values[:selections] ||= DependencyInjection::EMPTY
-      values[:arguments] ||= NO_ARGUMENTS
-      values[:specialization_hints] ||= NO_HINTS
-      own_models = values.delete(:models)
-      models = changes.delete(:models) { own_models }
-      changes.delete(:class) { self.class }.new(models, **values, **changes)
     end
   end
 end

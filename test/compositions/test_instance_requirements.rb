@@ -191,9 +191,25 @@ module Syskit
       planned = requirements.as_plan(job_id: 3, speed: 2)
       assert_kind_of task, planned
       assert_equal({ speed: 2 }, planned.arguments)
+      assert_empty requirements.arguments
       assert_equal [requirements.with_arguments(speed: 2), 3],
                    [planned.planning_task.requirements, planned.planning_task.job_id]
-      assert_empty requirements.arguments
+    end
+
+    # As Syskit's: statements change requirements made on the spot; those
+    # a model, a profile or an injection holds give a changed copy.
+    def test_statements_change_requirements_that_nothing_holds
+      _, task = pose_and_task
+      requirements = InstanceRequirements.new([task])
+      assert_same requirements, requirements.with_arguments(a: 1).select_service(task.fix_srv)
+      assert_equal [{ a: 1 }, task.fix_srv], [requirements.arguments, requirements.service]
+      assert_nil requirements.unselect_service.service
+      copy = requirements.dup
+      copy.with_arguments(b: 2)
+      assert_equal({ a: 1 }, requirements.arguments)
+      DependencyInjection.new('x' => requirements)
+      refute_same requirements, requirements.with_arguments(c: 3)
+      assert_equal({ a: 1 }, requirements.arguments)
     end
 
     # As Syskit's +use+: a model selected by name for a child must derive

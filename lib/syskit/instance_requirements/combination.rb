@@ -46,7 +46,7 @@ module Syskit
       # +planning_task+ holds the requirements (+job_id+ stays there).
       def as_plan(**arguments)
         job_id = arguments.delete(:job_id)
-        requirements = with_arguments(**arguments)
+        requirements = dup.with_arguments(**arguments)
         task = model.new(requirements.arguments)
         task.requirements = requirements
         task.planning_task = InstanceRequirementsTask.new(requirements, job_id: job_id)

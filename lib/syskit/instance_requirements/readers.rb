@@ -107,6 +107,30 @@ module Syskit
         )
       end
 
+      # The child +name+ of the composition model (as +Cmp.use(...).x_child+);
+      # an ArgumentError when the requirements are not a composition's.
+      def find_child(name)
+        unless composition?
+          raise DeclarationError.new("#{self} is not a composition: it has no child '#{name}'",
+                                     location: Location.of_caller, hint: 'ask a composition model for its children')
+        end
+
+        component_model.find_child(name)
+      end
+
+      # Enumerates the children of the composition model.
+      def each_child(&)
+        return enum_for(__method__) unless composition?
+
+        component_model.each_child(&)
+      end
+
+      # The same requirements without a selected service (Syskit's
+      # +to_component_model+).
+      def to_component_model
+        copy(service: nil)
+      end
+
       # Why +name+ is not a method of the requirements when it looks like
       # a service's or a child's reader (see UserCode.explain).
       def explain_missing(name)

@@ -59,7 +59,7 @@ module Syskit
         # The task of the requirements with +arguments+ (see
         # InstanceRequirements#instanciate), added to +plan+.
         def instanciate(plan, arguments = {})
-          requirements.with_arguments(**arguments).instanciate(plan)
+          requirements.dup.with_arguments(**arguments).instanciate(plan)
         end
 
         def to_s

@@ -120,9 +120,15 @@ module Syskit
       @models || (device ? [device.model] : [])
     end
 
-    # The component model, or the placeholder standing for it and the
-    # required services it does not provide (Syskit's +model+).
+    # What the requirements are (Syskit's +model+): the selected service,
+    # else the base model.
     def model
+      service || base_model
+    end
+
+    # The component model, or the placeholder standing for it and the
+    # required services it does not provide (Syskit's +base_model+).
+    def base_model
       component = component_model
       return component if component && models.all? { |m| component.fullfills?(m) }
 

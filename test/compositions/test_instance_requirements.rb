@@ -196,6 +196,13 @@ module Syskit
                    [planned.planning_task.requirements, planned.planning_task.job_id]
     end
 
+    # Selecting a service given as requirements brings their arguments.
+    def test_a_service_selected_with_its_arguments
+      _, task = pose_and_task
+      with_key = InstanceRequirements.new([task]).select_service(task.with_arguments(key: 1).fix_srv)
+      assert_equal [task.fix_srv, { key: 1 }], [with_key.model, with_key.arguments]
+    end
+
     # As Syskit's: statements change requirements made on the spot; those
     # a model, a profile or an injection holds give a changed copy.
     def test_statements_change_requirements_that_nothing_holds
@@ -203,7 +210,9 @@ module Syskit
       requirements = InstanceRequirements.new([task])
       assert_same requirements, requirements.with_arguments(a: 1).select_service(task.fix_srv)
       assert_equal [{ a: 1 }, task.fix_srv], [requirements.arguments, requirements.service]
+      assert_equal task.fix_srv, requirements.model
       assert_nil requirements.unselect_service.service
+      assert_same task, requirements.model
       copy = requirements.dup
       copy.with_arguments(b: 2)
       assert_equal({ a: 1 }, requirements.arguments)

@@ -62,7 +62,7 @@ module Syskit
       # The port +name+ of the selected service, or of the model when none
       # is selected (nil when there is none).
       def find_port(name)
-        owner = service || model
+        owner = model
         owner.respond_to?(:find_port) ? owner.find_port(name) : nil
       end
 
@@ -88,7 +88,7 @@ module Syskit
         end
 
         check_unambiguous_service(service_model)
-        found = model.find_data_service_from_type(service_model)
+        found = base_model.find_data_service_from_type(service_model)
         found && copy(service: found)
       end
 

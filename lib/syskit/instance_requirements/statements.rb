@@ -119,7 +119,11 @@ module Syskit
       # These requirements with +srv+, a service of their component model,
       # selected (as +x_srv+ does).
       def select_service(srv)
-        srv = srv.service if srv.is_a?(InstanceRequirements)
+        if srv.is_a?(InstanceRequirements)
+          # Requirements on a service: their arguments come along, as in Syskit.
+          arguments = srv.arguments
+          srv = srv.service
+        end
         model = component_model
         unless srv.is_a?(Models::BoundDataService) && model.is_a?(Class) && model <= srv.task_model
           shown = srv.respond_to?(:task_model) ? srv : Arguments.shown(srv)
@@ -127,7 +131,9 @@ module Syskit
                                      location: Location.of_caller, hint: 'select one of its x_srv')
         end
 
-        change(service: srv)
+        return change(service: srv) if arguments.nil? || arguments.empty?
+
+        change(service: srv, arguments: self.arguments.merge(arguments))
       end
 
       # These requirements without a selected service.

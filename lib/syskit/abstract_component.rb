@@ -61,16 +61,22 @@ module Syskit
       assign_arguments(arguments)
     end
 
-    # Whether something must still be chosen in its place: it was made
-    # for abstract requirements, or its model is abstract.
-    def abstract?
-      requirements&.abstract? || model.abstract?
-    end
-
     # Syskit's name for Models::Placeholder.for: a model standing for any
     # component providing +models+.
-    def self.create_proxy_task_model(models, **)
-      Models::Placeholder.for(models)
+    def self.create_proxy_task_model(models, component_model: nil, as: nil)
+      Models::Placeholder.for(models, component_model: component_model, as: as)
+    end
+
+    # Whether the task stands for a component (see Syskit::Placeholder).
+    def placeholder?
+      false
+    end
+
+    # Whether the task is of an abstract model (a placeholder's, an
+    # abstract task's), or was made for requirements marked abstract:
+    # something must still be chosen in its place, a network cannot run it.
+    def abstract?
+      model.abstract? || requirements&.abstract? || false
     end
 
     # The service +name+ of this task (a Syskit::BoundDataService), or nil.

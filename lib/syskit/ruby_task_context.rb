@@ -47,6 +47,24 @@ module Syskit
         add_port(name, :output, type)
       end
 
+      # Ports created at configure time whose names match +pattern+ (a
+      # Regexp), of +type+ (any type without one): +dynamic_input_port
+      # /^w\w+$/, '/double'+.
+      def dynamic_input_port(pattern, type = nil)
+        add_dynamic_port(pattern, :input, type)
+      end
+
+      def dynamic_output_port(pattern, type = nil)
+        add_dynamic_port(pattern, :output, type)
+      end
+
+      # What Syskit calls the oroGen model of a task model made in Ruby:
+      # ports may be declared through it too
+      # (+model.orogen_model.input_port 'in', '/double'+).
+      def orogen_model
+        Orogen::ModelView.new(spec, declarations: self)
+      end
+
       # Declares a property: +property 'period', '/double', 0.1+.
       def property(name, type, default = nil)
         name = check_name(name, 'property')
@@ -85,6 +103,15 @@ module Syskit
         spec.ports[name] = port
         Models::Component.declarations_changed
         define_port_reader(name)
+        PortModifiers.new(port)
+      end
+
+      def add_dynamic_port(pattern, direction, type)
+        pattern = Regexp.new(pattern.to_s) unless pattern.is_a?(Regexp)
+        type &&= Models.resolve_type(type, Location.of_caller)
+        port = DynamicPort.new(pattern, direction, type)
+        spec.dynamic_ports << port
+        Models::Component.declarations_changed
         PortModifiers.new(port)
       end
 

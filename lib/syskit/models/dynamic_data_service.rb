@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/models/bound_dynamic_data_service'
+
 module Syskit
   module Models
     # A service a task model provides under names chosen later, with ports
@@ -19,12 +21,25 @@ module Syskit
     class DynamicDataService
       attr_reader :task_model, :name, :model, :declared_at
 
-      def initialize(task_model, name, model, block, location)
+      def initialize(task_model, name, model, block, location, demoted: nil)
         @task_model = task_model
         @name = name
         @model = model
         @block = block
         @declared_at = location
+        @demoted = demoted
+      end
+
+      # The dynamic service as the task model that declared it has it
+      # (itself, unless it was promoted to a submodel, see #attach).
+      def demoted
+        @demoted || self
+      end
+
+      # This dynamic service as one of +component_model+, a submodel of
+      # its task model (what +Sub.find_dynamic_service+ gives).
+      def attach(component_model)
+        DynamicDataService.new(component_model, name, model, @block, declared_at, demoted: demoted)
       end
 
       # The service named +as+ (a BoundDataService of +on+, the task model or
@@ -80,8 +95,9 @@ module Syskit
           check(model, as, location)
           master = master_service(slave_of, location) if slave_of
           mapper = PortMapper.new(component_model, model, mappings.merge(more), location, dynamic: true)
-          @service = BoundDataService.new(component_model, name, model, mapper.map, location,
-                                          master: master, dynamic_service: @dynamic, dynamic_service_options: options)
+          @service = BoundDynamicDataService.new(component_model, name, model, mapper.map, location,
+                                                 master: master, dynamic_service: @dynamic,
+                                                 dynamic_service_options: options)
           @created_ports = mapper.created
           @service
         end

@@ -120,15 +120,16 @@ module Syskit
       @models || (device ? [device.model] : [])
     end
 
-    # What the requirements are (Syskit's +model+): the selected service,
-    # else the base model.
+    # What the requirements are (Syskit's +model+, and +base_model+): the
+    # selected service, else the proxy model.
     def model
-      service || base_model
+      service || proxy_model
     end
+    alias base_model model
 
     # The component model, or the placeholder standing for it and the
-    # required services it does not provide (Syskit's +base_model+).
-    def base_model
+    # required services it does not provide.
+    def proxy_model
       component = component_model
       return component if component && models.all? { |m| component.fullfills?(m) }
 

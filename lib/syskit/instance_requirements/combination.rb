@@ -47,7 +47,7 @@ module Syskit
       def as_plan(**arguments)
         job_id = arguments.delete(:job_id)
         requirements = dup.with_arguments(**arguments)
-        task = base_model.new(requirements.arguments)
+        task = proxy_model.new(requirements.arguments)
         task.requirements = requirements
         task.planning_task = InstanceRequirementsTask.new(requirements, job_id: job_id)
         task

@@ -88,7 +88,7 @@ module Syskit
         end
 
         check_unambiguous_service(service_model)
-        found = base_model.find_data_service_from_type(service_model)
+        found = proxy_model.find_data_service_from_type(service_model)
         found && copy(service: found)
       end
 

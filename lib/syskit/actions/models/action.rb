@@ -41,7 +41,7 @@ module Syskit
 
         # The model of the task the action gives.
         def returned_type
-          requirements.base_model
+          requirements.proxy_model
         end
 
         def find_arg(name)

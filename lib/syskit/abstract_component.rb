@@ -112,9 +112,16 @@ module Syskit
       end
     end
 
-    # What Instantiate sets on the tasks it makes (see TaskContext).
     attr_reader :arguments
-    attr_accessor :conf, :requirement, :plan_path, :root_location
+    # The requirements (a device action, a composition's child, what
+    # InstanceRequirements#instanciate was given) the task was made for
+    # (Syskit's +requirements+); its configuration sections; where it
+    # stands in the network; where the requirements of the network's root
+    # it belongs to are declared (the definition).
+    attr_accessor :requirements, :conf, :plan_path, :root_location
+    # What plans it, when it stands for requirements still to be planned
+    # (see InstanceRequirements#as_plan).
+    attr_accessor :planning_task
 
     def initialize(arguments = {})
       super()
@@ -134,9 +141,10 @@ module Syskit
     end
 
     # Whether the task is of an abstract model (a placeholder's, an
-    # abstract task's): a network cannot run it.
+    # abstract task's), or was made for requirements marked abstract:
+    # something must still be chosen in its place, a network cannot run it.
     def abstract?
-      model.abstract? || false
+      model.abstract? || requirements&.abstract? || false
     end
 
     # The services of this task, as Syskit::BoundDataService.

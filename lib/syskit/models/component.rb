@@ -6,6 +6,7 @@ require 'syskit/models/bound_data_service'
 require 'syskit/models/component_merging'
 require 'syskit/models/port_mapper'
 require 'syskit/models/service_lookups'
+require 'syskit/models/driver_services'
 require 'syskit/models/task_arguments'
 require 'syskit/models/task_requirements'
 
@@ -19,6 +20,7 @@ module Syskit
       include TaskArguments
       include TaskRequirementStatements
       include ServiceLookups
+      include DriverServices
       include ComponentMerging
 
       class << self

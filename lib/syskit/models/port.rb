@@ -105,9 +105,7 @@ module Syskit
       alias short_name to_s
       alias inspect to_s
 
-      protected
-
-      # The Orogen::Port itself.
+      # The Orogen::Port itself (#orogen_model is a view of it).
       def orogen_port
         @port
       end

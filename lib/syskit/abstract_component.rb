@@ -10,33 +10,25 @@ module Syskit
   class AbstractComponent
     extend Models::Component
     extend Models::ComponentSubmodels
+
+    def model
+      self.class
+    end
+
+    # The service +name+ of this component (+task.gps_srv+ reads it): its
+    # model's service, bound to this component.
+    def find_data_service(name)
+      srv = model.find_data_service(name)
+      srv && BoundDataService.new(self, srv)
+    end
   end
 
   # What task contexts and compositions are (Syskit::Component): the
   # class test files and custom models name.
   class Component < AbstractComponent
     class << self
-      # A component model made in Ruby (+Syskit::Component.new_submodel+,
-      # or +model.new_submodel+ for one of its submodels), named +name+
-      # until a constant names it; the block is its class body.
-      def new_submodel(name: nil, &block)
-        model = Class.new(self)
-        model.instance_variable_set(:@given_name, name) if name
-        model.instance_variable_set(:@declared_at, Location.of_caller)
-        Models.register_model(model)
-        model.class_eval(&block) if block
-        model
-      end
-
-      def name
-        super || @given_name
-      end
-
-      # Where it was made (see .new_submodel).
-      attr_reader :declared_at
-
       def to_s
-        name || "anonymous component (#{declared_at})"
+        name || super
       end
 
       # The name shown to users.
@@ -49,6 +41,19 @@ module Syskit
     # component providing +models+.
     def self.create_proxy_task_model(models, **)
       Models::Placeholder.for(models)
+    end
+
+    # The service +name+ of this task (a Syskit::BoundDataService), or nil.
+    def find_data_service(name)
+      srv = model.find_service(name.to_s)
+      srv && BoundDataService.new(self, srv)
+    end
+
+    # The services of this task, as Syskit::BoundDataService.
+    def each_data_service(&block)
+      return enum_for(__method__) unless block
+
+      model.services.each_value { |srv| yield BoundDataService.new(self, srv) }
     end
 
     private

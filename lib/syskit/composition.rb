@@ -35,10 +35,6 @@ module Syskit
     attr_reader :child_selections
     alias child_selection child_selections
 
-    def model
-      self.class
-    end
-
     # The child task of role +role+ (a task or a composition).
     def child_task(role)
       @children.fetch(role.to_s) do
@@ -49,6 +45,47 @@ module Syskit
 
     def add_child(role, task)
       @children[role] = task
+    end
+
+    # Roby's +depends_on(task, role: 'name')+ as Syskit's tests write it:
+    # +task+ becomes the child +role+.
+    def depends_on(task, role:)
+      add_child(role.to_s, task)
+      task
+    end
+
+    # Removes +task+ from the children.
+    def remove_dependency(task)
+      @children.delete_if { |_, child| child.equal?(task) }
+    end
+
+    # The child task of role +role+, or nil.
+    def find_child_from_role(role)
+      @children[role.to_s]
+    end
+
+    # The child of role +role+ as +from_model+ (this composition's model
+    # or one of its parents) requires it: the task's service selected for
+    # it, seen as the one data service the child requires; the task when
+    # the child requires a component model or several services. Nil when
+    # +from_model+ has no such child or the task has none in that role.
+    def find_required_composition_child_from_role(role, from_model = model)
+      child = from_model.find_child(role)
+      task = child && find_child_from_role(role)
+      return unless task
+
+      services = child.models.grep(Models::DataServiceModel)
+      return task if services.size != 1 || !task.respond_to?(:find_data_service)
+
+      service = selected_service(role, task, services.first)
+      service ? service.as(services.first) : task
+    end
+
+    # As find_required_composition_child_from_role, raising ArgumentError
+    # when there is no such child.
+    def required_composition_child_from_role(role, from_model = model)
+      find_required_composition_child_from_role(role, from_model) ||
+        raise(ArgumentError, "#{self} has no child with role #{role}")
     end
 
     # The children as [task, { role: name }] pairs, in the model's order.
@@ -137,6 +174,18 @@ module Syskit
 
     def inspect
       "#<#{self}>"
+    end
+
+    private
+
+    # The service of +task+ selected for the child +role+, else the one
+    # service of +task+ that provides +required+.
+    def selected_service(role, task, required)
+      selected = @child_selections[role.to_s]&.service
+      return task.find_data_service(selected.full_name) if selected
+
+      candidates = task.each_data_service.select { |srv| srv.fullfills?(required) }
+      candidates.first if candidates.size == 1
     end
   end
 end

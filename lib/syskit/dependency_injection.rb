@@ -1,6 +1,9 @@
 # frozen_string_literal: true
 
+require 'set'
 require 'syskit/dependency_injection_context'
+require 'syskit/dependency_injection/selections'
+require 'syskit/dependency_injection/child_selection'
 
 module Syskit
   # What +use+ says: which model, device or definition to put in place of a
@@ -12,7 +15,8 @@ module Syskit
   #
   # A value: explicit selections by key (a child name, or a model) and
   # defaults (values without a key, which select themselves for every model
-  # they fullfill, unless that is ambiguous). Adding returns a new one.
+  # they fullfill, unless that is ambiguous). Changeable as Syskit's
+  # (+add+, +add_mask+, +clear+); requirements hold frozen ones.
   class DependencyInjection
     # Selects nothing for a child: it keeps the model it was added with
     # (Syskit's +DependencyInjection.nothing+).
@@ -28,16 +32,49 @@ module Syskit
       'do_not_inherit'
     end
 
+    extend Selections
+    include ChildSelection
+
+    # +explicit+: selections by key (a name, a component or service model,
+    # a tag); +defaults+: the values selected without a key; where the last
+    # +add+ was written.
     attr_reader :explicit, :defaults, :declared_at
 
-    def initialize(explicit = {}, defaults = [], declared_at = nil)
-      @explicit = explicit.freeze
-      @defaults = defaults.freeze
-      @declared_at = declared_at
-      freeze
+    # Syskit's constructor: +new(Default, 'child' => Model)+ adds what
+    # #add accepts.
+    def initialize(*base)
+      @explicit = {}
+      @defaults = Set.new
+      @declared_at = nil
+      add_located(base, Location.of_caller) unless base.empty?
     end
 
-    EMPTY = new
+    def initialize_copy(from)
+      super
+      @explicit = from.explicit.dup
+      @defaults = from.defaults.dup
+    end
+
+    # Frozen with its tables (what requirements hold; +dup+ gives a
+    # changeable copy).
+    def freeze
+      @explicit.freeze
+      @defaults.freeze
+      super
+    end
+
+    EMPTY = new.freeze
+
+    # A frozen injection of checked +explicit+ selections and +defaults+,
+    # written at +declared_at+ (what requirements and the generator
+    # combine).
+    def self.of(explicit, defaults = [], declared_at = nil)
+      injection = new
+      injection.explicit.merge!(explicit)
+      injection.add_defaults(defaults)
+      injection.instance_variable_set(:@declared_at, declared_at)
+      injection.freeze
+    end
 
     def self.nothing
       NOTHING
@@ -51,26 +88,97 @@ module Syskit
       explicit.empty? && defaults.empty?
     end
 
-    # A new injection with +mappings+ (hashes of key => value, and values
-    # without a key) added; later keys override earlier ones.
-    def add(mappings, location)
-      explicit = self.explicit.dup
-      defaults = self.defaults.dup
-      mappings.each do |mapping|
-        next if not_modelled?(mapping, location)
+    def clear
+      explicit.clear
+      defaults.clear
+      self
+    end
 
-        if mapping.is_a?(Hash)
-          mapping.each do |key, value|
-            next if not_modelled?(key, location) || not_modelled?(value, location)
+    def ==(other)
+      other.is_a?(DependencyInjection) && explicit == other.explicit && defaults == other.defaults
+    end
+    alias eql? ==
 
-            key = normalize_key(key, location)
-            explicit[key] = check_model_selection(key, check_value(value, key, location), location)
-          end
-        else
-          defaults << check_value(mapping, nil, location)
-        end
+    def hash
+      [explicit, defaults].hash
+    end
+
+    # Adds selections (Syskit's +add+): hashes of key => value (later keys
+    # override earlier ones; selecting a model for itself keeps what it
+    # selects), values without a key (defaults), other DependencyInjection
+    # objects. Changes and returns self.
+    def add(*mappings)
+      add_located(mappings, Location.of_caller)
+    end
+
+    # Makes +keys+ (child names) select nothing by name here, so that what
+    # an enclosing layer selected for them by name does not apply.
+    def add_mask(keys)
+      keys.each { |key| explicit[key] = DO_NOT_INHERIT }
+      self
+    end
+
+    # Adds +mappings+ (see #add), normalized, to the explicit selections.
+    def add_explicit(mappings)
+      mappings.each do |key, value|
+        explicit[key] = value unless value == key && explicit.key?(key)
       end
-      DependencyInjection.new(explicit, defaults, location)
+      @explicit = DependencyInjection.resolve_recursive_selection_mapping(explicit)
+      self
+    end
+
+    def add_defaults(values)
+      @defaults |= values
+      self
+    end
+
+    # The selection of +key+ (a name or model), defaults resolved; nil when
+    # nothing or do_not_inherit is selected.
+    def direct_selection_for(key)
+      value = resolve.explicit[key]
+      value unless DependencyInjection.placeholder?(value)
+    end
+
+    # A copy whose defaults are resolved into explicit selections (see
+    # .resolve_default_selections), chains followed.
+    def resolve
+      return self if defaults.empty?
+
+      DependencyInjection.new(DependencyInjection.resolve_recursive_selection_mapping(
+                                DependencyInjection.resolve_default_selections(explicit, defaults)
+                              ))
+    end
+
+    # Replaces the selections given by name with what +mapping+ (a table
+    # of selections) selects for that name (see .find_name_resolution);
+    # returns the names left unresolved.
+    def resolve_names(mapping = {})
+      unresolved = Set.new
+      map! do |value|
+        next value unless value.is_a?(String)
+
+        resolved = DependencyInjection.find_name_resolution(value, mapping)
+        unresolved << value unless resolved
+        resolved || value
+      end
+      unresolved
+    end
+
+    # Replaces each selected value (explicit and default) with what the
+    # block returns for it.
+    def map!(&)
+      @explicit = DependencyInjection.resolve_recursive_selection_mapping(explicit.transform_values(&))
+      @defaults = defaults.to_set(&)
+      self
+    end
+
+    # Enumerates the selected values.
+    def each(&block)
+      return enum_for(__method__) unless block
+
+      explicit.each_value(&block)
+      defaults.each(&block)
+      self
     end
 
     # Selections of the children of child +name+, from the keys
@@ -88,7 +196,32 @@ module Syskit
     end
     alias inspect to_s
 
+    def pretty_print(pp)
+      pp.text(to_s)
+    end
+
     private
+
+    def add_located(mappings, location)
+      explicit = {}
+      defaults = []
+      mappings.each do |mapping|
+        next if not_modelled?(mapping, location)
+
+        case mapping
+        when Hash
+          mapping.each { |k, v| explicit[k] = v unless not_modelled?(k, location) || not_modelled?(v, location) }
+        when DependencyInjection
+          explicit = mapping.explicit.merge(explicit)
+          defaults.concat(mapping.defaults.to_a)
+        else defaults << DependencyInjection.normalize_selected_object(mapping, nil, location)
+        end
+      end
+      add_explicit(DependencyInjection.normalize_selection(explicit, location))
+      add_defaults(defaults)
+      @declared_at = location
+      self
+    end
 
     # A value made by a statement this gem does not model (the device of
     # use_gazebo_model): the selection is left out, with a warning.
@@ -101,61 +234,6 @@ module Syskit
 
     def key_name(key)
       key.is_a?(String) ? "'#{key}'" : key.to_s
-    end
-
-    def normalize_key(key, location)
-      case key
-      when String, Symbol then key.to_s
-      when Models::CompositionChild then key.path
-      when Models::DataServiceModel, Actions::Profile::Tag then key
-      else
-        return key if key.is_a?(Class) && key < AbstractComponent
-
-        raise DeclarationError.new(
-          "use cannot select for #{key.inspect}: keys are child names or models",
-          location: location, hint: "write use('child_name' => Model) or use(Services::Pose => Model)"
-        )
-      end
-    end
-
-    # What is selected for a model must be that model or fullfill it (a
-    # submodel of a component model, a service providing a service model),
-    # as Syskit checks when +use+ is called. What class hierarchies and
-    # service models say is checked here; what a component provides may
-    # be declared by a file loaded later, and is checked where the
-    # selection fills a child.
-    def check_model_selection(key, value, location)
-      return value if !key.is_a?(Module) || value.equal?(NOTHING) || value.equal?(DO_NOT_INHERIT) ||
-                      selection_of_model?(key, value)
-
-      raise DeclarationError.new("use cannot select #{Arguments.shown(value)} for #{key}: it is not a #{key}",
-                                 location: location, hint: "select #{key} itself, or #{
-                                   key.is_a?(Class) ? 'a submodel of it' : 'a data service that provides it'}")
-    end
-
-    # Whether +value+ can be selected for +key+, a component or service
-    # model, as far as can be told while files load.
-    def selection_of_model?(key, value)
-      if key.is_a?(Class)
-        return true unless [Module, InstanceRequirements, Models::BoundDataService].any? { |kind| value.is_a?(kind) }
-
-        component = InstanceRequirements.from(value).component_model
-        component.is_a?(Class) && component <= key
-      else
-        !(key.is_a?(Models::DataServiceModel) && value.is_a?(Models::DataServiceModel)) || value.fullfills?(key)
-      end
-    end
-
-    def check_value(value, key, location)
-      return value if value.equal?(NOTHING) || value.equal?(DO_NOT_INHERIT) || InstanceRequirements.selectable?(value)
-
-      what = key ? "for #{key_name(key)}" : 'as a default'
-      raise DeclarationError.new(
-        "use cannot select #{Arguments.shown(value)} #{what}: it is not a model, device or definition",
-        location: location,
-        hint: 'select a task or composition model, a data service, a device (Base.gps_dev), a definition ' \
-              '(Base.x_def) or a requirement (Model.with_arguments(...))'
-      )
     end
   end
 end

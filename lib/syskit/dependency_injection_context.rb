@@ -5,36 +5,73 @@ module Syskit
   # profile's (its robot's devices, used profiles, +use+ statements),
   # then each enclosing requirement's +use+, later ones winning. Each
   # layer resolves its defaults against its own explicit keys
-  # first, as Syskit does. A frozen value; #with and #mask return new ones.
+  # first, as Syskit does. #with and #mask return new contexts; Syskit's
+  # #push and #pop change this one (EMPTY is frozen).
   class DependencyInjectionContext
-    # Roots of the model hierarchies: fullfilled by everything, never a
-    # key of a default selection.
-    def self.ignored_models
-      [Syskit::DataService, Syskit::Device, Syskit::ComBus, Syskit::AbstractComponent, Syskit::Component,
-       Syskit::TaskContext, Syskit::Composition]
-    end
-
     attr_reader :state
 
-    # +locations+: where each key was selected (the +use+ statement).
+    # Syskit's +DependencyInjectionContext.new(injection, ...)+: the given
+    # layers (DependencyInjection values, or hashes of selections as +use+
+    # takes them), later ones winning.
+    def self.new(*injections)
+      injections.reduce(resolved({}, {})) do |context, injection|
+        injection = DependencyInjection.new(injection) if injection.is_a?(Hash)
+        context.with(injection)
+      end
+    end
+
+    # The context of a resolved +state+; +locations+: where each key was
+    # selected (the +use+ statement).
+    def self.resolved(state, locations)
+      context = allocate
+      context.send(:initialize, state, locations)
+      context
+    end
+
     def initialize(state = {}, locations = {})
       @state = state.freeze
       @locations = locations.freeze
-      freeze
+      @stack = []
     end
 
-    EMPTY = new
+    EMPTY = resolved({}, {}).freeze
+
+    # Adds the layer +injection+ on top (Syskit's +push+).
+    def push(injection)
+      @stack.push([state, @locations])
+      pushed = with(injection)
+      @state = pushed.state
+      @locations = pushed.locations
+      self
+    end
+
+    # Removes the layer pushed last.
+    def pop
+      @state, @locations = @stack.pop
+      self
+    end
+
+    # The selections in effect, as one injection (Syskit's +current_state+).
+    def current_state
+      DependencyInjection.of(state)
+    end
+
+    # What is selected for the child +name+ requiring +requirements+ (see
+    # DependencyInjection#selection_for).
+    def selection_for(name, requirements)
+      current_state.selection_for(name, requirements)
+    end
 
     def with(injection)
       return self if injection.nil? || injection.empty?
 
       # A model selected for itself (what a default gives) does not
       # undo what an earlier layer selected for it, as in Syskit.
-      added = DependencyInjectionContext.resolve_defaults(injection).reject do |key, value|
-        value.equal?(key) && state.key?(key)
-      end
+      added = DependencyInjection.resolve_default_selections(injection.explicit, injection.defaults)
+      added = added.reject { |key, value| value.equal?(key) && state.key?(key) }
       locations = @locations.merge(added.transform_values { injection.declared_at })
-      DependencyInjectionContext.new(DependencyInjectionContext.follow_chains(state.merge(added)), locations)
+      DependencyInjectionContext.resolved(DependencyInjection.resolve_recursive_selection_mapping(state.merge(added)),
+                                          locations)
     end
 
     # The context without +keys+ (the selections a child used, which
@@ -42,7 +79,7 @@ module Syskit
     def mask(keys)
       return self if keys.empty?
 
-      DependencyInjectionContext.new(state.except(*keys), @locations)
+      DependencyInjectionContext.resolved(state.except(*keys), @locations)
     end
 
     # Where +key+ was selected.
@@ -51,8 +88,8 @@ module Syskit
     end
 
     # What is selected for the child +name+ requiring +models+: the value
-    # and the keys used ([nil, []] when nothing is selected).
-    def selection_for(name, models)
+    # as it was selected and the keys used ([nil, []] when nothing is).
+    def selected_value_for(name, models)
       if name && state.key?(name) && !state[name].equal?(DependencyInjection::DO_NOT_INHERIT)
         value = state[name]
         return [nil, [name]] if value.equal?(DependencyInjection::NOTHING)
@@ -62,7 +99,7 @@ module Syskit
 
       models.each do |model|
         value = state[model]
-        return [value, [model]] if value && !DependencyInjectionContext.placeholder?(value)
+        return [value, [model]] if value && !DependencyInjection.placeholder?(value)
       end
       [nil, []]
     end
@@ -70,52 +107,11 @@ module Syskit
     # The selection of a key (a model or tag), if any.
     def direct_selection_for(key)
       value = state[key]
-      value unless DependencyInjectionContext.placeholder?(value)
+      value unless DependencyInjection.placeholder?(value)
     end
 
-    # Whether +value+ says what not to select rather than what to select
-    # (nothing, do_not_inherit).
-    def self.placeholder?(value)
-      value.equal?(DependencyInjection::NOTHING) || value.equal?(DependencyInjection::DO_NOT_INHERIT)
-    end
+    protected
 
-    # Explicit selections, with the defaults added under each model they
-    # fullfill that is not selected explicitly and that no other default
-    # fullfills too.
-    def self.resolve_defaults(injection)
-      result = injection.explicit.dup
-      return result if injection.defaults.empty?
-
-      found = {}
-      ambiguous = {}
-      injection.defaults.each do |value|
-        InstanceRequirements.fullfilled_models_of(value).each do |model|
-          next if ignored_models.include?(model) || result.key?(model) || ambiguous.key?(model)
-
-          if found.key?(model) && !found[model].equal?(value)
-            ambiguous[model] = found.delete(model)
-          else
-            found[model] = value
-          end
-        end
-      end
-      result.merge(found)
-    end
-
-    # A selection whose value is itself a selected key (Srv => Task,
-    # Task => Task.with_arguments(...)) follows the chain.
-    def self.follow_chains(state)
-      state.transform_values do |value|
-        seen = []
-        while (value.is_a?(Module) || value.is_a?(Actions::Profile::Tag)) && state.key?(value) && !seen.include?(value)
-          seen << value
-          next_value = state[value]
-          break if DependencyInjectionContext.placeholder?(next_value) || next_value.equal?(value)
-
-          value = next_value
-        end
-        value
-      end
-    end
+    attr_reader :locations
   end
 end

@@ -3,6 +3,7 @@
 require 'syskit/models/fullfillment'
 require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
+require 'syskit/models/faceted_access'
 
 module Syskit
   # What a network must contain, as Syskit's InstanceRequirements: a model
@@ -26,20 +27,20 @@ module Syskit
     NO_HINTS = [].freeze
     DEFAULT_CONF = ['default'].freeze
     FIELDS = %i[models device service profile name arguments conf conf_location deployment_hints deployment
-                selections specialization_hints declared_at instance].freeze
+                selections specialization_hints declared_at instance abstract doc].freeze
 
     # +instance+: a task of the network being generated, when these
     # requirements select it (a composition's child given to another);
     # +conf_location+: where the sections were chosen (with_conf).
     attr_reader :device, :service, :profile, :name, :arguments, :deployment, :selections,
-                :specialization_hints, :declared_at, :instance, :conf_location
+                :specialization_hints, :declared_at, :instance, :conf_location, :doc
 
     # What stands for requirements besides models and lists of them (see
     # .from): requirements, a model's service, a device, a tag, a
     # composition's child, a task of the network being generated.
     def self.selectable_kinds
       [InstanceRequirements, Models::DataServiceModel, Robot::MasterDeviceInstance, Models::BoundDataService,
-       Models::ChildReference, Actions::Profile::Tag, AbstractComponent]
+       Models::ChildReference, Actions::Profile::Tag, AbstractComponent, Syskit::BoundDataService]
     end
 
     # Whether +value+ can stand for a component in a network (what +use+
@@ -60,6 +61,8 @@ module Syskit
       when Robot::MasterDeviceInstance then new(device: value, declared_at: value.declared_at)
       when Models::BoundDataService then new([value.task_model], service: value, declared_at: location)
       when AbstractComponent then new([value.model], instance: value, declared_at: location)
+      when Syskit::BoundDataService
+        new([value.component.model], service: value.model, instance: value.component, declared_at: location)
       when Array then new(value.map { |v| from(v, location: location).models }.flatten.uniq, declared_at: location)
       else new([value], declared_at: location)
       end
@@ -74,7 +77,7 @@ module Syskit
     def initialize(models = nil, device: nil, service: nil, profile: nil, name: nil, arguments: NO_ARGUMENTS,
                    conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil,
                    selections: DependencyInjection::EMPTY, specialization_hints: NO_HINTS, declared_at: nil,
-                   instance: nil, open: false)
+                   instance: nil, abstract: false, doc: nil, open: false)
       @models = models&.freeze
       @device = device
       @service = service
@@ -89,6 +92,8 @@ module Syskit
       @specialization_hints = specialization_hints
       @declared_at = declared_at
       @instance = instance
+      @abstract = abstract
+      @doc = doc
       readers = Readers.for(component_model)
       extend(readers) if readers
       freeze unless open
@@ -97,7 +102,31 @@ module Syskit
     # The required models: a component model and/or data service models;
     # a device's model for a device.
     def models
-      @models || [device.model]
+      @models || (device ? [device.model] : [])
+    end
+
+    # The component model, or the placeholder standing for it and the
+    # required services it does not provide (Syskit's +model+).
+    def model
+      component = component_model
+      return component if component && models.all? { |m| component.fullfills?(m) }
+
+      Models::Placeholder.for(models)
+    end
+
+    # The same requirements on +models+, without a selected service or task.
+    def with_models(models)
+      copy(models: models, service: nil, instance: nil)
+    end
+
+    # Equal when they ask for the same thing (where they are written aside).
+    def ==(other)
+      other.is_a?(InstanceRequirements) && other.compared == compared
+    end
+    alias eql? ==
+
+    def hash
+      compared.hash
     end
 
     # The task or composition model among the models (nil when only
@@ -110,8 +139,11 @@ module Syskit
       component_model.is_a?(Class) && component_model <= Composition
     end
 
-    # Whether something must still be chosen to fill these requirements.
+    # Whether something must still be chosen to fill these requirements:
+    # when marked so (#abstract), or when they require services only or
+    # an abstract model.
     def abstract?
+      return true if @abstract
       return false if device || instance
 
       model = component_model
@@ -173,6 +205,28 @@ module Syskit
       self
     end
 
+    # These requirements seen through +models+ (models they fullfill): the
+    # selected service seen as them, else a Models::FacetedAccess.
+    def as(models)
+      return copy(service: service.as(models)) if service
+
+      Models::FacetedAccess.new(self, Models::Placeholder.for(Array(models)))
+    end
+
+    # Syskit's +instanciate+: the task these requirements stand for, its
+    # children selected in +context+ (a DependencyInjectionContext), added
+    # to +plan+ with them (see Network::Instantiate.into_plan).
+    # +task_arguments+ are the root task's arguments (+conf:+ its
+    # sections); +specialization_hints+ the specializations to prefer.
+    def instanciate(plan, context = DependencyInjectionContext::EMPTY, task_arguments: {}, specialization_hints: [])
+      arguments = task_arguments.dup
+      conf = Array(arguments.delete(:conf))
+      requirements = with_arguments(**arguments)
+      requirements = requirements.with_conf(*conf) unless conf.empty?
+      requirements = requirements.prefer_specializations(specialization_hints) unless specialization_hints.empty?
+      Network::Instantiate.into_plan(plan, requirements, context)
+    end
+
     # The child +name+ of the composition model (as +Cmp.use(...).x_child+).
     def find_child(name)
       component_model.respond_to?(:find_child) ? component_model.find_child(name) : nil
@@ -212,6 +266,10 @@ module Syskit
 
     protected
 
+    def compared
+      (FIELDS - %i[declared_at conf_location doc]).map { |f| instance_variable_get(:"@#{f}") }
+    end
+
     # A definition's or a device's action, by the name of its profile.
     def action_name
       profile ? "#{profile.name}.#{name}" : name
@@ -237,8 +295,8 @@ module Syskit
       return selections if other.selections.empty?
       return other.selections if selections.empty?
 
-      DependencyInjection.new(selections.explicit.merge(other.selections.explicit),
-                              selections.defaults + other.selections.defaults, other.selections.declared_at)
+      DependencyInjection.of(selections.explicit.merge(other.selections.explicit),
+                             selections.defaults | other.selections.defaults, other.selections.declared_at)
     end
 
     def copy(**changes)
@@ -248,7 +306,7 @@ module Syskit
       values[:specialization_hints] ||= NO_HINTS
       own_models = values.delete(:models)
       models = changes.delete(:models) { own_models }
-      InstanceRequirements.new(models, **values, **changes)
+      changes.delete(:class) { self.class }.new(models, **values, **changes)
     end
   end
 end

@@ -34,14 +34,6 @@ module Syskit
       # Where the model was declared.
       attr_reader :declared_at
 
-      # A model made in Ruby: +Generator.new_submodel { output_port ... }+.
-      def new_submodel(name: nil, &block)
-        model = Class.new(self)
-        model.instance_variable_set(:@given_name, name) if name
-        model.class_eval(&block) if block
-        model
-      end
-
       # The constant's name, else the one given to new_submodel.
       def name
         Module.instance_method(:name).bind_call(self) || @given_name || "anonymous ruby task (#{declared_at})"
@@ -75,6 +67,12 @@ module Syskit
       end
 
       private
+
+      # Its submodels are declared in Ruby through #inherited (see
+      # Models::Component#new_submodel).
+      def submodel_class
+        Class.new(self)
+      end
 
       def inherited(submodel)
         super

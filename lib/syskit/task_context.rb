@@ -13,18 +13,17 @@ module Syskit
   class TaskContext < Component
     extend Models::TaskContext
 
-    # A task model made in Ruby, as Syskit's tests make them:
+    # A task model made in Ruby, as Syskit's tests make them (see
+    # Models::Component#new_submodel):
     # +Syskit::TaskContext.new_submodel { input_port 'in', '/double' }+ is
     # a RubyTaskContext; +OroGen.lib.Task.new_submodel { ... }+ a submodel
     # of that task model, with the ports and properties its block adds.
-    def self.new_submodel(name: nil, &block)
-      return RubyTaskContext.new_submodel(name: name, &block) if equal?(TaskContext)
+    def self.submodel_class
+      return Class.new(RubyTaskContext) if equal?(TaskContext)
 
-      model = RubyTaskContext.declared_in_ruby(Class.new(self), Location.of_caller)
-      model.instance_variable_set(:@given_name, name) if name
-      model.class_eval(&block) if block
-      model
+      RubyTaskContext.declared_in_ruby(Class.new(self), Location.of_caller)
     end
+    private_class_method :submodel_class
 
     # Most tasks never create a port: they share this until they do.
     NO_PORTS = {}.freeze
@@ -57,10 +56,6 @@ module Syskit
       @connections = NO_CONNECTIONS
       @conf = Robot::MasterDeviceInstance::DEFAULT_CONF
       assign_arguments(arguments)
-    end
-
-    def model
-      self.class
     end
 
     # The ports created at configure time, by name.
@@ -170,7 +165,7 @@ module Syskit
     end
 
     def find_port(name)
-      created_ports[name.to_s] || model.find_port(name)
+      created_ports[name.to_s] || model.ports[name.to_s]
     end
 
     # The port +name+ of this task (+task.out_port+), which knows what it

@@ -42,9 +42,9 @@ module Syskit
 
     def test_connections_follow_an_overload_in_a_submodel
       parent, model = overloaded_pose_child
-      assert_same model.pose_child, model.connections.first.from.child
+      assert_same model.pose_child, model.port_connections.first.from.child
       assert model.pose_child.odometry_port.connected_to?(model.follow_child.pose_port)
-      assert_same parent.pose_child, parent.connections.first.from.child
+      assert_same parent.pose_child, parent.port_connections.first.from.child
     end
 
     # The child keeps the ports of what it was required as, mapped onto

@@ -100,7 +100,7 @@ module Syskit
       end
       assert_match(/chase_child.src_child.pose_port is a port of a child of the child composition/, error.message)
       assert_match(/export it from Rig::Compositions::Chase/, error.hint)
-      assert_equal 1, Rig::Compositions::Chase.connections.size
+      assert_equal 1, Rig::Compositions::Chase.port_connections.size
     end
 
     def test_a_grandchild_s_port_is_no_port_of_the_outer_composition

@@ -20,7 +20,7 @@ module Syskit
     end
 
     def context(*mappings)
-      DependencyInjectionContext::EMPTY.with(DependencyInjection::EMPTY.add(mappings, nil))
+      DependencyInjectionContext::EMPTY.with(DependencyInjection.new(*mappings))
     end
 
     def selected(context, child = @watch.pose_child)
@@ -47,8 +47,15 @@ module Syskit
     end
 
     def test_nothing_keeps_the_child_s_own_model
-      result = selected(context({ 'pose' => DependencyInjection.nothing, Rig::Services::Pose => OroGen.rig.Tracker }))
+      result = selected(context({ 'pose' => DependencyInjection.nothing,
+                                  Rig::Services::Pose => OroGen.rig.Tracker.front_pose_srv }))
       assert_equal [Rig::Services::Pose], result.models
+    end
+
+    # As Syskit's: a component selected for a service it provides twice
+    # does not say which one.
+    def test_a_component_providing_a_service_twice_is_ambiguous_for_it
+      assert_raises(AmbiguousServiceSelection) { context({ Rig::Services::Pose => OroGen.rig.Tracker }) }
     end
 
     def test_a_selection_does_not_apply_again_inside_what_it_selected
@@ -58,18 +65,18 @@ module Syskit
         provides Rig::Services::Pose, as: 'pose_out'
       end
       ctx = context({ Rig::Services::Pose => nested })
-      _, used = ctx.selection_for('pose', [Rig::Services::Pose])
+      _, used = ctx.selected_value_for('pose', [Rig::Services::Pose])
       inner = ctx.mask(used)
-      assert_nil inner.selection_for('pose', [Rig::Services::Pose]).first
+      assert_nil inner.selected_value_for('pose', [Rig::Services::Pose]).first
     end
 
     def test_grandchildren_are_selected_by_dotted_names
-      injection = DependencyInjection::EMPTY.add([{ 'watch.pose' => OroGen.rig.Tracker, 'other' => @watch }], nil)
+      injection = DependencyInjection.new({ 'watch.pose' => OroGen.rig.Tracker, 'other' => @watch })
       assert_equal({ 'pose' => OroGen.rig.Tracker }, injection.grandchild_selections('watch'))
     end
 
     def test_keys_are_child_names_or_models
-      error = assert_raises(DeclarationError) { DependencyInjection::EMPTY.add([{ 42 => OroGen.rig.Tracker }], nil) }
+      error = assert_raises(DeclarationError) { DependencyInjection.new({ 42 => OroGen.rig.Tracker }) }
       assert_match(/use cannot select for 42: keys are child names or models/, error.message)
     end
 
@@ -99,8 +106,8 @@ module Syskit
     def test_a_default_does_not_undo_an_outer_selection_of_its_model
       front = OroGen.rig.Tracker.front_pose_srv
       layered = DependencyInjectionContext::EMPTY
-                .with(DependencyInjection::EMPTY.add([{ Rig::Services::Pose => front }], nil))
-                .with(DependencyInjection::EMPTY.add([Rig::Services::Pose, { 'name' => Rig::Services::Pose }], nil))
+                .with(DependencyInjection.new({ Rig::Services::Pose => front }))
+                .with(DependencyInjection.new(Rig::Services::Pose, { 'name' => Rig::Services::Pose }))
       assert_same front, layered.direct_selection_for(Rig::Services::Pose)
       assert_same front, layered.state['name']
     end
@@ -108,7 +115,7 @@ module Syskit
     def test_do_not_inherit_falls_back_to_the_selection_by_model
       rear = OroGen.rig.Tracker.rear_pose_srv
       outer = context({ 'pose' => OroGen.rig.Tracker.front_pose_srv, Rig::Services::Pose => rear })
-      inner = outer.with(DependencyInjection::EMPTY.add([{ 'pose' => DependencyInjection.do_not_inherit }], nil))
+      inner = outer.with(DependencyInjection.new({ 'pose' => DependencyInjection.do_not_inherit }))
       assert_same rear, selected(inner).service
     end
 

@@ -41,10 +41,10 @@ module Syskit
       assert_nil follower.find_data_service_from_type(Rig::Services::Pose)
       rear = Rig::Profiles::Base.tracker_def.rear_pose_srv
       assert_same rear, rear.find_data_service_from_type(Rig::Services::Pose)
-      error = assert_raises(DeclarationError) do
+      error = assert_raises(AmbiguousServiceSelection) do
         Rig::Profiles::Base.tracker_def.find_data_service_from_type(Rig::Services::Pose)
       end
-      assert_match(/provides Rig::Services::Pose several times \(front_pose, rear_pose\)/, error.message)
+      assert_match(/several services of type Rig::Services::Pose: front_pose, rear_pose/, error.message)
       assert_equal File.expand_path(__FILE__), error.location.path
     end
 
@@ -96,6 +96,32 @@ module Syskit
                     'models/profiles/base.rb:11: use_group in profile Rig::Profiles::Base',
                     'models/profiles/base.rb:12: use_deployment on rig::Tracker (deployment groups)'], warnings
       assert_equal %w[tracker], plan_of(app, 'tracker_def').tasks.map(&:name)
+    end
+
+    # As Syskit's requirements: marked abstract on request, equal when they
+    # ask for the same thing, their model a placeholder when they name
+    # services only; a service found by type is ambiguous when a required
+    # service model provides it too.
+    def test_requirements_made_in_ruby
+      pose = DataService.new_submodel(name: 'Pose')
+      task = Component.new_submodel { provides pose, as: 'fix' }
+      assert task.to_instance_requirements.abstract.abstract?
+      refute task.to_instance_requirements.abstract?
+      assert_equal InstanceRequirements.new([task]), task.to_instance_requirements
+      refute_equal task.to_instance_requirements, task.with_arguments(x: 1)
+      assert_equal pose.placeholder_model, pose.to_instance_requirements.model
+      assert_same task, InstanceRequirements.new([task]).model
+      assert_equal task.fix_srv, task.new.fix_srv.model
+    end
+
+    def test_a_service_both_required_and_provided_is_ambiguous
+      pose = DataService.new_submodel(name: 'Pose')
+      odometry = DataService.new_submodel(name: 'Odometry') { provides pose }
+      task = Component.new_submodel { provides pose, as: 'fix' }
+      assert_equal [], InstanceRequirements.new.models
+      assert_raises(AmbiguousServiceSelection) do
+        InstanceRequirements.new([task, odometry]).find_data_service_from_type(pose)
+      end
     end
   end
 end

@@ -35,10 +35,12 @@ module Syskit
       assert @base.has_definition?('watch')
       refute @base.has_definition?('drive')
       assert_same @base.watch_def, @base.find_definition_by_name('watch')
-      assert_same @base.watch_def, @base.definition('watch_def')
-      assert_same @base.watch_def, @base.resolved_definition('watch')
+      assert_equal @base.watch_def, @base.definition('watch_def')
+      refute_same @base.definition('watch'), @base.definition('watch')
+      assert_equal @base.watch_def, @base.resolved_definition('watch')
       assert_nil @base.find_definition_by_name('drive')
-      assert_equal %w[watch_def blind_def tuned_def], @base.each_definition.map(&:name)
+      assert_equal %w[watch blind tuned], @base.each_definition.map(&:name)
+      assert_equal 'Rig::Profiles::Base.watch_def', @base.watch_def.to_s
     end
 
     def test_an_unknown_definition_is_a_located_error_listing_the_known_ones
@@ -64,7 +66,7 @@ module Syskit
       refute @generic.uses_profile?(@base)
       assert_equal [@generic], @base.each_used_profile.to_a
       assert_equal [@generic], @base.all_used_profiles
-      assert_equal %w[gps_dev left_wheel_dev right_wheel_dev watch_def blind_def tuned_def],
+      assert_equal %w[gps_dev left_wheel_dev right_wheel_dev watch blind tuned],
                    @base.each_action.map(&:name)
     end
 

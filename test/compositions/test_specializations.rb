@@ -50,8 +50,8 @@ module Syskit
       spec = @model.specialize @model.pose_child => Rig::Services::Odometry do
         pose_child.odometry_port.connect_to follow_child.pose_port
       end
-      assert_equal 1, spec.composition_model.connections.size
-      assert_empty @model.connections
+      assert_equal 1, spec.composition_model.port_connections.size
+      assert_empty @model.port_connections
     end
 
     def test_specializations_that_apply_together_are_merged
@@ -59,10 +59,10 @@ module Syskit
       odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry) { export pose_child.odometry_port }
       speed = @model.specialize(@model.speed_child => OroGen.rig.Splitter) { export speed_child.left_port }
       source = odometry_source
-      splitter = OroGen.rig.Splitter
-      splitter.provides(Rig::Services::SpeedSource, as: 'left_speed', 'speed_out' => 'left') unless
-        splitter.find_service('left_speed')
-      narrowed = @model.narrow('pose' => source, 'speed' => splitter)
+      follower = OroGen.rig.Splitter
+      follower.provides(Rig::Services::SpeedSource, as: 'left_speed', 'speed_out' => 'left') unless
+        follower.find_service('left_speed')
+      narrowed = @model.narrow('pose' => source, 'speed' => follower)
       assert_equal [odometry, speed], narrowed.applied_specializations
       assert_equal %w[left odometry], narrowed.ports.keys.sort
       assert_equal %w[left odometry], narrowed.each_port.map(&:name).sort
@@ -88,6 +88,37 @@ module Syskit
       @model.specialize(@model.pose_child => Rig::Services::Odometry)
       error = assert_raises(DeclarationError) { @model.specialize(@model.pose_child => Composition) }
       assert_match(/not symmetric/, error.message)
+    end
+
+    def test_specializations_record_those_the_constraints_let_them_combine_with
+      @model.add_specialization_constraint { |a, b| a.specialized_children.keys != b.specialized_children.keys }
+      odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      follower = @model.specialize(@model.follow_child => OroGen.rig.Follower.new_submodel)
+      tracker = @model.specialize(@model.pose_child => OroGen.rig.Tracker)
+      assert_equal [follower].to_set, odometry.compatibilities
+      assert_equal [odometry, tracker].to_set, follower.compatibilities
+      assert odometry.compatible_with?(follower)
+      refute odometry.compatible_with?(tracker)
+    end
+
+    def test_an_empty_specialization_is_compatible_with_any
+      empty = Models::CompositionSpecialization.new
+      assert empty.empty?
+      assert empty.compatible_with?(Models::CompositionSpecialization.new('pose' => Rig::Services::Odometry))
+    end
+
+    def test_a_specialization_value_merges_others
+      pose = Models::CompositionSpecialization.new('pose' => Rig::Services::Odometry)
+      follow = Models::CompositionSpecialization.new('follow' => [OroGen.rig.Follower])
+      shared = Object.new
+      pose.compatibilities << shared << Object.new
+      follow.compatibilities << shared
+      follow.merge(pose)
+      assert_equal [shared, pose].to_set, follow.compatibilities
+      assert_equal({ 'follow' => [OroGen.rig.Follower], 'pose' => Rig::Services::Odometry },
+                   follow.specialized_children)
+      assert follow.weak_match?('pose' => [Rig::Services::Odometry], 'other' => OroGen.rig.Splitter)
+      refute follow.weak_match?('pose' => Rig::Services::Pose)
     end
 
     def test_a_child_may_be_named_by_the_model_it_requires

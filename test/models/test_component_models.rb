@@ -17,10 +17,6 @@ module Syskit
       assert_kind_of model, model.new
     end
 
-    def test_an_anonymous_component_model_says_where_it_was_made
-      assert_match(/anonymous component \(.*test_component_models.rb:\d+\)/, Component.new_submodel.to_s)
-    end
-
     def test_a_component_model_knows_its_submodels_until_it_clears_them
       root = Component.new_submodel
       child = root.new_submodel

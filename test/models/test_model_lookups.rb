@@ -81,6 +81,23 @@ module Syskit
       refute Syskit::Device.new_submodel.name
     end
 
+    # Every component model makes submodels the same way: Component itself
+    # (a plain component providing services), compositions, task contexts.
+    def test_component_models_make_named_submodels_with_their_block
+      component = Syskit::Component.new_submodel(name: 'Plain') { provides MyApp::Pose, as: 'pose' }
+      assert_operator component, :<, Syskit::Component
+      assert_equal 'Plain', component.name
+      assert_equal MyApp::Pose, component.pose_srv.model
+      assert_equal 'Plain', component.new_submodel(name: 'Plain').name
+      refute Syskit::Component.new_submodel.name
+      cmp = Syskit::Composition.new_submodel(name: 'Cmp') { add MyApp::Pose, as: 'pose' }
+      assert_equal ['pose'], cmp.child_names
+      assert_equal 'Cmp', cmp.name
+      task = Syskit::TaskContext.new_submodel(name: 'Task') { output_port 'out', '/double' }
+      assert_operator task, :<, Syskit::RubyTaskContext
+      assert_equal %w[Task out], [task.name, task.new_submodel.find_output_port('out').name]
+    end
+
     def test_a_bus_submodel_needs_a_message_type_of_its_own_or_of_its_parent
       assert_equal '/double', MyApp::Devices::Serial.new_submodel.message_type.name
       assert_equal '/int32_t', Syskit::ComBus.new_submodel(message_type: '/int32_t').message_type.name

@@ -2,6 +2,7 @@
 
 require 'syskit/actions/profile_definitions'
 require 'syskit/actions/profile/queries'
+require 'syskit/actions/profile/definition'
 
 module Syskit
   module Actions
@@ -19,31 +20,57 @@ module Syskit
 
       attr_reader :namespace, :robot, :declared_at
 
+      # The profiles made by the profile statement or with +register: true+
+      # (the modules, for profiles of modules), as Syskit's
+      # +Profile.each_submodel+. Held weakly: a profile of an unloaded app
+      # goes with it.
+      def self.each_submodel(&block)
+        return enum_for(__method__) unless block
+
+        registered.each_key(&block)
+      end
+
+      def self.register_submodel(profile)
+        registered[profile] = true
+      end
+
+      def self.registered
+        @registered ||= ObjectSpace::WeakMap.new
+      end
+      private_class_method :registered
+
       # The profile of +mod+, making it one if it is not yet.
       def self.for_module(mod, location)
         existing = mod.instance_variable_get(:@syskit_profile)
         return existing if existing
 
-        profile = new(mod, location)
+        profile = new(namespace: mod, location: location)
         mod.instance_variable_set(:@syskit_profile, profile)
         mod.extend(ModuleMethods)
+        register_submodel(mod)
         Syskit.app&.register_profile(profile)
         profile
       end
 
-      def initialize(namespace, location)
-        @namespace = namespace
+      # A profile named +name+ (Syskit's +Profile.new(name, register:)+),
+      # its actions methods of its own (+profile.x_def+); or the profile
+      # of the module +namespace+, whose actions are the module's methods.
+      def initialize(name = nil, register: false, namespace: nil, location: Location.of_caller)
+        @given_name = name
+        @namespace = namespace || self
         @declared_at = location
         @robot = Robot::Definition.new(self)
+        Profile.register_submodel(self) if register
       end
 
       def name
-        namespace.name
+        namespace.equal?(self) ? @given_name : namespace.name
       end
 
       def to_s
         name || 'anonymous profile'
       end
+      alias inspect to_s
 
       # Evaluates a robot block.
       def robot_block(&block)
@@ -55,6 +82,8 @@ module Syskit
       # method, which finds the device from the name it is called by.
       def define_device_action(device)
         action = "#{device.name}_dev"
+        return define_singleton_method(action) { find_action(action) } if namespace.equal?(self)
+
         namespace.singleton_class.send(:alias_method, action, :syskit_device_action)
         namespace.singleton_class.send(:public, action)
       end
@@ -92,7 +121,7 @@ module Syskit
       end
 
       def definition_requirements
-        definitions.each_value.map(&:requirements)
+        definitions.values
       end
 
       # The action of +device+ (see InstanceRequirements): left unfrozen, so
@@ -166,7 +195,7 @@ module Syskit
         end
 
         def use(*mappings)
-          syskit_profile.use(mappings, location: Location.of_caller)
+          syskit_profile.use(*mappings)
           self
         end
 

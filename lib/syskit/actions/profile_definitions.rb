@@ -32,7 +32,7 @@ module Syskit
         end
 
         def to_s
-          "#{profile.name}.#{name}_tag"
+          "#{profile}.#{name}_tag"
         end
         alias inspect to_s
       end
@@ -42,9 +42,6 @@ module Syskit
       # +Base.arm_control_def+), tags, the profiles it uses and its own
       # dependency injection (+use Services::Pose => OroGen.gps.Task+).
       module Definitions
-        # A definition: its requirements (named +name_def+) and documentation.
-        Definition = Struct.new(:name, :requirements, :doc, :declared_at)
-
         TRANSFORM_EXAMPLE = "transform_names: ->(name) { \"left_\#{name}\" }"
 
         # Definitions by name, in declaration order (those of used profiles
@@ -68,7 +65,9 @@ module Syskit
           @selections || DependencyInjection::EMPTY
         end
 
-        def define(name, requirements, location:, doc: nil)
+        # Defines +name_def+: +requirements+ under the name +name+ (see
+        # Definition), returned.
+        def define(name, requirements, location: Location.of_caller, doc: nil)
           name = Arguments.name(name, statement: 'define', what: 'a definition name', pattern: Arguments::METHOD_NAME,
                                       example: "define 'arm_control', Compositions::ArmControl")
           return not_modelled_definition(name, location) if Compat::Ignored === requirements # rubocop:disable Style/CaseEquality
@@ -93,17 +92,33 @@ module Syskit
         end
 
         def register_definition(name, requirements, doc, location)
-          named = requirements.named("#{name}_def", self, location)
-          definitions[name] = Definition.new(name, named, doc, location)
+          definition = requirements.named(name, self, location, doc: doc)
+          definitions[name] = definition
           define_definition_action(name)
-          named
+          definition
         end
 
         # The definition +name+ ('arm_control' or 'arm_control_def').
         def find_definition(name)
-          definitions[name.to_s.delete_suffix('_def')]&.requirements
+          definitions[name.to_s.delete_suffix('_def')]
         end
         alias find_definition_by_name find_definition
+
+        # A copy of the definition +name+ ('drive' or 'drive_def'; Syskit's
+        # +definition+), a new one each time; an UnknownName error naming
+        # the known ones when there is none. Its requirements are resolved
+        # in this profile (its selections, devices and tags) when they are
+        # instantiated: +resolved_definition+ is the same.
+        def definition(name)
+          found = find_definition(name)
+          return found.dup if found
+
+          known = definitions.keys
+          raise UnknownName.new("#{self} has no definition '#{name}'#{Naming.did_you_mean(name.to_s, known)}",
+                                location: Location.of_caller,
+                                hint: known.empty? ? "#{self} defines none" : "its definitions: #{known.join(', ')}")
+        end
+        alias resolved_definition definition
 
         def has_definition?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
           definitions.key?(name.to_s.delete_suffix('_def'))
@@ -112,13 +127,13 @@ module Syskit
         def each_definition(&block)
           return enum_for(__method__) unless block
 
-          definitions.each_value { |d| yield d.requirements }
+          definitions.each_value(&block)
         end
 
-        def tag(name, models, location:)
+        def tag(name, *models, location: Location.of_caller)
           name = Arguments.name(name, statement: 'tag', what: 'a tag name', pattern: Arguments::METHOD_NAME,
                                       example: "tag 'localization', Services::Pose")
-          models = Array(models)
+          models = models.flatten
           if models.empty? || !models.all? { |m| m.is_a?(Models::DataServiceModel) || (m.is_a?(Class) && m < Component) }
             raise DeclarationError.new("tag '#{name}' expects data service or component models",
                                        location: location, hint: "write tag '#{name}', Services::Pose")
@@ -135,8 +150,8 @@ module Syskit
         end
 
         # Adds selections every definition of the profile uses.
-        def use(mappings, location:)
-          @selections = selections.add(mappings, location)
+        def use(*mappings)
+          @selections = selections.dup.add(*mappings).freeze
           @dependency_injection_context = nil
           self
         end
@@ -145,7 +160,7 @@ module Syskit
         # profile's; +tags+ select components for its tags (by tag name or
         # tag object); +transform_names+, when given, names each definition
         # here from its name there.
-        def use_profile(profile, tags = {}, location:, transform_names: nil)
+        def use_profile(profile, tags = {}, location: Location.of_caller, transform_names: nil)
           profile = profile.syskit_profile if profile.respond_to?(:syskit_profile)
           unless profile.is_a?(Profile)
             raise DeclarationError.new("use_profile expects a profile, got #{Arguments.shown(profile)}",
@@ -156,7 +171,7 @@ module Syskit
           used_profiles << [profile, tag_selections, location]
           robot.use_robot(profile.robot)
           profile.definitions.each_value do |definition|
-            requirements = definition.requirements
+            requirements = definition
             requirements = requirements.use(tag_selections) unless tag_selections.empty?
             name = transformed_name(definition.name, transform_names, location)
             register_definition(name, requirements, definition.doc, definition.declared_at)
@@ -203,7 +218,7 @@ module Syskit
           selected = by_model.filter_map do |model, devices|
             [model, requirement_for(devices.first)] if devices.size == 1
           end
-          DependencyInjection.new(selected.to_h)
+          DependencyInjection.of(selected.to_h)
         end
 
         def resolve_tag_selection(profile, tags, location)
@@ -243,7 +258,7 @@ module Syskit
 
         def define_definition_action(name)
           definitions = self.definitions
-          define_action("#{name}_def") { definitions.fetch(name).requirements }
+          define_action("#{name}_def") { definitions.fetch(name) }
         end
 
         # A method of the profile module (+Base.arm_control_def+).

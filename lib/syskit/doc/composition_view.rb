@@ -39,7 +39,7 @@ module Syskit
       end
 
       def connections
-        model.connections.map do |c|
+        model.port_connections.map do |c|
           policy = Render::Output.policy(c.policy.empty? ? { 'type' => 'data' } : c.policy, +'')
           Connection.new("#{c.from.child_name}.#{c.from.name}", "#{c.to.child_name}.#{c.to.name}", policy)
         end
@@ -56,7 +56,7 @@ module Syskit
       # Definitions of the app's profiles whose model is this one.
       def definitions
         catalog.entries(:profile).flat_map do |entry|
-          entry.object.definitions.values.select { |d| d.requirements.component_model.equal?(model) }
+          entry.object.definitions.values.select { |d| d.component_model.equal?(model) }
                .map { |d| [entry, d] }
         end
       end

@@ -48,7 +48,7 @@ module Syskit
       # as [key, selected] pairs: the key's name, and the device selected
       # (a Robot::MasterDeviceInstance) or the name of what is.
       def selections(definition)
-        injection = definition.requirements.selections
+        injection = definition.selections
         explicit = injection.explicit.map { |k, v| [k.is_a?(String) ? k : k.to_s, selected(v)] }
         explicit + injection.defaults.map { |v| ['(default)', selected(v)] }
       end

@@ -51,20 +51,38 @@ module Syskit
         srv && copy(service: srv)
       end
 
-      # The service of the component model that provides +service_model+
-      # (the selected one, when it does): an error when several do.
+      # The service of the model that provides +service_model+ (the
+      # selected one, when it does; one of the placeholder standing for the
+      # required services when there is no component model): an
+      # AmbiguousServiceSelection when several do.
       def find_data_service_from_type(service_model)
-        return self if service&.fullfills?(service_model)
+        if service
+          return self if service.fullfills?(service_model)
 
-        model = component_model
-        candidates = model.respond_to?(:services_fulfilling) ? model.services_fulfilling(service_model) : []
-        candidates = candidates.select(&:master?)
-        return copy(service: candidates.first) if candidates.size == 1
-        return nil if candidates.empty?
+          raise AmbiguousServiceSelection.new(
+            "#{self} selects #{service}, which is not a #{service_model}, and #{model} provides it too",
+            location: Location.of_caller, hint: "select the #{service_model} service of #{model}"
+          )
+        end
 
-        names = candidates.map(&:name)
-        raise DeclarationError.new("#{self} provides #{service_model} several times (#{names.join(', ')})",
-                                   location: Location.of_caller, hint: "select one: #{self}.#{names.first}_srv")
+        check_unambiguous_service(service_model)
+        found = model.find_data_service_from_type(service_model)
+        found && copy(service: found)
+      end
+
+      # A service model both the component model and a required service
+      # model provide does not say which service it is.
+      def check_unambiguous_service(service_model)
+        component = component_model
+        return unless component&.fullfills?(service_model)
+
+        also = models.grep(Models::DataServiceModel).find { |m| !component.fullfills?(m) && m.fullfills?(service_model) }
+        return unless also
+
+        raise AmbiguousServiceSelection.new(
+          "#{component} and #{also} both provide #{service_model} in #{self}",
+          location: Location.of_caller, hint: "select the #{service_model} service explicitly (x_srv)"
+        )
       end
 
       # Why +name+ is not a method of the requirements when it looks like

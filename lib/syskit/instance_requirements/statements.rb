@@ -55,7 +55,7 @@ module Syskit
                                      location: location, hint: 'call use on a composition model or its requirements')
         end
 
-        injection = selections.add(mappings, location)
+        injection = selections.dup.add(*mappings).freeze
         component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
         copy(selections: injection, declared_at: declared_at || location)
       end
@@ -98,6 +98,12 @@ module Syskit
         end
       end
 
+      # The same requirements, marked abstract: what fills them must still
+      # be chosen (Syskit's +abstract+).
+      def abstract
+        copy(abstract: true)
+      end
+
       # Without the arguments given so far.
       def with_no_arguments
         copy(arguments: NO_ARGUMENTS)
@@ -127,9 +133,9 @@ module Syskit
         copy(specialization_hints: specialization_hints + [hints])
       end
 
-      # A copy named +name+ in +profile+ (a definition).
-      def named(name, profile, location)
-        copy(name: name, profile: profile, declared_at: location)
+      # These requirements as the definition +name+ of +profile+.
+      def named(name, profile, location, doc: nil)
+        copy(class: Actions::Profile::Definition, name: name, profile: profile, declared_at: location, doc: doc)
       end
 
       private

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/bound_data_service_ports'
+require 'syskit/models/task_requirements'
 
 module Syskit
   module Models
@@ -11,6 +12,7 @@ module Syskit
     # lookups (+Task.gps_srv.pose_port+) are in BoundDataServicePorts.
     class BoundDataService
       include BoundDataServicePorts
+      include TaskRequirementStatements
 
       NO_OPTIONS = {}.freeze
       private_constant :NO_OPTIONS

@@ -21,12 +21,13 @@ module Syskit
         model.port_mappings_for(srv_model).transform_values { |name| port_mappings.fetch(name) }
       end
 
-      # +{service port name => task port}+: the task port behind each port
-      # of the service model, in its order. Syskit's lookups (find_port,
+      # +{service port name => task port}+: the task port (a Models::Port of
+      # the task model) behind each port of the service model, in its order. Syskit's lookups (find_port,
       # find_input_port, has_port?, each_port...) read it (PortLookup).
       def ports
-        task_ports = task_model.ports
-        model.ports.each_key.filter_map { |name| (task = port_mappings[name]) && [name, task_ports[task]] }.to_h
+        model.ports.each_key.filter_map do |name|
+          (task = port_mappings[name]) && [name, task_model.find_port(task)]
+        end.to_h
       end
 
       # The task port behind a port of the service model (a port object
@@ -45,7 +46,7 @@ module Syskit
       def find_port_for_task_port(task_port)
         task_port_name = task_port.respond_to?(:name) ? task_port.name : task_port.to_s
         srv_port_name, = port_mappings.find { |_, name| name == task_port_name }
-        model.find_port(srv_port_name) if srv_port_name
+        model.ports[srv_port_name] if srv_port_name
       end
 
       # The reader of a slave service, made when the slave is declared

@@ -32,6 +32,23 @@ module Syskit
         end
       end
 
+      # A submodel made in Ruby, as Syskit's tests and model helpers make
+      # them: +Syskit::Component.new_submodel(name: 'Cmp') { provides Srv,
+      # as: 'srv' }+. The one implementation behind every component
+      # model's new_submodel (task contexts, Ruby tasks, compositions): each
+      # says how its submodel class is made (#submodel_class).
+      def new_submodel(name: nil, &block)
+        model = submodel_class
+        model.instance_variable_set(:@given_name, name) if name
+        model.class_eval(&block) if block
+        model
+      end
+
+      # The model's constant name, else the one given to new_submodel.
+      def name
+        super || @given_name
+      end
+
       # Documentation of the model (the comment above its declaration).
       attr_writer :doc
 
@@ -39,6 +56,17 @@ module Syskit
         return @doc if text.nil?
 
         @doc = text.to_s
+      end
+
+      # Marks the model abstract: it stands for its submodels (and a
+      # composition's specializations), and cannot be put in a network as
+      # it is.
+      def abstract
+        @abstract = true
+      end
+
+      def abstract?
+        @abstract == true
       end
 
       # Whether it is a placeholder model (see Placeholder): a component
@@ -133,6 +161,11 @@ module Syskit
 
       private
 
+      # The class of a new submodel (see #new_submodel).
+      def submodel_class
+        Class.new(self)
+      end
+
       # A view computed once per +key+ (and +subkey+), until declarations change.
       def cached(key, subkey = nil)
         version = Component.declarations_version
@@ -166,8 +199,9 @@ module Syskit
         srv
       end
 
-      # +name_srv+ on the model, for a master service: Syskit's way of
-      # selecting one service of a component (+use('pose' => Task.gps_srv)+).
+      # +name_srv+ on the model and its tasks, for a master service:
+      # Syskit's way of selecting one service of a component
+      # (+use('pose' => Task.gps_srv)+).
       # Submodels inherit the reader and get their own (promoted) service.
       def define_service_reader(srv)
         return unless srv.master?
@@ -175,6 +209,7 @@ module Syskit
         reader = "#{srv.name}_srv"
         name = srv.full_name
         define_singleton_method(reader) { find_service(name) } unless singleton_class.method_defined?(reader, false)
+        define_method(reader) { find_data_service(name) } unless method_defined?(reader, false)
       end
 
       # A parent's service +srv+ as a service of this model, its master
@@ -220,11 +255,12 @@ module Syskit
       end
 
       def check_service_options(name, mappings, location)
-        # Syskit takes any identifier (common_models names services after
-        # their models: as: 'Test').
-        unless name.match?(/\A[A-Za-z_]\w*\z/)
+        # Syskit takes any name (common_models names services after their
+        # models: as: 'Test'; its tests after anonymous ones, as: srv.to_s)
+        # but a dot, which separates a slave's name from its master's.
+        if name.empty? || name.include?('.')
           raise DeclarationError.new("'#{name}' is not a valid service name",
-                                     location: location, hint: "use an identifier, e.g. as: 'gps'")
+                                     location: location, hint: "use a name without dots, e.g. as: 'gps'")
         end
         options = mappings.keys.grep(Symbol)
         return if options.empty?

@@ -43,20 +43,6 @@ module Syskit
         Models.register_model(submodel)
       end
 
-      # A composition model made in Ruby (+Syskit::Composition.new_submodel
-      # { add ... }+), named +name+ when given.
-      def new_submodel(name: nil, &block)
-        model = Class.new(self)
-        model.instance_variable_set(:@declared_at, Location.of_caller)
-        model.instance_variable_set(:@given_name, name) if name
-        model.class_eval(&block) if block
-        model
-      end
-
-      def name
-        super || @given_name
-      end
-
       # Its documentation: given with +doc+, else the comment block above
       # the class statement.
       def doc(text = nil)
@@ -75,16 +61,6 @@ module Syskit
 
       def short_name
         to_s
-      end
-
-      # Marks the model abstract: it stands for its submodels (and its
-      # specializations), and cannot be put in a network as it is.
-      def abstract
-        @abstract = true
-      end
-
-      def abstract?
-        @abstract == true
       end
 
       # Adds the child +as+ requiring +models+ (a task, composition, service

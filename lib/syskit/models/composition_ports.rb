@@ -116,21 +116,37 @@ module Syskit
         self
       end
 
-      # The connections between children, inherited ones included, between
-      # the ports of the children as this model has them.
-      def connections
-        inherited = superclass.respond_to?(:connections) ? superclass.connections : []
+      # The connections between children, one per pair of ports (a
+      # Connection, which knows where it was declared), inherited ones
+      # included, between the ports of the children as this model has them.
+      def port_connections
+        inherited = superclass.respond_to?(:port_connections) ? superclass.port_connections : []
         (inherited + (@connections || [])).map do |c|
           from = current_port(c.from)
           to = current_port(c.to)
           from.equal?(c.from) && to.equal?(c.to) ? c : Connection.new(from, to, c.policy, c.location)
         end
       end
-      alias each_explicit_connection connections
+
+      # Syskit's view of the connections: by pair of child names, the
+      # connected port names and their policy,
+      # +{ %w[source sink] => { %w[out in] => {} } }+.
+      def connections
+        port_connections.each_with_object({}) do |c, result|
+          (result[[c.from.child_name, c.to.child_name]] ||= {})[[c.from.key.last, c.to.key.last]] = c.policy
+        end
+      end
+
+      # Yields each pair of child names and their connections (see #connections).
+      def each_explicit_connection(&block)
+        return enum_for(__method__) unless block
+
+        connections.each(&block)
+      end
 
       # Whether two children's ports are connected in this composition.
       def connected?(port, other)
-        connections.any? do |c|
+        port_connections.any? do |c|
           (c.from.same_port?(port) && c.to.same_port?(other)) || (c.from.same_port?(other) && c.to.same_port?(port))
         end
       end

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/specialization_mappings'
+require 'syskit/models/composition_specialization'
 
 module Syskit
   module Models
@@ -20,64 +21,6 @@ module Syskit
     module CompositionSpecializations
       include SpecializationMappings
 
-      # One +specialize+ statement (or several on the same children): the
-      # children it specializes (name => models) and its blocks.
-      class Specialization
-        attr_reader :root, :specialized_children, :blocks, :location
-
-        def initialize(root, specialized_children, location)
-          @root = root
-          @specialized_children = specialized_children.freeze
-          @blocks = []
-          @location = location
-        end
-
-        # The same specialization on +model+ (a submodel of its root).
-        def promote(model)
-          promoted = Specialization.new(model, specialized_children, location)
-          blocks.each { |b| promoted.blocks << b }
-          promoted
-        end
-
-        # Whether +selection+ (child name => the selected requirements)
-        # fullfills what the specialization names for at least one child,
-        # and contradicts it for none.
-        def weak_match?(selection)
-          matched = false
-          specialized_children.each do |name, models|
-            selected = selection[name]
-            next unless selected
-            return false unless models.all? { |m| selected.fullfills?(m) }
-
-            matched = true
-          end
-          matched
-        end
-
-        # Syskit's lookup for specialization constraint blocks: the models
-        # specialized on +child_name+ that fullfill +model+, or nil.
-        def find_specialization(child_name, model)
-          found = (specialized_children[child_name.to_s] || []).select { |m| m.fullfills?(model) }
-          found unless found.empty?
-        end
-
-        def has_specialization?(child_name, model) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-          !find_specialization(child_name, model).nil?
-        end
-
-        # The specialized model (made from this specialization alone).
-        def composition_model
-          root.specialized_model([self])
-        end
-
-        def to_s
-          "#{root.short_name}/" + specialized_children.map do |name, models|
-            "#{name}.is_a?(#{models.join(',')})"
-          end.join(',')
-        end
-        alias inspect to_s
-      end
-
       # Declares a specialization (see the module's documentation). Children
       # are given as +name_child+ objects or names; the value is a model or
       # a list of models. Without mappings, a private submodel is made and
@@ -90,11 +33,11 @@ module Syskit
         children = normalize_specialization(mappings, location)
         spec = own_specializations.find { |s| s.specialized_children == children }
         unless spec
-          spec = Specialization.new(self, children, location)
-          own_specializations.each { |other| compatible?(other, spec) }
+          spec = CompositionSpecialization.declared(children, self, location)
+          record_compatibilities(spec)
           own_specializations << spec
         end
-        spec.blocks << block if block
+        spec.specialization_blocks << block if block
         @specialized_models = nil
         check_specialization_block(spec, block) if block
         spec
@@ -203,7 +146,7 @@ module Syskit
       def check_specialization_block(spec, block)
         specialized_model([spec])
       rescue StandardError
-        spec.blocks.delete(block)
+        spec.specialization_blocks.delete(block)
         raise
       ensure
         @specialized_models = nil
@@ -223,6 +166,17 @@ module Syskit
           found << other if !found.include?(other) && found.all? { |s| compatible?(s, other) }
         end
         group.sort_by { |s| matching.index(s) }
+      end
+
+      # Which of the existing specializations +spec+ can be combined with
+      # (the constraints decide), recorded on both sides.
+      def record_compatibilities(spec)
+        own_specializations.each do |other|
+          next unless compatible?(other, spec)
+
+          other.compatibilities << spec
+          spec.compatibilities << other
+        end
       end
 
       def compatible?(one, other)
@@ -268,11 +222,11 @@ module Syskit
       def build_specialized_model(specs)
         model = Class.new(self)
         children = specs.each_with_object({}) do |spec, all|
-          spec.specialized_children.each { |name, models| all[name] = ((all[name] || []) + models).uniq }
+          spec.specialized_children.each { |name, models| all[name] = ((all[name] || []) + Array(models)).uniq }
         end
         model.send(:become_specialization, specs, children, self)
         children.each { |name, models| model.overload(name, models) }
-        specs.each { |spec| spec.blocks.each { |block| model.class_eval(&block) } }
+        specs.each { |spec| spec.specialization_blocks.each { |block| model.class_eval(&block) } }
         model
       end
 

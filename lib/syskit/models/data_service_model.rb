@@ -6,6 +6,7 @@ require 'syskit/models/port_lookup'
 require 'syskit/models/provided_models'
 require 'syskit/models/bus_service_role'
 require 'syskit/models/service_model_binding'
+require 'syskit/models/task_requirements'
 
 module Syskit
   # The plain model objects the DSL records declarations into.
@@ -25,6 +26,7 @@ module Syskit
       include ProvidedModels
       include BusServiceRole
       include ServiceModelBinding
+      include TaskRequirementStatements
 
       attr_reader :ports, :parents, :declared_at
       attr_accessor :doc
@@ -167,7 +169,7 @@ module Syskit
       def add_port_entry(port)
         ports[port.name] = port
         reader = "#{port.name}_port"
-        define_singleton_method(reader) { Port.for(self, find_port(port.name)) } unless respond_to?(reader)
+        define_singleton_method(reader) { find_port(port.name) } unless respond_to?(reader)
         port
       end
 

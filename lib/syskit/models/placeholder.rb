@@ -31,6 +31,7 @@ module Syskit
         model.spec.abstract = true
         model.extend(Proxy)
         model.proxied_data_service_models = services.freeze
+        model.proxied_component_model = component || Syskit::Component
         model
       end
 
@@ -57,6 +58,10 @@ module Syskit
       module Proxy
         # The service models it stands for (those of its component model aside).
         attr_accessor :proxied_data_service_models
+
+        # The component model it derives from (Syskit::Component when none
+        # was given).
+        attr_accessor :proxied_component_model
 
         def placeholder?
           true

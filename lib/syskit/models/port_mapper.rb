@@ -38,7 +38,7 @@ module Syskit
           return explicit_port(srv_port, name)
         end
 
-        same_name = @task_model.find_port(srv_port.name)
+        same_name = @task_model.ports[srv_port.name]
         return same_name if compatible?(same_name, srv_port)
 
         candidates = @task_model.ports.values.select { |p| compatible?(p, srv_port) }
@@ -52,7 +52,7 @@ module Syskit
       end
 
       def explicit_port(srv_port, name)
-        port = @task_model.find_port(name)
+        port = @task_model.ports[name]
         return port if compatible?(port, srv_port)
         return create(srv_port, name) if !port && @dynamic && dynamic_pattern(srv_port, name)
 

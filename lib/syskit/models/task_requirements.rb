@@ -14,9 +14,16 @@ module Syskit
         end
       end
 
-      # The model as requirements (see InstanceRequirements).
+      # Syskit's +Model.instanciate(plan, context)+: see
+      # InstanceRequirements#instanciate.
+      def instanciate(plan, context = DependencyInjectionContext::EMPTY, **options)
+        to_instance_requirements.instanciate(plan, context, **options)
+      end
+
+      # The model (a component or service model, or a component model's
+      # service) as requirements (see InstanceRequirements).
       def to_instance_requirements
-        InstanceRequirements.new([self], declared_at: Location.of_caller)
+        InstanceRequirements.from(self, location: Location.of_caller)
       end
     end
   end

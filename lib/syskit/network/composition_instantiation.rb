@@ -15,7 +15,7 @@ module Syskit
         selections = select_children(model, context)
         specialized = specialize(model, selections, requirements)
         return instantiate_composition(specialized, requirements, context, path, parent) if specialized != model
-        raise abstract(requirements, path, parent, model) if model.abstract?
+        raise abstract(requirements, path, parent, model) if model.abstract? && !@placeholders
 
         composition = model.new(task_arguments(model, requirements, parent))
         composition.conf = requirements.conf
@@ -101,7 +101,7 @@ module Syskit
       def child_context(context, selection, requirements, name, child_requirements)
         grandchildren = requirements.selections.grandchild_selections(name)
         context = context.mask(selection.used_keys)
-        context = context.with(DependencyInjection.new(grandchildren, [], requirements.declared_at)) unless
+        context = context.with(DependencyInjection.of(grandchildren, [], requirements.declared_at)) unless
           grandchildren.empty?
         context.with(resolve_references(child_requirements.selections))
       end
@@ -113,7 +113,7 @@ module Syskit
         explicit = selections.explicit.transform_values do |value|
           value.is_a?(Models::ChildReference) ? referenced_requirements(value) : value
         end
-        DependencyInjection.new(explicit, selections.defaults, selections.declared_at)
+        DependencyInjection.of(explicit, selections.defaults, selections.declared_at)
       end
 
       def referenced_task(child)

@@ -61,7 +61,7 @@ module Syskit
       # connection two compositions declare between the same (merged)
       # tasks is made once.
       def connect_children(composition, seen)
-        composition.model.connections.each do |declared|
+        composition.model.port_connections.each do |declared|
           from = composition.resolve_child_port(declared.from)
           to = composition.resolve_child_port(declared.to)
           next unless from && to

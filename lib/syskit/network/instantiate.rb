@@ -24,16 +24,34 @@ module Syskit
         [model, arguments, requirements.conf, requirements.deployment_hints, requirements.declared_deployment&.name]
       end
 
-      def initialize(context, stub_abstract: false)
+      # Syskit's model-level +instanciate+: the task of +requirements+ (and
+      # of its children), selected in +injection+ (a
+      # DependencyInjectionContext) and added to +plan+ (any object with
+      # #add, such as the plan of Syskit's tests). What is still abstract
+      # becomes a task of its placeholder model, as in Syskit; nothing is
+      # merged or deployed.
+      def self.into_plan(plan, requirements, injection)
+        network = Context.new(app: Syskit.app, requirements: [requirements])
+        new(network, base: injection, placeholders: true).run
+        network.raise_errors
+        (network.tasks + network.compositions).each { |task| plan.add(task) }
+        network.roots.first
+      end
+
+      # +base+: the selections every root is instantiated in (the
+      # profile's by default); +placeholders+: abstract children become
+      # placeholder tasks instead of errors.
+      def initialize(context, stub_abstract: false, base: nil, placeholders: false)
         @context = context
         @drivers = Drivers.new(context)
         @stub_abstract = stub_abstract
+        @placeholders = placeholders
         @building = []
         # The requirements of the root tasks, to make each root once: a
         # hash, since a profile of 10,000 devices has 10,000 roots.
         @root_requirements = {}.compare_by_identity
         profile = context.profile
-        @base = profile ? profile.dependency_injection_context : DependencyInjectionContext::EMPTY
+        @base = base || (profile ? profile.dependency_injection_context : DependencyInjectionContext::EMPTY)
       end
 
       def run
@@ -77,17 +95,23 @@ module Syskit
         return requirements.instance if requirements.instance
 
         model = requirements.component_model
-        if requirements.abstract?
-          return stub_task(requirements, path, parent) if @stub_abstract && !(model && model <= Composition)
-
-          raise abstract(requirements, path, parent)
-        end
-
-        if model <= Composition
+        composition = model && model <= Composition
+        if composition && (@placeholders || !requirements.abstract?)
           instantiate_composition(model, requirements, context, path, parent)
+        elsif requirements.abstract?
+          abstract_task(requirements, path, parent, composition)
         else
           component_task(model, requirements, context, path, parent)
         end
+      end
+
+      # What stands for abstract +requirements+: a stub or a placeholder
+      # task when asked for (a composition is never stubbed), else an error.
+      def abstract_task(requirements, path, parent, composition)
+        return stub_task(requirements, path, parent) if @stub_abstract && !composition
+        return placeholder_task(requirements, path, parent) if @placeholders
+
+        raise abstract(requirements, path, parent)
       end
 
       # A task context: the driver of a device when the model drives one
@@ -169,6 +193,14 @@ module Syskit
         return value unless value.is_a?(Compat::DelayedArgument)
 
         value.resolve(parent)
+      end
+
+      def placeholder_task(requirements, path, parent)
+        model = Models::Placeholder.for(requirements.models)
+        task = model.new(task_arguments(model, requirements, parent))
+        task.conf = requirements.conf
+        task.plan_path = path
+        @context.add_task(task, nil, requirements)
       end
 
       def stub_task(requirements, path, parent)

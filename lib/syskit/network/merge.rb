@@ -50,7 +50,7 @@ module Syskit
         groups.each { |group| group.each { |task| wanted[task] = true } }
         sources = Hash.new { |h, task| h[task] = Hash.new { |ports, name| ports[name] = [] } }.compare_by_identity
         @context.compositions.each do |composition|
-          composition.model.connections.each do |connection|
+          composition.model.port_connections.each do |connection|
             into = composition.children_by_role[connection.to.child_name]
             next unless into.is_a?(Composition) || wanted.key?(final(into, replaced))
 

@@ -21,7 +21,7 @@ module Syskit
         when DependencyInjectionContext then value
         when DependencyInjection then DependencyInjectionContext::EMPTY.with(value)
         when nil then DependencyInjectionContext::EMPTY
-        when Hash then DependencyInjectionContext::EMPTY.with(DependencyInjection::EMPTY.add([value], nil))
+        when Hash then DependencyInjectionContext::EMPTY.with(DependencyInjection.new(value).freeze)
         else raise ArgumentError, "expected selections, got #{value.inspect}"
         end
       end
@@ -34,7 +34,7 @@ module Syskit
       # What fills +child+ in +context+ (see Result); raises when the
       # selection does not fullfill what the child requires.
       def select(child, context)
-        value, used = context.selection_for(child.child_name, child.models)
+        value, used = context.selected_value_for(child.child_name, child.models)
         explicit = used.include?(child.child_name)
         return Result.new(child.requirements, used, explicit, nil) if value.nil?
         return Result.new(child.requirements, used, explicit, value) if value.is_a?(Models::ChildReference)

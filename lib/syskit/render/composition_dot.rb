@@ -20,7 +20,7 @@ module Syskit
         used = used_ports(model)
         model.each_child { |name, child| child_node(name, child, used[name] || [], links, out) }
         model.exports.each_value { |export| export_node(export, out) }
-        model.connections.each { |c| connection_edge(c, out) }
+        model.port_connections.each { |c| connection_edge(c, out) }
         out << "}\n"
       end
 
@@ -36,7 +36,7 @@ module Syskit
       # The ports of each child that a connection or an export names.
       def used_ports(model)
         used = Hash.new { |h, k| h[k] = [] }
-        ports = model.connections.flat_map { |c| [c.from, c.to] } + model.exports.each_value.map(&:port)
+        ports = model.port_connections.flat_map { |c| [c.from, c.to] } + model.exports.each_value.map(&:port)
         ports.each { |p| used[p.child_name] << p unless used[p.child_name].any? { |u| u.name == p.name } }
         used
       end

@@ -2,8 +2,8 @@
 
 require 'minitest/autorun'
 require 'minitest/spec'
-require 'pp'
 require 'tmpdir'
+require 'pp' # Syskit's tests pretty-print models (PP.pp), its harness loads it
 require 'syskit'
 require 'syskit/test/app_under_test'
 require 'syskit/test/self_app'

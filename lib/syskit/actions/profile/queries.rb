@@ -17,14 +17,14 @@ module Syskit
           syskit_profile.find_definition(name)
         end
 
-        # The definition +name+; an error naming the known ones when there is
-        # none. Its requirements are resolved in this profile (its selections,
-        # devices and tags) when they are instantiated: +resolved_definition+
-        # is the same.
+        # A copy of the definition +name+ (see Definitions#definition).
         def definition(name)
-          find_definition_by_name(name) || raise(unknown_definition(name))
+          syskit_profile.definition(name)
         end
-        alias resolved_definition definition
+
+        def resolved_definition(name)
+          syskit_profile.resolved_definition(name)
+        end
 
         # The definitions' requirements, in declaration order.
         def each_definition(&)
@@ -100,15 +100,6 @@ module Syskit
         def from_state(state = :state)
           Syskit.app&.not_modelled("from_state in profile #{self}", Location.of_caller)
           Compat::DelayedArgument.new(state)
-        end
-
-        private
-
-        def unknown_definition(name)
-          known = syskit_profile.definitions.keys
-          UnknownName.new("#{self} has no definition '#{name}'#{Naming.did_you_mean(name.to_s, known)}",
-                          location: Location.of_caller,
-                          hint: known.empty? ? "#{self} defines none" : "its definitions: #{known.join(', ')}")
         end
       end
     end

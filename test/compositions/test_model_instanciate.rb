@@ -1,0 +1,98 @@
+# frozen_string_literal: true
+
+require 'compositions/composition_test_helper'
+require 'syskit/test/plan'
+
+module Syskit
+  # Syskit's model-level +instanciate+: a composition model (or
+  # requirements) made into tasks in a plan held as data, its children
+  # chosen through a DependencyInjectionContext, what stays abstract a
+  # placeholder task.
+  class TestModelInstanciate < Minitest::Test
+    include CompositionTestHelper
+
+    def setup
+      super
+      load_rig
+      @plan = Test::Plan.new
+    end
+
+    def watch_model
+      Composition.new_submodel do
+        add Rig::Services::Pose, as: 'pose'
+        add OroGen.rig.Follower, as: 'follower'
+      end
+    end
+
+    def test_a_composition_model_instanciates_its_children_into_the_plan
+      context = DependencyInjectionContext.new(Rig::Services::Pose => OroGen.rig.Tracker.front_pose_srv)
+      cmp = watch_model.instanciate(@plan, context)
+      assert_kind_of OroGen.rig.Tracker, cmp.pose_child
+      assert_kind_of OroGen.rig.Follower, cmp.follower_child
+      assert_equal [cmp, cmp.pose_child, cmp.follower_child].to_set, @plan.tasks
+    end
+
+    def test_selections_by_child_name_through_a_context
+      context = DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.front_pose_srv)
+      cmp = watch_model.to_instance_requirements.instanciate(@plan, context)
+      assert_kind_of OroGen.rig.Tracker, cmp.pose_child
+    end
+
+    def test_a_context_is_made_of_injection_layers_later_ones_winning
+      first = DependencyInjection.new('pose' => OroGen.rig.Tracker.front_pose_srv)
+      context = DependencyInjectionContext.new(first, 'pose' => DependencyInjection.nothing)
+      cmp = watch_model.instanciate(@plan, context)
+      assert_kind_of Rig::Services::Pose.placeholder_model, cmp.pose_child
+    end
+
+    def test_what_nothing_selects_is_a_task_of_the_placeholder_model
+      cmp = watch_model.instanciate(@plan)
+      assert_kind_of Rig::Services::Pose.placeholder_model, cmp.pose_child
+      assert cmp.pose_child.model.placeholder?
+    end
+
+    def test_task_arguments_are_the_root_task_arguments
+      model = watch_model
+      model.argument :gain
+      cmp = model.instanciate(@plan, task_arguments: { gain: 3 })
+      assert_equal 3, cmp.arguments[:gain]
+    end
+
+    def test_a_task_model_instanciates_into_one_task
+      task = OroGen.rig.Follower.instanciate(@plan)
+      assert_kind_of OroGen.rig.Follower, task
+      assert_equal [task].to_set, @plan.tasks
+    end
+
+    def test_a_task_has_its_services_as_readers
+      task = OroGen.rig.Tracker.new
+      assert_equal BoundDataService.new(task, OroGen.rig.Tracker.front_pose_srv), task.front_pose_srv
+      assert_equal %w[front_pose rear_pose], task.each_data_service.map(&:name).sort
+    end
+
+    def test_the_required_child_is_the_selected_service_of_the_task
+      context = DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv)
+      cmp = watch_model.instanciate(@plan, context)
+      assert_equal cmp.pose_child.rear_pose_srv, cmp.required_composition_child_from_role('pose')
+      assert_same cmp.follower_child, cmp.required_composition_child_from_role('follower')
+    end
+
+    def test_a_child_removed_from_the_task_is_no_required_child
+      cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
+      cmp.remove_dependency(cmp.pose_child)
+      assert_nil cmp.find_required_composition_child_from_role('pose')
+      assert_raises(ArgumentError) { cmp.required_composition_child_from_role('pose') }
+      task = OroGen.rig.Tracker.new
+      cmp.depends_on(task, role: 'pose')
+      assert_same task, cmp.pose_child
+    end
+
+    def test_a_service_may_be_named_after_an_anonymous_model
+      srv = DataService.new_submodel
+      task_m = TaskContext.new_submodel { provides srv, as: srv.to_s }
+      assert_same srv, task_m.find_service(srv.to_s).model
+      error = assert_raises(DeclarationError) { TaskContext.new_submodel { provides srv, as: 'a.b' } }
+      assert_match(/'a.b' is not a valid service name/, error.message)
+    end
+  end
+end

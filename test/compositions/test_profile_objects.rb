@@ -1,0 +1,58 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # Profiles made in Ruby as Syskit's tests make them, without a module:
+  # +Actions::Profile.new('name')+ answers its actions itself.
+  class TestProfileObjects < Minitest::Test
+    def setup
+      super
+      @pose = DataService.new_submodel(name: 'Pose')
+      @task = TaskContext.new_submodel(name: 'Task')
+    end
+
+    def test_a_profile_is_registered_when_asked_or_made_by_the_profile_statement
+      named = Actions::Profile.new('Named')
+      assert_equal 'Named', named.name
+      refute_includes Actions::Profile.each_submodel.to_a, named
+      registered = Actions::Profile.new(register: true)
+      assert_includes Actions::Profile.each_submodel.to_a, registered
+      context = Module.new
+      made = context.profile('Made')
+      assert_same context::Made, made
+      assert_includes Actions::Profile.each_submodel.to_a, made
+    end
+
+    def test_definitions_are_named_as_written_and_answered_by_the_profile
+      profile = Actions::Profile.new('Base')
+      definition = profile.define('drive', @task)
+      assert_kind_of Actions::Profile::Definition, definition
+      assert_equal ['drive', profile], [definition.name, definition.profile]
+      assert_same definition, profile.drive_def
+      assert_equal 'Base.drive_def', definition.to_s
+      assert_kind_of Actions::Profile::Definition, definition.with_arguments(x: 1)
+      assert_equal %w[drive], profile.each_definition.map(&:name)
+      assert_raises(ArgumentError) { profile.drive_def('x') }
+      assert_raises(NoMethodError) { profile.other_def }
+    end
+
+    def test_definition_gives_a_new_copy_each_time
+      profile = Actions::Profile.new
+      profile.define('drive', @task)
+      assert_equal profile.drive_def, profile.definition('drive')
+      refute_same profile.definition('drive'), profile.definition('drive')
+      refute_same profile.drive_def, profile.resolved_definition('drive')
+      assert_raises(UnknownName) { profile.definition('fly') }
+    end
+
+    def test_tags_and_selections_of_a_profile_object
+      profile = Actions::Profile.new
+      tag = profile.tag('localization', @pose)
+      assert_same tag, profile.localization_tag
+      assert_equal 'anonymous profile.localization_tag', tag.to_s
+      profile.use(@task => @task)
+      assert_equal({ @task => @task }, profile.selections.explicit)
+    end
+  end
+end

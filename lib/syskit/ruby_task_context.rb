@@ -47,6 +47,17 @@ module Syskit
         add_port(name, :output, type)
       end
 
+      # Declares the ports the task creates at configure time, by name
+      # pattern (a Regexp, or a String read as one) and type:
+      # +dynamic_output_port(/\\w+_out/, '/double')+.
+      def dynamic_input_port(pattern, type = nil)
+        add_dynamic_port(pattern, :input, type)
+      end
+
+      def dynamic_output_port(pattern, type = nil)
+        add_dynamic_port(pattern, :output, type)
+      end
+
       # Declares a property: +property 'period', '/double', 0.1+.
       def property(name, type, default = nil)
         name = check_name(name, 'property')
@@ -85,6 +96,20 @@ module Syskit
         spec.ports[name] = port
         Models::Component.declarations_changed
         define_port_reader(name)
+        PortModifiers.new(port)
+      end
+
+      def add_dynamic_port(pattern, direction, type)
+        location = Location.of_caller
+        pattern = Regexp.new(pattern) if pattern.is_a?(String)
+        unless pattern.is_a?(Regexp)
+          raise DeclarationError.new("dynamic_#{direction}_port expects a name pattern, got #{pattern.inspect}",
+                                     location: location, hint: "write dynamic_#{direction}_port(/\\w+/, '/double')")
+        end
+
+        port = DynamicPort.new(pattern, direction, type && Models.resolve_type(type, location))
+        spec.dynamic_ports << port
+        Models::Component.declarations_changed
         PortModifiers.new(port)
       end
 

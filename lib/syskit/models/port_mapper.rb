@@ -57,7 +57,7 @@ module Syskit
         return create(srv_port, name) if !port && @dynamic && dynamic_pattern(srv_port, name)
 
         problem = port ? "is an #{port}" : 'does not exist'
-        raise DeclarationError.new(
+        raise InvalidProvides.new(
           "#{@task_model.name}'s port '#{name}', mapped to #{@srv_model}'s #{srv_port}, #{problem}",
           location: @location, hint: "map '#{srv_port.name}' to an #{srv_port.direction} port of type " \
                                      "#{srv_port.type}#{port_list(srv_port)}"
@@ -81,7 +81,7 @@ module Syskit
           next if pairs.size == 1 || pairs.all? { |srv_port, _| @explicit.key?(srv_port) }
 
           names = pairs.map(&:first).sort
-          raise DeclarationError.new(
+          raise InvalidProvides.new(
             "#{@srv_model}'s ports #{names.join(', ')} would all be bound to #{@task_model.name}'s port " \
             "'#{task_port}'",
             location: @location,
@@ -91,7 +91,7 @@ module Syskit
       end
 
       def no_port(srv_port)
-        DeclarationError.new(
+        InvalidProvides.new(
           "#{@task_model.name} has no #{srv_port.direction} port of type #{srv_port.type} " \
           "for #{@srv_model}'s port '#{srv_port.name}'",
           location: @location,
@@ -101,7 +101,7 @@ module Syskit
 
       def ambiguous(srv_port, candidates)
         names = candidates.map(&:name).sort
-        DeclarationError.new(
+        InvalidProvides.new(
           "#{@task_model.name} has several #{srv_port.direction} ports of type #{srv_port.type} " \
           "for #{@srv_model}'s port '#{srv_port.name}': #{names.join(', ')}",
           location: @location, hint: "choose one explicitly: '#{srv_port.name}' => '#{names.first}'"

@@ -158,7 +158,7 @@ module Syskit
         if (name = model.port_name_for(a)) then [name, b]
         elsif (name = model.port_name_for(b)) then [name, a]
         else
-          raise DeclarationError.new(
+          raise InvalidProvides.new(
             "#{model} has no port named '#{a}' or '#{b}' (mapping '#{a}' => '#{b}' on #{owner})",
             location: location,
             hint: "#{model}'s ports are #{model.ports.values.join(', ')}; " \

@@ -27,9 +27,9 @@ module Syskit
 
         it 'gives each test a robot of its own' do
           assert_empty robot.devices
-          robot.device(Syskit::Device.new_submodel(name: 'Sonar'), as: 'sonar',
-                                                                   using: Syskit::TaskContext.new_submodel)
-          assert_equal ['sonar'], robot.devices.map(&:name)
+          sonar = Syskit::Device.new_submodel(name: 'Sonar')
+          robot.device(sonar, as: 'sonar', using: Syskit::TaskContext.new_submodel { driver_for sonar, as: 'drv' })
+          assert_equal ['sonar'], robot.each_master_device.map(&:name)
         end
 
         it 'holds tasks in the plan as data' do
@@ -100,6 +100,27 @@ module Syskit
       assert_equal "nil\n", out
     end
 
+    def test_runtime_classes_and_helpers_outside_syskit_skip_too
+      Dir.mktmpdir do |dir|
+        write_self_test(dir, 'test_runtime.rb', <<~RUBY)
+          require 'syskit/test/self'
+
+          describe 'runtime' do
+            it('waits on threads') { Concurrent::CyclicBarrier.new(2) }
+            it('makes a Roby app configuration') { Syskit::RobyApp::Configuration.new(Roby::Application.new) }
+            it('captures logs') { capture_log(Syskit, :warn) { flunk } }
+          end
+        RUBY
+        report = File.join(dir, 'report.jsonl')
+        out, err, = ruby_process('test/test_runtime.rb', chdir: dir, env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
+        assert_match(/3 runs, 0 assertions, 0 failures, 0 errors, 3 skips/, out, err)
+        messages = File.readlines(report).map { |l| JSON.parse(l)['message'] }.sort
+        assert_equal ["Concurrent::CyclicBarrier needs Syskit's runtime (Roby and Orocos)",
+                      "Syskit::RobyApp::Configuration needs Syskit's runtime (Roby and Orocos)",
+                      "capture_log needs Syskit's runtime (Roby and Orocos)"], messages
+      end
+    end
+
     def test_syskit_test_can_be_required_after_the_harness
       Dir.mktmpdir do |dir|
         write_self_test(dir, 'test_both.rb', <<~RUBY)
@@ -134,6 +155,58 @@ module Syskit
         RUBY
         out, err, = ruby_process('test/test_cleanup.rb', chdir: dir)
         assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors/, out, err)
+      end
+    end
+
+    # Network generation with the deployments a test declares.
+    DEPLOY_TEST = <<~RUBY
+      require 'syskit/test/self'
+
+      describe 'deployments of a test' do
+        before { @task_m = Syskit::TaskContext.new_submodel(name: 'Probe') }
+
+        it('deploys with use_deployment') do
+          use_deployment @task_m => 'probe_task'
+          assert_equal 'probe_task', syskit_deploy(@task_m).orocos_name
+        end
+
+        it('prefers the deployment of the requirement') do
+          use_deployment @task_m => 'test_level'
+          assert_equal 'own', syskit_deploy(@task_m.deployed_as('own')).orocos_name
+        end
+
+        it('deploys with a stub deployment model') do
+          use_deployment syskit_stub_deployment_model(@task_m, 'stubbed')
+          assert_equal 'stubbed', syskit_deploy(@task_m).orocos_name
+        end
+
+        it('takes what answers to_action') do
+          use_deployment @task_m => 'probe_task'
+          assert_kind_of @task_m, syskit_deploy(flexmock(to_action: @task_m))
+        end
+
+        it('fails without a deployment') do
+          assert_raises(Syskit::DeploymentError) { syskit_deploy(@task_m) }
+        end
+
+        it('generates without deploying') do
+          task = syskit_generate_network(@task_m)
+          assert_kind_of @task_m, task
+          assert_nil task.orocos_name
+        end
+
+        it('skips the actions of Roby planners') do
+          syskit_deploy(Roby::Actions::Interface.new_submodel.some_action)
+        end
+      end
+    RUBY
+
+    def test_networks_are_generated_and_deployed_with_the_deployments_the_test_declares
+      Dir.mktmpdir do |dir|
+        write_self_test(dir, 'test_deploy.rb', DEPLOY_TEST)
+        out, err, = ruby_process('test/test_deploy.rb', '-v', chdir: dir)
+        assert_match(/7 runs, \d+ assertions, 0 failures, 0 errors, 1 skips/, out, err)
+        assert_match(/a Roby planner's result\) needs Syskit's runtime/, out)
       end
     end
 

@@ -63,7 +63,7 @@ module Syskit
     end
 
     def profile_files(profile)
-      ([profile.declared_at] + profile.robot.devices.map(&:declared_at)).compact.map(&:path).uniq
+      ([profile.declared_at] + profile.robot.each_master_device.map(&:declared_at)).compact.map(&:path).uniq
     end
 
     # The devices together (they all run on the robot), then each

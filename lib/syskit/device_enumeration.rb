@@ -14,7 +14,7 @@ module Syskit
     def each_slave_device(&block)
       return enum_for(__method__) unless block
 
-      devices.each { |device| device.each_slave(&block) }
+      each_master_device { |device| device.each_slave(&block) }
     end
   end
 end

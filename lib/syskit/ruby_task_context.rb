@@ -47,15 +47,22 @@ module Syskit
         add_port(name, :output, type)
       end
 
-      # Declares the ports the task creates at configure time, by name
-      # pattern (a Regexp, or a String read as one) and type:
-      # +dynamic_output_port(/\\w+_out/, '/double')+.
+      # Ports created at configure time whose names match +pattern+ (a
+      # Regexp), of +type+ (any type without one): +dynamic_input_port
+      # /^w\w+$/, '/double'+.
       def dynamic_input_port(pattern, type = nil)
         add_dynamic_port(pattern, :input, type)
       end
 
       def dynamic_output_port(pattern, type = nil)
         add_dynamic_port(pattern, :output, type)
+      end
+
+      # What Syskit calls the oroGen model of a task model made in Ruby:
+      # ports may be declared through it too
+      # (+model.orogen_model.input_port 'in', '/double'+).
+      def orogen_model
+        Orogen::ModelView.new(spec, declarations: self)
       end
 
       # Declares a property: +property 'period', '/double', 0.1+.
@@ -100,14 +107,9 @@ module Syskit
       end
 
       def add_dynamic_port(pattern, direction, type)
-        location = Location.of_caller
-        pattern = Regexp.new(pattern) if pattern.is_a?(String)
-        unless pattern.is_a?(Regexp)
-          raise DeclarationError.new("dynamic_#{direction}_port expects a name pattern, got #{pattern.inspect}",
-                                     location: location, hint: "write dynamic_#{direction}_port(/\\w+/, '/double')")
-        end
-
-        port = DynamicPort.new(pattern, direction, type && Models.resolve_type(type, location))
+        pattern = Regexp.new(pattern.to_s) unless pattern.is_a?(Regexp)
+        type &&= Models.resolve_type(type, Location.of_caller)
+        port = DynamicPort.new(pattern, direction, type)
         spec.dynamic_ports << port
         Models::Component.declarations_changed
         PortModifiers.new(port)

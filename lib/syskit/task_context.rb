@@ -65,6 +65,12 @@ module Syskit
     # task is deployed).
     attr_reader :name
 
+    # Syskit's name for the deployed task name (#name here, the name plans
+    # show): what a test checks after syskit_deploy.
+    def orocos_name
+      name
+    end
+
     # Binds the task to a deployed task of the robot configuration. The name
     # is kept here: plans, sorts and connections ask for it many times.
     def deployed_task=(deployed)

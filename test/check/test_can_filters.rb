@@ -28,7 +28,7 @@ module Syskit
 
       # Every pair of devices on one bus whose filters overlap, found the slow way.
       def every_overlapping_pair(robot)
-        readers = robot.devices.select { |d| d.attached? && d.bus_to_client? }
+        readers = robot.each_master_device.select { |d| d.attached? && d.bus_to_client? }
         readers.combination(2).select do |a, b|
           first = CAN::Filter.new(*a.can_id)
           second = CAN::Filter.new(*b.can_id)

@@ -37,7 +37,7 @@ module Syskit
       assert_match(/^expect_execution_default_timeout= needs Syskit's runtime/, out)
       assert_match(/^execute_robot_controller needs Syskit's runtime/, out)
       assert_match(/^syskit_configure needs Syskit's runtime/, out)
-      assert_match(/^Syskit::Deployment is about what this gem does not model/, out)
+      assert_match(/^Syskit::Deployment \(a running process\) needs Syskit's runtime/, out)
       assert_match(/^Orocos::Test::Component starts components: needs Orocos' runtime/, out)
     end
 

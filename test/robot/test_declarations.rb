@@ -30,6 +30,12 @@ module Syskit
       assert_reported error, /'My IMU' is not a valid device name/, at: ROBOT, hint: /lower-case/, root: root
     end
 
+    def test_a_device_name_may_start_with_a_capital_as_in_syskit
+      root = my_app("device(Devices::IMU, as: 'IMU')\n")
+      load_app(root)
+      assert_equal 'IMU', MyApp::Profiles::Base.IMU_dev.device.name
+    end
+
     def test_a_data_service_is_not_a_device
       services = <<~RUBY
         module MyApp
@@ -101,7 +107,7 @@ module Syskit
       RUBY
       root = my_app(robot)
       app = load_app(root, problems: true)
-      bus0, bus1 = MyApp::Profiles::Base.syskit_profile.robot.devices.first(2)
+      bus0, bus1 = MyApp::Profiles::Base.syskit_profile.robot.each_master_device.first(2)
       bus1.attach_to(bus0)
       error = assert_raises(NetworkError) { bus0.attach_to(bus1) }
       assert_match(/attaching bus 'can0' to bus 'can1' makes a cycle: can0 -> can1 -> can0/, error.message)

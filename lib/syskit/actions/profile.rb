@@ -91,7 +91,7 @@ module Syskit
       # Action names (+gps_dev+, ...), in declaration order, each device's
       # slaves after it (+stereo.left_dev+), then the definitions (+x_def+).
       def action_names
-        devices = robot.devices.flat_map do |device|
+        devices = robot.each_master_device.flat_map do |device|
           ["#{device.name}_dev", *device.each_slave.map { |slave| "#{slave.full_name}_dev" }]
         end
         devices + definitions.keys.map { |name| "#{name}_def" }
@@ -117,7 +117,7 @@ module Syskit
       end
 
       def device_requirements
-        robot.devices.map { |d| requirement_for(d) }
+        robot.each_master_device.map { |d| requirement_for(d) }
       end
 
       def definition_requirements

@@ -214,7 +214,7 @@ module Syskit
         private
 
         def robot_injection
-          by_model = robot.devices.group_by(&:model)
+          by_model = robot.each_master_device.group_by(&:model)
           selected = by_model.filter_map do |model, devices|
             [model, requirement_for(devices.first)] if devices.size == 1
           end

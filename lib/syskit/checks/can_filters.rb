@@ -41,7 +41,7 @@ module Syskit
       # bits outside the mask. can_id stores such a filter as given (the
       # seed's own test sets one), so this check is where a user hears of it.
       def unmatchable
-        @robot.devices.grep(Robot::ComBus).flat_map do |bus|
+        @robot.each_master_device.grep(Robot::ComBus).flat_map do |bus|
           bus.each_attached_device.filter_map do |dev|
             filter = filter_of_reader(dev)
             [dev, filter] if filter && !filter.matchable?
@@ -52,7 +52,7 @@ module Syskit
       # The overlapping groups of every bus, in the order of the devices
       # their warnings point at.
       def overlaps
-        @robot.devices.grep(Robot::ComBus).flat_map { |bus| bus_overlaps(bus) }
+        @robot.each_master_device.grep(Robot::ComBus).flat_map { |bus| bus_overlaps(bus) }
       end
 
       private

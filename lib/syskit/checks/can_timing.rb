@@ -17,7 +17,7 @@ module Syskit
 
       # The problems found, bus by bus in declaration order.
       def problems
-        @profile.robot.devices.grep(Robot::ComBus).flat_map do |bus|
+        @profile.robot.each_master_device.grep(Robot::ComBus).flat_map do |bus|
           next [] unless Robot::CanTraffic.can_bus?(bus) && bus.carrier.equal?(bus)
 
           bus_problems(bus, bus.frames_on_wire)

@@ -47,7 +47,7 @@ module Syskit
 
       # The CAN buses of the profile's robot with a wire of their own.
       def can_buses(profile)
-        profile.robot.devices.grep(Robot::ComBus).select { |b| Robot::CanTraffic.can_bus?(b) && b.carrier.equal?(b) }
+        profile.robot.each_master_device.grep(Robot::ComBus).select { |b| Robot::CanTraffic.can_bus?(b) && b.carrier.equal?(b) }
       end
 
       # The bus +name+, or an error saying which buses can be timed.

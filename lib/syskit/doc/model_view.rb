@@ -71,7 +71,7 @@ module Syskit
       # For each profile, its devices whose model is or provides this one.
       def uses
         catalog.entries(:profile).filter_map do |entry|
-          devices = entry.object.robot.devices.select { |d| d.model_resolved? && d.model.fullfills?(model) }
+          devices = entry.object.robot.each_master_device.select { |d| d.model_resolved? && d.model.fullfills?(model) }
           Use.new(entry.object, devices) unless devices.empty?
         end
       end

@@ -36,7 +36,7 @@ module Syskit
       end
 
       def devices
-        profile.robot.devices
+        profile.robot.each_master_device.to_a
       end
 
       # The profile's definitions (see Profile::Definitions), by name.

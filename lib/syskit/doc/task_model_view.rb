@@ -98,7 +98,9 @@ module Syskit
       # For each profile, the devices this task model drives.
       def drives
         catalog.entries(:profile).filter_map do |entry|
-          devices = entry.object.robot.devices.select { |d| d.driver_resolved? && d.driver_model.equal?(model) }
+          devices = entry.object.robot.each_master_device.select do |d|
+            d.driver_resolved? && d.driver_model.equal?(model)
+          end
           ModelView::Use.new(entry.object, devices) unless devices.empty?
         end
       end

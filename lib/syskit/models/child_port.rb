@@ -45,6 +45,11 @@ module Syskit
         direction == :output
       end
 
+      # Whether the port accepts several writers (oroGen's +multiplexes+).
+      def multiplexes?
+        @port.multiplexes?
+      end
+
       def child_name
         child.child_name
       end
@@ -127,40 +132,18 @@ module Syskit
       end
 
       # Connects each of +outputs+ to the input port of +other+ (a child, or
-      # an input port) of the same type; a type with several candidates on
-      # the other side is an error naming them.
+      # an input port) it resolves to (see Syskit.resolve_connections).
       def self.autoconnect(outputs, other, policy, location)
         inputs = other.is_a?(ChildPort) ? [other] : other.each_input_port.to_a
-        made = outputs.count do |out|
-          input = autoconnect_input(out, other, inputs, location)
-          out.composition_model.add_connection(out, input, policy(policy, location), location) if input
+        pairs = Syskit.resolve_connections(outputs, inputs, location: location)
+        if pairs.empty?
+          raise DeclarationError.new(
+            "#{outputs.first&.child || 'the child'} has no output port of the type of an input of #{other}",
+            location: location, hint: 'connect ports explicitly: a_child.x_port.connect_to b_child.y_port'
+          )
         end
-        return unless made.zero?
 
-        raise DeclarationError.new(
-          "#{outputs.first&.child || 'the child'} has no output port of the type of an input of #{other}",
-          location: location, hint: 'connect ports explicitly: a_child.x_port.connect_to b_child.y_port'
-        )
-      end
-
-      # The input of +inputs+ +out+ connects to: the only one of its type,
-      # else the one of its type and name; nil when none has its type.
-      def self.autoconnect_input(out, other, inputs, location)
-        candidates = inputs.select { |i| i.type == out.type }
-        return candidates.first if candidates.size < 2
-
-        named = candidates.select { |i| i.name == out.name }
-        raise ambiguous_autoconnect(out, other, inputs, location) unless named.size == 1
-
-        named.first
-      end
-
-      def self.ambiguous_autoconnect(out, other, inputs, location)
-        names = inputs.select { |i| i.type == out.type }.map(&:name).sort
-        DeclarationError.new(
-          "#{out} could connect to several inputs of #{other}: #{names.join(', ')}",
-          location: location, hint: "connect it explicitly: #{out}.connect_to(#{other}.#{names.first}_port)"
-        )
+        pairs.each { |out, input| out.composition_model.add_connection(out, input, policy(policy, location), location) }
       end
     end
 

@@ -26,8 +26,10 @@ module Syskit
         each_submodel.include?(model)
       end
 
-      # Forgets the submodels of this model, and theirs.
+      # Forgets the submodels of this model, and theirs; the placeholders
+      # made from it are made anew when next asked for.
       def clear_submodels
+        @placeholder_models = nil
         subclasses.each do |sub|
           sub.clear_submodels
           next if ComponentSubmodels.permanent?(sub)

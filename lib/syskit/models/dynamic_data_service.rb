@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/models/bound_dynamic_data_service'
+
 module Syskit
   module Models
     # A service a task model provides under names chosen later, with ports
@@ -23,8 +25,8 @@ module Syskit
 
       # +addition_requires_reconfiguration:+ and +remove_when_unused:+ say
       # what Syskit does with running components; recorded.
-      def initialize(component_model, name, service_model, block, location, addition_requires_reconfiguration: true,
-                     remove_when_unused: true)
+      def initialize(component_model, name, service_model, block, location, demoted: nil,
+                     addition_requires_reconfiguration: true, remove_when_unused: true)
         @component_model = component_model
         @name = name
         @service_model = service_model
@@ -32,6 +34,7 @@ module Syskit
         @declared_at = location
         @addition_requires_reconfiguration = addition_requires_reconfiguration
         @remove_when_unused = remove_when_unused
+        @demoted = demoted
       end
 
       def addition_requires_reconfiguration?
@@ -40,6 +43,22 @@ module Syskit
 
       def remove_when_unused?
         @remove_when_unused
+      end
+
+      # The dynamic service as the task model that declared it has it
+      # (itself, unless it was promoted to a submodel, see #attach).
+      def demoted
+        @demoted || self
+      end
+
+      # This dynamic service as one of +component_model+, a submodel of
+      # its task model (what +Sub.find_dynamic_service+ gives).
+      def attach(component_model)
+        DynamicDataService.new(
+          component_model, name, service_model, @block, declared_at,
+          demoted: demoted, addition_requires_reconfiguration: addition_requires_reconfiguration?,
+          remove_when_unused: remove_when_unused?
+        )
       end
 
       # The service named +as+ (a BoundDataService of +on+, the task model or
@@ -95,8 +114,9 @@ module Syskit
           check(model, as, location)
           master = master_service(slave_of, location) if slave_of
           mapper = PortMapper.new(component_model, model, mappings.merge(more), location, dynamic: true)
-          @service = BoundDataService.new(component_model, name, model, mapper.map, location,
-                                          master: master, dynamic_service: @dynamic, dynamic_service_options: options)
+          @service = BoundDynamicDataService.new(component_model, name, model, mapper.map, location,
+                                                 master: master, dynamic_service: @dynamic,
+                                                 dynamic_service_options: options)
           @created_ports = mapper.created
           @service
         end

@@ -89,7 +89,9 @@ module Syskit
 
       private
 
-      # The Models::Port of this model for the declaration +port+.
+      # The Models::Port of the declaration +port+: one per declaration, so
+      # that a port read twice is the same object (+assert_same
+      # task_m.out_port, task_m.find_output_port('out')+), as in Syskit.
       def port_model(port)
         (@port_models ||= {}.compare_by_identity)[port] ||= Port.for(self, port)
       end

@@ -14,7 +14,8 @@ module Syskit
       def initialize(task_model, srv_model, mappings, location, dynamic: false)
         @task_model = task_model
         @srv_model = srv_model
-        @explicit = Models.normalize_mappings(srv_model, mappings, location, owner: task_model.name)
+        @explicit = Models.normalize_mappings(srv_model, mappings, location,
+                                              owner: task_model.name, error_class: InvalidProvides)
         @location = location
         @dynamic = dynamic
         @created = []

@@ -59,15 +59,9 @@ module Syskit
       def client_port(direction, service_model, service_port, option)
         model = @device_task.model
         wanted = @device.public_send(option)
-        services = model.services_fulfilling(service_model)
-        if wanted.is_a?(String)
-          service = services.find { |srv| srv.name == wanted }
-          return service.task_port_for(service_model, service_port).name if service
-
-          raise unknown_client_service(option, wanted, services, service_model)
-        end
-        return services.first.task_port_for(service_model, service_port).name if services.size == 1
-        raise ambiguous_client_services(option, services) if services.size > 1
+        service = @device.combus_client_service(model, service_model, wanted.is_a?(String) ? wanted : nil,
+                                                @bus, option.to_s)
+        return service.task_port_for(service_model, service_port).name if service
 
         candidates = ports_of_type(model, direction)
         return candidates.first.name if candidates.size == 1
@@ -118,28 +112,6 @@ module Syskit
           hint: "declare which one in its extension: provides #{service_model}, as: 'bus_client', " \
                 "'#{port_name}' => '#{ports.first.name}' (or a #{short.sub(/(In|Out)Srv\z/, 'Srv')} " \
                 "for both directions), and pass #{option}: 'bus_client' to device"
-        )
-      end
-
-      def ambiguous_client_services(option, services)
-        NetworkError.new(
-          "#{@device_task.model.name}, the driver of #{@device}, provides several bus client services: " \
-          "#{services.map(&:name).join(', ')}",
-          location: @device.declared_at,
-          hint: "choose one with #{option}: '#{services.first.name}' in the device declaration"
-        )
-      end
-
-      def unknown_client_service(option, wanted, services, service_model)
-        hint = if services.empty?
-                 "provide it: provides #{service_model}, as: '#{wanted}'"
-               else
-                 "its services of that kind: #{services.map(&:name).join(', ')}"
-               end
-        NetworkError.new(
-          "#{option}: '#{wanted}' names no #{service_model} service of #{@device_task.model.name}" \
-          "#{Naming.did_you_mean(wanted, services.map(&:name))}",
-          location: @device.declared_at, hint: hint
         )
       end
     end

@@ -224,7 +224,7 @@ module Syskit
         srv = model.driver_services.first
         robot = (@stub_robot ||= Robot::Definition.new(nil))
         device = robot.add_device(Robot::MasterDeviceInstance, srv.driven_device_model,
-                                  "#{srv.name}_stub#{robot.devices.size}",
+                                  "#{srv.name}_stub#{robot.each_master_device.count}",
                                   using: model, options: {}, location: requirements.declared_at)
         device.driver_model = model
         device_task(requirements, device, model: model)

@@ -48,24 +48,11 @@ module Syskit
       def service_provider(service_models, base: nil)
         @service_providers ||= {}
         @service_providers[[service_models, base]] ||= begin
-          ports = {}
-          mappings = service_models.each_with_index.map { |srv, i| stub_service_ports(srv, i, ports) }
+          ports, mappings = Models::Placeholder::PlaceholderBuilder.service_ports(service_models)
           slug = service_models.map { |m| model_slug(m) }.join('_')
           task_model("stub_#{slug}", ports: ports.values, base: base) do |task|
             service_models.each_with_index { |srv, i| task.provides(srv, mappings[i], as: "srv#{i}") }
           end
-        end
-      end
-
-      # Adds to +ports+ the ports of the service +srv+ (the +index+-th) and
-      # returns its port mappings: a port whose name another service took
-      # with another type or direction gets a name of its own.
-      def stub_service_ports(srv, index, ports)
-        srv.ports.each_value.to_h do |p|
-          taken = ports[p.name]
-          name = taken && (taken.type != p.type || taken.direction != p.direction) ? "#{p.name}_srv#{index}" : p.name
-          ports[name] ||= Syskit::Orogen::Port.new(name, p.direction, p.type)
-          [p.name, name]
         end
       end
 

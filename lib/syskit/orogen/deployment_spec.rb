@@ -41,6 +41,12 @@ module Syskit
         @tasks << task
         task
       end
+
+      # oroGen's statement: +task 'name', TaskModel+ (in a
+      # Syskit::Deployment.new_submodel block, or on a spec made in Ruby).
+      def task(name, model)
+        add_task(name.to_s, model, location: Location.of_caller)
+      end
     end
   end
 end

@@ -6,8 +6,21 @@ module Syskit
     # +orogen_model+ (Syskit's name): its name, ports and properties, and
     # port modifiers as in the .orogen file.
     class ModelView
-      def initialize(spec)
+      # +declarations+: the model made in Ruby the spec is of, whose ports
+      # may be declared through the view (see #input_port).
+      def initialize(spec, declarations: nil)
         @spec = spec
+        @declarations = declarations
+      end
+
+      # Declares a port on a task model made in Ruby, as Syskit's tests do
+      # through its oroGen model; those of an .orogen file are declared there.
+      def input_port(name, type)
+        declarations('input_port').input_port(name, type)
+      end
+
+      def output_port(name, type)
+        declarations('output_port').output_port(name, type)
       end
 
       def name
@@ -31,6 +44,17 @@ module Syskit
 
       def to_s
         name
+      end
+
+      private
+
+      def declarations(statement)
+        return @declarations if @declarations
+
+        raise DeclarationError.new(
+          "#{statement} on the oroGen model of #{name}: its ports are declared in its .orogen file",
+          location: Location.of_caller, hint: 'declare it there, or in a submodel made in Ruby (Model.new_submodel)'
+        )
       end
     end
   end

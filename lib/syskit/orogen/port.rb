@@ -39,6 +39,11 @@ module Syskit
         type.name
       end
 
+      # Its type's name (+/double+), as Syskit's port models give it.
+      def type_name
+        type.name
+      end
+
       # The typedef name the port was declared with, when it is not the
       # type's own name (Typelib shows only the latter); nil otherwise.
       attr_reader :declared_type

@@ -21,12 +21,13 @@ module Syskit
         @declaring = false
       end
 
-      # The devices of this robot: those of the robots it uses (see
-      # #use_robot), then its own, in declaration order.
+      # The devices of this robot by name, as Syskit's +robot.devices['gps']+:
+      # those of the robots it uses (see #use_robot), then its own, in
+      # declaration order.
       def devices
-        return @devices.values if @used.empty?
+        return @devices if @used.empty?
 
-        (@used.flat_map(&:devices) + @devices.values).uniq
+        @used.map(&:devices).reduce({}, :merge).merge(@devices)
       end
 
       # Makes the devices of +robot+ (a used profile's) devices of this one.
@@ -76,6 +77,12 @@ module Syskit
         device
       end
 
+      # Registers a slave device by its full name too, as Syskit does
+      # (+robot.devices['stereo.left']+).
+      def register_slave_device(slave)
+        @devices[slave.full_name] = slave
+      end
+
       # Attaches +device+ to +bus+ (a ComBus or its name).
       def attach(device, bus, location:, client_to_bus: true, bus_to_client: true)
         bus = find_bus(bus, location)
@@ -92,12 +99,18 @@ module Syskit
 
         check_cycle(device, bus, location)
         device.attached(bus, client_to_bus, bus_to_client)
+        begin
+          device.check_combus_attachment(location)
+        rescue Syskit::Error
+          device.detached
+          raise
+        end
         bus.add_attached_device(device)
       end
 
       # Resolves the model and driver of every device; returns the errors.
       def resolve(index)
-        devices.filter_map do |device|
+        each_master_device.filter_map do |device|
           index.resolve(device)
           nil
         rescue Syskit::Error => e
@@ -107,7 +120,7 @@ module Syskit
 
       # Bus models whose attached-device configuration defines +method_name+.
       def app_bus_models_defining(method_name)
-        devices.grep(ComBus).map(&:model).uniq.select do |model|
+        each_master_device.grep(ComBus).map(&:model).uniq.select do |model|
           model.attached_device_configuration_modules.any? { |m| m.method_defined?(method_name) }
         end
       end
@@ -152,13 +165,15 @@ module Syskit
                                      location: location, hint: "write device(Model, as: 'name')")
         end
         name = name.to_s
-        unless name.match?(/\A[a-z_][a-zA-Z0-9_]*\z/)
+        # Any identifier, as in Syskit (+as: 'COM'+ gives +COM_dev+).
+        unless name.match?(/\A[A-Za-z_]\w*\z/)
           raise DeclarationError.new("'#{name}' is not a valid device name",
                                      location: location,
-                                     hint: "device names are lower-case identifiers, e.g. as: 'gps'")
+                                     hint: "device names are identifiers, usually lower-case, e.g. as: 'gps'")
         end
         if (other = @devices[name])
-          raise DeclarationError.new("a device named '#{name}' is already declared at #{other.declared_at}",
+          at = " at #{other.declared_at}" if other.respond_to?(:declared_at)
+          raise DeclarationError.new("a device named '#{name}' is already declared#{at}",
                                      location: location, hint: 'give each device its own name')
         end
 
@@ -239,7 +254,7 @@ module Syskit
         found = @devices[bus.to_s]
         return found if found.is_a?(ComBus)
 
-        buses = devices.grep(ComBus).map(&:name)
+        buses = each_master_device.grep(ComBus).map(&:name)
         what = found ? "#{found} is not a communication bus" : "no bus named '#{bus}'"
         hint = if buses.empty?
                  "declare it first: com_bus Model, as: '#{bus}'"

@@ -5,11 +5,13 @@ module Syskit
     # Which loaded task models can drive which device model, built once
     # when the app is loaded (so the load order of files does not matter).
     class DriverIndex
-      def initialize(orogen, app = nil)
+      # +task_models+: task models besides the loaded libraries' (those
+      # made in Ruby by a test, see RobotDefinition).
+      def initialize(orogen, app = nil, task_models: [])
         @orogen = orogen
         @app = app
         @drivers = Hash.new { |h, k| h[k] = [] }
-        orogen.each_task_model do |task_model|
+        (orogen.each_task_model.to_a + task_models).each do |task_model|
           next if task_model.abstract?
 
           task_model.driver_services.each do |srv|
@@ -68,8 +70,8 @@ module Syskit
                else
                  "drivers of #{device.model}: #{others.join(', ')}"
                end
-        raise DriverError.new("#{using.name} does not drive #{device.model} (#{device})",
-                              location: device.declared_at, hint: hint)
+        raise DeclarationError.new("#{using.name} does not drive #{device.model} (#{device})",
+                                   location: device.declared_at, hint: hint)
       end
 
       def single_driver(device)

@@ -192,6 +192,7 @@ module Syskit
         slave.resolve if @slaves_resolved
         (@slaves ||= {})[slave.name] = slave
         define_singleton_method("#{slave.name}_dev") { slave }
+        robot.register_slave_device(slave)
         robot.profile&.slave_registered(slave)
         slave
       end

@@ -2,6 +2,7 @@
 
 require 'syskit/robot/can_traffic'
 require 'syskit/robot/dsl_attributes'
+require 'syskit/robot/com_bus_client'
 
 module Syskit
   module Robot
@@ -17,6 +18,7 @@ module Syskit
     class MasterDeviceInstance
       include CanTraffic::DeviceStatements
       include DslAttributes
+      include ComBusClient
 
       DEFAULT_CONF = ['default'].freeze
 
@@ -155,6 +157,13 @@ module Syskit
         configure_with(bus.model.attached_device_configuration_modules)
       end
 
+      # Undoes #attached, for an attachment that turned out impossible.
+      def detached
+        @bus = nil
+        @client_to_bus = true
+        @bus_to_client = true
+      end
+
       # A Device subclass that includes +modules+ (configuration methods of
       # device and bus models), made once per combination and kept by the
       # first module: devices declared with known model and bus get their
@@ -190,6 +199,19 @@ module Syskit
             "chainable calls on devices: #{chainable_methods.join(', ')}"
           end
         ["#{self} has no '#{method_name}'#{Naming.did_you_mean(method_name, chainable_methods)}", hint]
+      end
+
+      # The same device: the device of this name on the same robot (as
+      # Syskit compares them, by what they answer to +robot+ and +name+).
+      def ==(other)
+        return false if SlaveDeviceInstance === other # rubocop:disable Style/CaseEquality -- the class, not what other says
+
+        other.kind_of?(MasterDeviceInstance) && other.robot.equal?(robot) && other.name == name # rubocop:disable Style/ClassCheck
+      end
+      alias eql? ==
+
+      def hash
+        [robot, name].hash
       end
 
       def to_s

@@ -32,7 +32,14 @@ module Syskit
       end
 
       def device_names
-        devices.map(&:name)
+        each_master_device.map(&:name)
+      end
+
+      # Enumerates the devices and buses themselves, in declaration order.
+      def each_master_device
+        return enum_for(__method__) unless block_given?
+
+        devices.each_value { |device| yield(device) unless device.master_device }
       end
 
       # Whether +name+ is a device (or bus) of this robot; +master.slave+
@@ -45,13 +52,13 @@ module Syskit
       def each_device(&block)
         return enum_for(__method__) unless block
 
-        devices.each(&block)
+        each_master_device(&block)
         each_slave_device(&block)
       end
 
       # Whether it has no device.
       def empty?
-        devices.empty?
+        each_master_device.none?
       end
     end
   end

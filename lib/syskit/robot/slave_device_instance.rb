@@ -131,6 +131,16 @@ module Syskit
         end
       end
 
+      # The same slave: the slave of this name of the same master device.
+      def ==(other)
+        other.kind_of?(SlaveDeviceInstance) && other.master_device == master_device && other.name == name # rubocop:disable Style/ClassCheck
+      end
+      alias eql? ==
+
+      def hash
+        [master_device, name].hash
+      end
+
       def to_s
         "device '#{full_name}'"
       end

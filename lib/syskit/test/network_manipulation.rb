@@ -2,9 +2,61 @@
 
 module Syskit
   module Test
-    # Network generation in Syskit's tests: requirements to tasks, with
-    # stubbed deployments (see Stubs#syskit_stub_and_deploy).
+    # Network generation in Syskit's own tests (syskit/test/self), with the
+    # deployments the test declares: +use_deployment Task => 'name'+ (as a
+    # robot configuration's), deployment models made by
+    # +syskit_stub_deployment_model+, and the requirements' own
+    # (+Task.deployed_as('name')+). See Stubs#syskit_stub_and_deploy for
+    # generation with stubbed deployments.
     module NetworkManipulation
+      # A deployment model running one task of +task_model+ named +name+
+      # (by default the name oroGen gives a task model's default
+      # deployment); the block declares more tasks (+task 'n', Model+).
+      def syskit_stub_deployment_model(task_model = nil, name = nil, &block)
+        name ||= "orogen_default_#{task_model&.name.to_s.gsub(/\W+/, '__')}"
+        Syskit::Deployment.new_submodel(name: name) do
+          task(name, task_model) if task_model
+          instance_eval(&block) if block
+        end
+      end
+
+      # Deploys, in this test, task instances as a robot configuration
+      # does (see Config::RobotConfig#use_deployment): a task model by
+      # name (+Task => 'name'+), or a deployment model.
+      def use_deployment(*specs, **options)
+        syskit_test_robot_config.use_deployment(*specs, **options)
+      end
+
+      # The robot configuration of the test: what it deployed with
+      # #use_deployment.
+      def syskit_test_robot_config
+        @syskit_test_robot_config ||= Config::RobotConfig.new(Test.app, 'test')
+      end
+
+      # Generates and deploys the network of +requirements+ (models,
+      # requirements, or what answers +to_action+) with the test's
+      # deployments and the requirements' own; returns the task of each
+      # (one task when given one).
+      def syskit_deploy(*requirements)
+        syskit_generate(requirements, Network::Generator::STEPS.last)
+      end
+
+      # Generates the network of +requirements+ without deploying it (no
+      # deployment needed); returns the task of each.
+      def syskit_generate_network(*requirements)
+        syskit_generate(requirements, Network::Merge)
+      end
+
+      private
+
+      def syskit_generate(requirements, through)
+        requirements = requirements.flatten
+        resolved = requirements.map { |r| Test.requirements_of(r) }
+        result = Network::Generator.new(Test.app, resolved, robot_config: syskit_test_robot_config)
+                                   .generate(through: through)
+        roots = result.context.roots
+        requirements.size == 1 ? roots.first : roots
+      end
     end
   end
 end

@@ -18,6 +18,8 @@ module Syskit
         assert_has_one_new_sample assert_has_no_new_sample assert_event_command_failed assert_times_out
         assert_fatal_exception assert_transitions_to_state execute_robot_controller
         expect_execution_default_timeout= use_deployment use_ruby_tasks use_unmanaged_task
+        execution_engine capture_log droby_remote_marshaller droby_dump droby_marshalled_and_unmarshalled
+        assert_droby_compatible
       ].freeze
 
       METHODS.each do |name|
@@ -39,11 +41,17 @@ module Syskit
       # outer ones.
       def before_setup
         super
-        model = self.class.ancestors.grep(Class).filter_map { |k| k.desc if k.respond_to?(:desc) }.find do |desc|
-          desc.is_a?(Module) && desc.singleton_class.include?(Compat::NotModelledModel)
-        end
+        described = self.class.ancestors.grep(Class).filter_map { |k| k.desc if k.respond_to?(:desc) }
+        model = described.find { |desc| desc.is_a?(Module) && desc.singleton_class.include?(Compat::NotModelledModel) }
         skip("#{model} #{NOT_MODELLED}") if model
+        running = described.find { |desc| RUNNING_SUBJECTS.include?(desc) }
+        skip("#{running} (a running process) #{REASON}") if running
       end
+
+      # Classes whose instances exist in a running system only: the tests
+      # that describe them skip (their models are the gem's, see
+      # Models::Deployment).
+      RUNNING_SUBJECTS = [Syskit::Deployment].freeze
 
       # In an app's tests, mocks (the flexmock gem) stand for runtime
       # objects, as Syskit's bundles use them. Syskit's own harness

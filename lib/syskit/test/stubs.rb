@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 module Syskit
+  # Test support (see syskit/test and syskit/test/self).
   module Test
     # Devices, buses and drivers made up for a test, on a throw-away robot,
     # and their configuration through the network generator with stub
@@ -82,7 +83,7 @@ module Syskit
       # whose missions they would be.
       def syskit_stub_and_deploy(model = syskit_described_model, recursive: true, as_missions: false, &block) # rubocop:disable Lint/UnusedMethodArgument
         models = model.is_a?(Array) ? model : [model]
-        requirements = models.map { |m| m.respond_to?(:to_instance_requirements) ? m.to_instance_requirements : m }
+        requirements = models.map { |m| Test.requirements_of(m) }
         result = syskit_stub_generate(requirements, &block)
         roots = result.context.roots
         @task = model.is_a?(Array) ? roots : roots.first
@@ -183,5 +184,19 @@ module Syskit
     end
 
     StubModels = Network::StubModels
+
+    # The requirements +object+ stands for: itself, what its action stands
+    # for (+to_action+), or a model's (+to_instance_requirements+).
+    # What Roby's planners return (an action of an action interface, not
+    # modelled) needs the runtime: the test skips.
+    def self.requirements_of(object)
+      object = object.to_action if !object.respond_to?(:to_instance_requirements) && object.respond_to?(:to_action)
+      not_modelled = object.is_a?(Module) && object.singleton_class.include?(Compat::NotModelledModel)
+      if not_modelled || object.is_a?(Compat::NotModelledValue)
+        raise Minitest::Skip, "#{object} (a Roby planner's result) #{RuntimeOnly::REASON}"
+      end
+
+      object.respond_to?(:to_instance_requirements) ? object.to_instance_requirements : object
+    end
   end
 end

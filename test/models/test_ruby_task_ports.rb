@@ -1,0 +1,52 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # Ports of task models made in Ruby (Syskit::TaskContext.new_submodel):
+  # dynamic ports, and ports declared through orogen_model as Syskit's
+  # tests do.
+  class TestRubyTaskPorts < Minitest::Test
+    def setup
+      super
+      load_app(my_app(nil), robots: [])
+      @mark = Models.defined_models.size
+    end
+
+    def teardown
+      Models.clear_defined_since(@mark)
+      super
+    end
+
+    def test_dynamic_ports_match_names_and_types
+      model = TaskContext.new_submodel do
+        dynamic_input_port(/^w\w+$/, '/double')
+        dynamic_output_port(/^\w+$/)
+      end
+      double = Syskit.app.types.find('/double')
+      assert model.spec.dynamic_port_for(:input, 'wdev', double)
+      refute model.spec.dynamic_port_for(:input, 'dev', double)
+      assert model.spec.dynamic_port_for(:output, 'dev', Syskit.app.types.find('/float'))
+    end
+
+    def test_a_dynamic_port_name_may_be_a_string_pattern_as_in_syskits_tests
+      model = TaskContext.new_submodel { dynamic_input_port 'w.*', '/double' }
+      assert model.spec.dynamic_port_for(:input, 'wheel', Syskit.app.types.find('/double'))
+    end
+
+    def test_ports_declared_through_the_orogen_model
+      model = TaskContext.new_submodel
+      model.orogen_model.input_port 'frames_in', '/double'
+      model.orogen_model.output_port 'frames_out', '/double'
+      assert_equal %w[frames_in frames_out], model.ports.keys.sort
+      assert model.find_input_port('frames_in')
+    end
+
+    def test_an_orogen_task_model_gets_its_ports_from_its_orogen_file
+      Syskit.app.orogen.load_library('imu', nil)
+      error = assert_raises(ArgumentError) { OroGen.imu.Task.orogen_model.input_port 'x', '/double' }
+      assert_match(/input_port on the oroGen model of imu::Task: its ports are declared in its .orogen file/,
+                   error.message)
+    end
+  end
+end

@@ -76,7 +76,7 @@ module Syskit
       attr_reader :declared_at
 
       def to_s
-        name || "anonymous component (#{declared_at})"
+        name || super
       end
 
       # The name shown to users.

@@ -47,12 +47,13 @@ module Syskit
         model.port_mappings_for(srv_model).transform_values { |name| port_mappings.fetch(name) }
       end
 
-      # +{service port name => task port}+: the task port behind each port
-      # of the service model, in its order. Syskit's lookups (find_port,
+      # +{service port name => task port}+: the task port (a Models::Port of
+      # the task model) behind each port of the service model, in its order. Syskit's lookups (find_port,
       # find_input_port, has_port?, each_port...) read it (PortLookup).
       def ports
-        task_ports = task_model.ports
-        model.ports.each_key.filter_map { |name| (task = port_mappings[name]) && [name, task_ports[task]] }.to_h
+        model.ports.each_key.filter_map do |name|
+          (task = port_mappings[name]) && [name, task_model.find_port(task)]
+        end.to_h
       end
 
       # The task model's port (a Models::Port) behind a port of the service

@@ -34,12 +34,22 @@ module Syskit
         PortModifiers.new(@port)
       end
 
+      # What the declaration says (see Orogen::Port and ConnectionNeeds).
+      def_delegators :@port, :direction, :input?, :output?, :multiplexes?, :reliable?, :reliable, :buffer_size,
+                     :orocos_type_name, :type_name, :dynamic?, :declared_type, :type_description
+
       # oroGen's modifiers, said on the port itself, as in Syskit
       # (+find_output_port('samples').triggered_once_per_update+).
-      def_delegators :orogen_model, *(PortModifiers.public_instance_methods(false) - %i[name type ==])
+      READERS = (ConnectionNeeds::NEEDS - %i[multiplexes]).freeze
+      def_delegators :orogen_model, *(PortModifiers.public_instance_methods(false) - READERS - %i[name type ==])
 
-      def_delegators :@port, :direction, :input?, :output?, :multiplexes?, :reliable?, :orocos_type_name,
-                     :type_name
+      # +port.period+ reads what the declaration says, +port.period(0.1)+
+      # says it (the same for doc, burst and sample_size).
+      READERS.each do |reader|
+        define_method(reader) do |*args|
+          args.empty? ? @port.public_send(reader) : orogen_model.public_send(reader, *args)
+        end
+      end
 
       # The same port, on +model+ (a submodel, a specialization).
       def attach(model)
@@ -117,9 +127,7 @@ module Syskit
       alias short_name to_s
       alias inspect to_s
 
-      protected
-
-      # The Orogen::Port itself.
+      # The Orogen::Port itself (#orogen_model is a view of it).
       def orogen_port
         @port
       end

@@ -5,6 +5,7 @@ require 'syskit/compat/delayed_argument'
 require 'syskit/compat/not_modelled_value'
 require 'syskit/compat/eigen'
 require 'syskit/compat/roby'
+require 'syskit/compat/roby_task_service'
 require 'syskit/compat/core_extensions'
 require 'syskit/compat/task_statements'
 require 'syskit/compat/conf'
@@ -154,14 +155,8 @@ module Syskit
       namespace.const_set(name, klass)
     end
 
-    # A Roby task service: what a task model provides without ports or a
-    # name (+provides Syskit::LoggerService+); recorded on the model.
-    TaskService = Struct.new(:name) do
-      def to_s
-        name
-      end
-    end
-    Syskit.const_set(:LoggerService, TaskService.new('Syskit::LoggerService'))
+    # Syskit's task service of loggers (Roby's +task_service+).
+    Syskit.const_set(:LoggerService, Roby::TaskService.new_submodel(name: 'Syskit::LoggerService'))
 
     # Syskit's own logger, as Rock code calls it (+Syskit.warn 'x'+), at
     # the levels of Robot's (SYSKIT_LOG).
@@ -181,6 +176,8 @@ module Syskit
     Syskit.const_set(:NetworkGeneration, Module.new)
     Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
+    # Where Syskit names its deployment tasks (OroGen.deployments.name).
+    not_modelled_class(Syskit::OroGenNamespace, :DeploymentNamespace, 'namespace of deployment tasks')
     not_modelled_class(Roby, :Task, 'Roby task')
     # Roby's task library (Roby::Tasks::Simple, ...).
     Roby.const_set(:Tasks, Module.new)

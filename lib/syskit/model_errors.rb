@@ -45,8 +45,40 @@ module Syskit
   # +connect_to+ between components whose ports match in more than one way.
   class AmbiguousAutoConnection < Ambiguous; end
 
-  # +connect_to+ between components none of whose ports match.
-  class InvalidAutoConnection < Error; end
+  # +connect_to+ between components none of whose ports match: it says
+  # which outputs and inputs there were (+PP.pp(error)+ lists them).
+  class InvalidAutoConnection < Error
+    attr_reader :source, :sink
+
+    def initialize(source, sink, location: nil)
+      @source = source
+      @sink = sink
+      super("no connection from #{source} to #{sink}: no output of the first has the type of an input " \
+            'of the second',
+            location: location, hint: 'connect the ports by name: source.out_port.connect_to sink.in_port')
+    end
+
+    def pretty_print(printer)
+      printer.text(message)
+      list_ports(printer, "the outputs of #{source} are", source, :each_output_port)
+      list_ports(printer, "the inputs of #{sink} are", sink, :each_input_port)
+    end
+
+    private
+
+    def list_ports(printer, title, component, enumerator)
+      return unless component.respond_to?(enumerator)
+
+      printer.nest(2) do
+        printer.breakable
+        printer.text(title)
+        printer.nest(2) do
+          printer.breakable
+          printer.seplist(component.public_send(enumerator)) { |port| printer.text("#{port.name}[#{port.type.name}]") }
+        end
+      end
+    end
+  end
 
   # Models that cannot be merged into one (two task models, unrelated).
   class IncompatibleComponentModels < Error; end

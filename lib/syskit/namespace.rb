@@ -74,7 +74,11 @@ module Syskit
       # ...): it stays reachable as a constant and through #entry.
       # The method reads the entry rather than keeping it (see #forget).
       if name.match?(/\A[A-Za-z_]\w*\z/) && !Module.public_method_defined?(name)
-        define_singleton_method(name) { @entries.fetch(name) }
+        define_singleton_method(name) do |*args|
+          raise ArgumentError, "expected 0 arguments, got #{args.size}" unless args.empty?
+
+          @entries.fetch(name)
+        end
       end
       constant = Namespace.constant_for(name)
       const_set(constant, value) if constant && !const_defined?(constant, false)

@@ -32,54 +32,6 @@ module Syskit
     end
   end
 
-  # A port of a task model: name, direction (:input/:output) and type.
-  # Dynamic ports are the ones created at configure time.
-  class Port
-    include ConnectionNeeds
-
-    attr_reader :name, :direction, :type
-
-    # +declared_type+: the type name as the declaration wrote it, when it is
-    # a typedef of +type+ (/base/commands/Joints for /base/samples/Joints).
-    def initialize(name, direction, type, dynamic: false, declared_type: nil)
-      @name = name
-      @direction = direction
-      @type = type
-      @dynamic = dynamic
-      declared = declared_type && Types::Registry.normalize(declared_type) unless declared_type.is_a?(Types::Type)
-      @declared_type = declared unless declared == type.name
-    end
-
-    def dynamic?
-      @dynamic
-    end
-
-    # Whether this port can be connected to +other+: an output to an input
-    # of the same type (Syskit's +can_connect_to?+).
-    def can_connect_to?(other)
-      output? && other.input? && type == other.type
-    end
-
-    # Its type's name, as oroGen's ports say it (+port.orocos_type_name+).
-    def orocos_type_name
-      type.name
-    end
-
-    # The typedef name the port was declared with, when it is not the
-    # type's own name (Typelib shows only the latter); nil otherwise.
-    attr_reader :declared_type
-
-    # The type as users read it: the declared name too, when it differs
-    # (/base/commands/Joints (= /base/samples/Joints)).
-    def type_description
-      declared_type ? "#{declared_type} (= #{type.name})" : type.name
-    end
-
-    def to_s
-      "#{direction} port '#{name}' (#{type_description})"
-    end
-  end
-
   # A port of a task in a generated network (+task.out_port+): it tells
   # what it is connected to.
   class BoundPort
@@ -151,7 +103,7 @@ module Syskit
     # The concrete port this pattern gives for +port_name+ (of +port_type+
     # for a pattern of any type).
     def instantiate(port_name, port_type = type)
-      Port.new(port_name, direction, type || port_type, dynamic: true).copy_needs_from(self)
+      Orogen::Port.new(port_name, direction, type || port_type, dynamic: true).copy_needs_from(self)
     end
 
     def to_s
@@ -165,6 +117,17 @@ module Syskit
     def initialize(port)
       @port = port
     end
+
+    # Views of the same port are equal.
+    def ==(other)
+      other.is_a?(PortModifiers) && other.port.equal?(port)
+    end
+
+    protected
+
+    attr_reader :port
+
+    public
 
     # The port's own readers, for code that looked the port up.
     def name

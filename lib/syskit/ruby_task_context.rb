@@ -47,9 +47,8 @@ module Syskit
         add_port(name, :output, type)
       end
 
-      # Ports created at configure time whose names match +pattern+ (a
-      # Regexp), of +type+ (any type without one): +dynamic_input_port
-      # /^w\w+$/, '/double'+.
+      # Declares ports the task creates at configure time, by name pattern:
+      # +dynamic_output_port(/^\w+$/, '/double')+ (a type of nil: any type).
       def dynamic_input_port(pattern, type = nil)
         add_dynamic_port(pattern, :input, type)
       end
@@ -99,7 +98,7 @@ module Syskit
 
       def add_port(name, direction, type)
         name = check_name(name, "#{direction}_port")
-        port = Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
+        port = Orogen::Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
         spec.ports[name] = port
         Models::Component.declarations_changed
         define_port_reader(name)
@@ -107,11 +106,7 @@ module Syskit
       end
 
       def add_dynamic_port(pattern, direction, type)
-        unless pattern.is_a?(Regexp)
-          raise DeclarationError.new("dynamic_#{direction}_port expects a Regexp, got #{pattern.inspect}",
-                                     location: Location.of_caller, hint: "write dynamic_#{direction}_port(/^w\\w+$/)")
-        end
-
+        pattern = Regexp.new(pattern.to_s) unless pattern.is_a?(Regexp)
         type &&= Models.resolve_type(type, Location.of_caller)
         port = DynamicPort.new(pattern, direction, type)
         spec.dynamic_ports << port

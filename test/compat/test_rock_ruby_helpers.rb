@@ -15,7 +15,8 @@ module Syskit
       refute Rig::Services::Pose.provides?(odometry)
       assert odometry.has_port?(:odometry)
       refute odometry.has_port?('pose')
-      assert_same odometry.find_port('odometry'), odometry.odometry_port
+      assert_equal odometry.odometry_port, odometry.find_output_port('odometry')
+      assert_same odometry, odometry.odometry_port.component_model
       assert_equal RBS, Rig::Services::Pose.pose_port.orocos_type_name
     end
 

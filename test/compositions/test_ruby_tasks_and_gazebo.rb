@@ -78,6 +78,19 @@ module Syskit
       assert_match(/already has a port or property named 'out'/, error.message)
     end
 
+    def test_a_ruby_task_declares_dynamic_ports
+      load_rig
+      model = RubyTaskContext.new_submodel do
+        dynamic_input_port(/^w\w+$/, '/double')
+        dynamic_output_port '^\w+$'
+      end
+      created = model.spec.dynamic_port_for(:input, 'wdev', Syskit.app.types.resolve('/double'))
+      assert_equal :input, created.instantiate('wdev').direction
+      assert_nil model.spec.dynamic_port_for(:input, 'dev', Syskit.app.types.resolve('/double'))
+      assert model.spec.dynamic_port_for(:output, 'any', Syskit.app.types.resolve('/int32_t')), 'of any type'
+      assert_empty model.ports
+    end
+
     def test_use_ruby_tasks_refuses_a_task_context_of_a_library
       robot = "#{FILES['config/robots/default.rb']}Syskit.conf.use_ruby_tasks OroGen.rig.Follower => 'x'\n"
       root = rig_app({ 'config/robots/default.rb' => robot })

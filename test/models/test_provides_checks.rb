@@ -29,6 +29,7 @@ module Syskit
           end
         end
       RUBY
+      assert_kind_of SpecError, error, "Syskit's class for a port collision"
       assert_reported error, %r{MyApp::Rate's output port 'out' \(/double\) collides with MyApp::Gyro's output port},
                       at: 'models/devices/things.rb:5',
                       hint: /same port, say so: provides MyApp::Rate, 'out' => 'out'/, root: root
@@ -58,10 +59,26 @@ module Syskit
           end
         end
       RUBY
+      assert_kind_of SpecError, error
       assert_reported error, /MyApp::Gyro has no port 'rate' to map MyApp::Rate's output port 'out'/,
                       at: 'models/devices/things.rb:4', hint: %r{declare it before .*output_port 'rate', '/double'},
                       root: root
       assert_empty MyApp::Gyro.ports
+    end
+
+    def test_a_mapping_naming_no_port_of_the_provided_model_is_a_spec_error
+      error, root = single_problem(<<~RUBY)
+        module MyApp
+          data_service_type('Rate') { output_port 'out', '/double' }
+          device_type 'Gyro' do
+            output_port 'rate', '/double'
+            provides Rate, 'old' => 'rate'
+          end
+        end
+      RUBY
+      assert_kind_of SpecError, error
+      assert_reported error, /MyApp::Rate has no port named 'old' or 'rate'/, at: 'models/devices/things.rb:5',
+                                                                              hint: /'out' => 'your_port'/, root: root
     end
 
     def test_a_mapping_to_a_port_of_another_type_or_direction_is_an_error
@@ -75,6 +92,7 @@ module Syskit
             end
           end
         RUBY
+        assert_kind_of SpecError, error
         assert_reported error, %r{MyApp::Rate#{i}'s output port 'out' \(/double\) cannot be mapped to MyApp::Gyro#{i}'s},
                         at: 'models/devices/things.rb:5', hint: %r{an output port of type /double}, root: root
         @loaded_apps.pop.unload

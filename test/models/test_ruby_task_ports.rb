@@ -29,11 +29,6 @@ module Syskit
       assert model.spec.dynamic_port_for(:output, 'dev', Syskit.app.types.find('/float'))
     end
 
-    def test_a_dynamic_port_needs_a_regexp
-      error = assert_raises(ArgumentError) { TaskContext.new_submodel { dynamic_input_port 'w.*', '/double' } }
-      assert_match(/dynamic_input_port expects a Regexp/, error.message)
-    end
-
     def test_ports_declared_through_the_orogen_model
       model = TaskContext.new_submodel
       model.orogen_model.input_port 'frames_in', '/double'

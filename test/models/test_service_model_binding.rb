@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'helper'
+require 'syskit/test/plan'
 
 module Syskit
   # What a data service model says of the components providing it, as
@@ -84,6 +85,18 @@ module Syskit
       assert placeholder.fullfills?(MyApp::Pose)
       assert_equal [MyApp::Pose], placeholder.proxied_data_service_models
       refute OroGen.nav.GpsTask.placeholder?
+    end
+
+    def test_placeholder_tasks_of_a_service
+      task = MyApp::Pose.create_placeholder_task
+      assert_kind_of MyApp::Pose.placeholder_model, task
+      assert task.abstract?
+      refute OroGen.nav.GpsTask.new.abstract?
+
+      plan = Test::Plan.new
+      added = MyApp::Pose.instanciate(plan)
+      assert_kind_of MyApp::Pose.placeholder_model, added
+      assert plan.include?(added)
     end
 
     def test_a_placeholder_of_several_services

@@ -30,6 +30,12 @@ module Syskit
       assert_reported error, /'My IMU' is not a valid device name/, at: ROBOT, hint: /lower-case/, root: root
     end
 
+    def test_a_device_name_may_start_with_a_capital_as_in_syskit
+      root = my_app("device(Devices::IMU, as: 'IMU')\n")
+      load_app(root)
+      assert_equal 'IMU', MyApp::Profiles::Base.IMU_dev.device.name
+    end
+
     def test_a_data_service_is_not_a_device
       services = <<~RUBY
         module MyApp

@@ -210,9 +210,40 @@ module Syskit
       device = robot.device(MyApp::Devices::Camera, as: 'rear_cam', using: rear)
       assert_equal [rear, robot], [device.using, device.robot]
       assert_equal [device], robot.each_master_device.to_a
+      assert_same device, robot.rear_cam_dev
       line = __LINE__ + 1
       error = assert_raises(DeclarationError) { robot.device(MyApp::Devices::Camera, as: 'rear_cam') }
       assert_equal "#{File.expand_path(__FILE__)}:#{line}", error.location.to_s
+    end
+
+    def test_dynamic_services_are_promoted_to_submodels
+      assert_nil load_robot(nil)
+      task = OroGen.rig.Task
+      export = task.find_dynamic_service('export')
+      sub = task.new_submodel
+      refute_same export, sub.find_dynamic_service('export'), 'promoted to the submodel'
+      assert_same export, sub.find_dynamic_service('export').demoted
+      assert_same sub.find_dynamic_service('export'), sub.find_dynamic_service('export')
+      assert a_lamp_is_one_service(task, sub)
+    end
+
+    def a_lamp_is_one_service(task, sub)
+      task.specialize.lamp_srv.same_service?(sub.specialize.lamp_srv)
+    end
+
+    def test_instances_required_alike_are_one_service
+      assert_nil load_robot(nil)
+      task = OroGen.rig.Task
+      sub = task.new_submodel
+      a, b, c, d = [[task, 'export', { prefix: 'p' }], [sub, 'export', { prefix: 'p' }],
+                    [task, 'export', { prefix: 'q' }], [task, 'dimmer', {}]].map do |model, dynamic, options|
+        model.specialize.require_dynamic_service(dynamic, as: 'x', **options)
+      end
+      assert_kind_of Models::BoundDynamicDataService, a
+      assert a.same_service?(b), 'same dynamic service and options'
+      refute a.same_service?(c), 'other options'
+      refute a.same_service?(d), 'another dynamic service'
+      refute a.same_service?(a.component_model.lamp_srv)
     end
 
     def test_an_instance_of_a_dynamic_service_the_task_does_not_have

@@ -100,9 +100,9 @@ module Syskit
                                      hint: "its model provides #{model.each_fullfilled_model.to_a.join(', ')}")
         end
 
-        BoundDataService.new(task_model, name, other, port_mappings_for(other), declared_at,
-                             master: master, dynamic_service: dynamic_service,
-                             dynamic_service_options: dynamic_service_options, demoted: demoted)
+        self.class.new(task_model, name, other, port_mappings_for(other), declared_at,
+                       master: master, dynamic_service: dynamic_service,
+                       dynamic_service_options: dynamic_service_options, demoted: demoted)
       end
 
       # This service as a service of +component_model+, a submodel of its
@@ -117,9 +117,9 @@ module Syskit
                                      hint: "attach #{self} to a submodel of its task model")
         end
 
-        BoundDataService.new(component_model, name, model, port_mappings, declared_at,
-                             master: master || self.master&.attach(component_model), dynamic_service: dynamic_service,
-                             dynamic_service_options: dynamic_service_options, demoted: demoted)
+        self.class.new(component_model, name, model, port_mappings, declared_at,
+                       master: master || self.master&.attach(component_model), dynamic_service: dynamic_service,
+                       dynamic_service_options: dynamic_service_options, demoted: demoted)
       end
 
       # The service as its task model's first declaration made it (itself
@@ -128,11 +128,11 @@ module Syskit
         @demoted || self
       end
 
-      # Whether +other+ is this service of this task model (or of one it
-      # derives from, or derives from it), whatever model it is seen through.
+      # Whether +other+ is this service, declared once and promoted to
+      # submodels (whatever model it is seen through): both have the same
+      # #demoted service.
       def same_service?(other)
-        other.is_a?(BoundDataService) && other.full_name == full_name &&
-          (task_model <= other.task_model || other.task_model <= task_model)
+        other.is_a?(BoundDataService) && other.demoted.equal?(demoted)
       end
 
       # This service of +task+ (a task of a network), as its configure

@@ -3,6 +3,7 @@
 require 'syskit/models/not_a_model'
 
 require 'syskit/models/bound_data_service'
+require 'syskit/models/component_merging'
 require 'syskit/models/port_mapper'
 require 'syskit/models/service_lookups'
 require 'syskit/models/task_arguments'
@@ -18,6 +19,7 @@ module Syskit
       include TaskArguments
       include TaskRequirementStatements
       include ServiceLookups
+      include ComponentMerging
 
       class << self
         # Bumped whenever a component model gains a service or a stub: the
@@ -75,6 +77,12 @@ module Syskit
         false
       end
 
+      # The placeholder models made from this one, by kind and services
+      # (see Placeholder.for).
+      def placeholder_models
+        @placeholder_models ||= {}
+      end
+
       # Services by name, inherited ones included.
       # Those of the parent model are promoted to this one (their
       # +component_model+ is this model, as in Syskit), so that selecting
@@ -113,7 +121,7 @@ module Syskit
       # (its full name is then +name.as+).
       def provides(model, mappings = {}, as: nil, slave_of: nil, **more)
         location = Location.of_caller
-        return (@task_services ||= []) << model if model.is_a?(Compat::TaskService) && as.nil?
+        return (@task_services ||= []) << model if model.is_a?(Compat::Roby::TaskServiceModel) && as.nil?
 
         unless model.is_a?(DataServiceModel)
           raise DeclarationError.new("provides expects a data service model, got #{model.inspect}",

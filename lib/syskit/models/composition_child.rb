@@ -182,6 +182,7 @@ module Syskit
       # service models.
       def find_all_data_services_from_type(service_model)
         component = requirements.component_model || Placeholder.for(models)
+        component = component.component_model if component.is_a?(BoundDataService)
         component.services_fulfilling(service_model).map { |srv| ServiceView.new(self, service_model, srv) }
       end
 

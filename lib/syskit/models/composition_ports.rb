@@ -84,7 +84,7 @@ module Syskit
       # The composition's ports (its exports), as ports of a component.
       def ports
         cached(:ports) do
-          exports.transform_values { |e| Port.new(e.name, e.port.direction, e.port.type) }.freeze
+          exports.transform_values { |e| Orogen::Port.new(e.name, e.port.direction, e.port.type) }.freeze
         end
       end
 

@@ -22,6 +22,7 @@ module Syskit
     class DataServiceModel < Module
       include ModelHierarchy
       include PortLookup
+      include PortModelLookups
       include ProvidedModels
       include BusServiceRole
       include ServiceModelBinding
@@ -162,12 +163,13 @@ module Syskit
         @timing[:worstcase_processing_time] = seconds
       end
 
-      # Adds the port +port+ and its reader (+pose_port+, as Syskit's models
-      # have), unless a method of that name exists.
+      # Adds the port +port+ and its reader (+pose_port+, a Models::Port of
+      # this model, as Syskit's models have), unless a method of that name
+      # exists.
       def add_port_entry(port)
         ports[port.name] = port
         reader = "#{port.name}_port"
-        define_singleton_method(reader) { find_port(port.name) } unless respond_to?(reader)
+        define_singleton_method(reader) { Port.for(self, find_port(port.name)) } unless respond_to?(reader)
         port
       end
 
@@ -192,15 +194,18 @@ module Syskit
                                      location: location, hint: 'give each port its own name')
         end
 
-        port = add_port_entry(Port.new(name, direction, Models.resolve_type(type, location), declared_type: type))
+        port = add_port_entry(Orogen::Port.new(name, direction, Models.resolve_type(type, location),
+                                               declared_type: type))
         PortModifiers.new(port)
       end
     end
 
     # Syskit's +Syskit::Models.is_model?(object)+: whether +object+ is a
-    # model (a service, device or bus model, a task or composition model).
+    # model (a service, device or bus model, a task or composition model,
+    # a service bound to one of them).
     def self.is_model?(object) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-      object.is_a?(DataServiceModel) || (object.is_a?(Class) && object < Syskit::AbstractComponent) ||
+      object.is_a?(DataServiceModel) || object.is_a?(BoundDataService) ||
+        (object.is_a?(Class) && object <= Syskit::AbstractComponent) ||
         (object.is_a?(Module) && object.singleton_class.include?(Compat::NotModelledModel))
     end
 

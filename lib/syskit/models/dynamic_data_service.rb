@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/models/bound_dynamic_data_service'
+
 module Syskit
   module Models
     # A service a task model provides under names chosen later, with ports
@@ -19,19 +21,32 @@ module Syskit
     class DynamicDataService
       attr_reader :task_model, :name, :model, :declared_at
 
-      def initialize(task_model, name, model, block, location)
+      def initialize(task_model, name, model, block, location, demoted: nil)
         @task_model = task_model
         @name = name
         @model = model
         @block = block
         @declared_at = location
+        @demoted = demoted
+      end
+
+      # The dynamic service as the task model that declared it has it
+      # (itself, unless it was promoted to a submodel, see #attach).
+      def demoted
+        @demoted || self
+      end
+
+      # This dynamic service as one of +component_model+, a submodel of
+      # its task model (what +Sub.find_dynamic_service+ gives).
+      def attach(component_model)
+        DynamicDataService.new(component_model, name, model, @block, declared_at, demoted: demoted)
       end
 
       # The service named +as+ (a BoundDataService of +on+, the task model or
       # a specialization of it) and the ports it needs created; +location+
       # is where the instance is asked for.
       def instantiate(as, options, location, on: task_model)
-        context = Context.new(self, as, options, on)
+        context = InstantiationContext.new(on, as, self, **options)
         begin
           context.instance_exec(&@block)
         rescue ScriptError, StandardError => e
@@ -51,13 +66,15 @@ module Syskit
         "dynamic service '#{name}' (#{model}) of #{task_model.name}"
       end
 
-      # What the block of a dynamic service is evaluated on.
-      class Context
+      # What the block of a dynamic service is evaluated on (Syskit's
+      # +DynamicDataService::InstantiationContext.new(task_model, name,
+      # dynamic_service, **options)+).
+      class InstantiationContext
         # The instance's name and options.
         attr_reader :name, :options, :service, :created_ports
 
-        def initialize(dynamic, name, options, component_model)
-          @dynamic = dynamic
+        def initialize(component_model, name, dynamic_service, **options)
+          @dynamic = dynamic_service
           @name = name
           @options = options
           @component_model = component_model
@@ -78,8 +95,9 @@ module Syskit
           check(model, as, location)
           master = master_service(slave_of, location) if slave_of
           mapper = PortMapper.new(component_model, model, mappings.merge(more), location, dynamic: true)
-          @service = BoundDataService.new(component_model, name, model, mapper.map, location,
-                                          master: master, dynamic_service: @dynamic, dynamic_service_options: options)
+          @service = BoundDynamicDataService.new(component_model, name, model, mapper.map, location,
+                                                 master: master, dynamic_service: @dynamic,
+                                                 dynamic_service_options: options)
           @created_ports = mapper.created
           @service
         end

@@ -83,10 +83,16 @@ module Syskit
         )
       end
 
-      # The dynamic service +name+, inherited ones included.
+      # The dynamic service +name+, inherited ones included: those are
+      # promoted to this model (see DynamicDataService#attach), once.
       def find_dynamic_service(name)
-        own = @dynamic_services && @dynamic_services[name.to_s]
-        own || (superclass.find_dynamic_service(name) if superclass.respond_to?(:find_dynamic_service))
+        name = name.to_s
+        own = @dynamic_services && @dynamic_services[name]
+        return own if own
+        return unless superclass.respond_to?(:find_dynamic_service)
+
+        promoted = (@promoted_dynamic_services ||= {})
+        promoted[name] ||= superclass.find_dynamic_service(name)&.attach(self)
       end
 
       # Names of the dynamic services, inherited ones included, sorted.

@@ -63,7 +63,7 @@ module Syskit
 
       # The ports named +name+ of each of the required models.
       def find_ports_on_required(name)
-        required_models.filter_map { |model| model.find_port(name.to_s) }
+        required_models.filter_map { |model| FacetedAccess.port_model(model, name.to_s) }
       end
 
       # The ports of the object that the required ports named +name+ map
@@ -112,6 +112,12 @@ module Syskit
       end
       alias inspect to_s
 
+      # The port +name+ of +model+ as Syskit's port readers give it
+      # (+Task.out_port+), nil when it has none.
+      def self.port_model(model, name)
+        model.find_output_port(name) || model.find_input_port(name)
+      end
+
       private
 
       def facet_port(name)
@@ -134,10 +140,11 @@ module Syskit
       def object_port(model, name)
         component = object.is_a?(InstanceRequirements) ? object.component_model : object
         return unless component
-        return component.find_port(name) unless model.is_a?(DataServiceModel)
+        return FacetedAccess.port_model(component, name) unless model.is_a?(DataServiceModel)
 
         service = component.find_data_service_from_type(model)
-        service&.task_port_for(model, name)
+        port = service&.task_port_for(model, name)
+        port && FacetedAccess.port_model(component, port.name)
       end
     end
   end

@@ -1,5 +1,8 @@
 # frozen_string_literal: true
 
+require 'syskit/placeholder'
+require 'syskit/models/placeholder_creation'
+
 module Syskit
   module Models
     # Syskit's placeholder models: "some component that provides these
@@ -13,59 +16,85 @@ module Syskit
     # The list may hold one component model (or one of its services) that
     # the placeholder derives from; the services it already provides are
     # dropped, and when none is left the list means the component itself.
+    #
+    # Placeholder models extend this module (+model.kind_of?(Placeholder)+);
+    # how they are made is in Creation, which Placeholder extends.
     module Placeholder
-      module_function
+      extend Creation
 
-      # The placeholder of +models+, made once per list.
-      def for(models)
-        models = Array(models)
-        (@placeholders ||= {})[models] ||= build(models)
+      # The service models it stands for (those of its component model aside).
+      attr_reader :proxied_data_service_models
+
+      # The component model it derives from (Syskit::Component for
+      # services alone).
+      attr_reader :proxied_component_model
+
+      def placeholder?
+        true
       end
 
-      def build(models)
-        base, services = split(models)
-        return base if services.empty?
-
-        component = base.is_a?(BoundDataService) ? base.task_model : base
-        model = Network::StubModels.service_provider(services, base: component)
-        model.spec.abstract = true
-        model.extend(Proxy)
-        model.proxied_data_service_models = services.freeze
-        model.proxied_component_model = component || Syskit::Component
-        model
+      def abstract?
+        true
       end
 
-      # The component model (or service) of +models+, and the services it
-      # does not provide yet.
-      def split(models)
-        bases = models.select { |m| m.is_a?(Class) || m.is_a?(BoundDataService) }
-        if bases.size > 1
-          raise DeclarationError.new("a placeholder derives from one component model at most, got #{bases.join(', ')}",
-                                     location: Location.of_caller, hint: 'give one component model and services')
-        end
-
-        base = bases.first
-        services = models.grep(DataServiceModel).uniq.reject { |srv| base&.fullfills?(srv) }
-        if !base && services.empty?
-          raise DeclarationError.new('a placeholder needs models',
-                                     location: Location.of_caller)
-        end
-
-        [base, services]
+      # A placeholder is not a specialization: it stands for itself.
+      def concrete_model
+        self
       end
 
-      # What a placeholder model says of itself.
-      module Proxy
-        # The service models it stands for (those of its component model aside).
-        attr_accessor :proxied_data_service_models
+      # What it derives from, as Syskit's placeholders say it.
+      def supermodel
+        proxied_component_model
+      end
 
-        # The component model it derives from (Syskit::Component when none
-        # was given).
-        attr_accessor :proxied_component_model
+      def name
+        @placeholder_name || super
+      end
 
-        def placeholder?
-          true
+      def to_s
+        name
+      end
+
+      def inspect
+        name
+      end
+
+      # Its component model's fullfilled models (none for Syskit::Component),
+      # then its services' and Syskit::AbstractComponent: not the task model
+      # class the gem builds it from.
+      def fullfilled_models
+        models = []
+        unless proxied_component_model.equal?(Syskit::Component)
+          models.concat(proxied_component_model.fullfilled_models)
         end
+        proxied_data_service_models.each { |srv| models.concat(srv.fullfilled_models) }
+        models.delete(Syskit::AbstractComponent)
+        (models.uniq << Syskit::AbstractComponent).freeze
+      end
+
+      # Whether +model+ (a component model or placeholder) stands for
+      # everything this placeholder stands for.
+      def fullfilled_by?(model)
+        (proxied_component_model.equal?(Syskit::Component) || model.fullfills?(proxied_component_model)) &&
+          proxied_data_service_models.all? { |srv| model.fullfills?(srv) }
+      end
+
+      # The placeholder standing for both this one and +other+ (a component
+      # model, a placeholder, or a service of one): self or +other+ when one
+      # stands for the other, else the placeholder of the merged component
+      # models and of both service lists.
+      def merge(other)
+        if other.is_a?(BoundDataService)
+          merged = merge(other.component_model)
+          return merged.find_service(other.full_name) || merged.find_data_service_from_type(other.model)
+        end
+        return self if other.is_a?(Placeholder) ? other.fullfilled_by?(self) : fullfills?(other)
+        return other if fullfilled_by?(other)
+
+        other_base = other.is_a?(Placeholder) ? other.proxied_component_model : other
+        other_services = other.is_a?(Placeholder) ? other.proxied_data_service_models : []
+        Placeholder.for((proxied_data_service_models + other_services).to_set,
+                        component_model: proxied_component_model.merge(other_base))
       end
     end
   end

@@ -44,5 +44,43 @@ module Syskit
         ports.each_value.select(&:output?).each(&)
       end
     end
+
+    # Syskit's port lookups on task and data service models: the
+    # Models::Port of this model (which takes oroGen's port modifiers:
+    # +find_output_port('pose').triggered_once_per_update+); nil when there
+    # is no such port. (+find_port+ and +ports+ give the declarations.)
+    module PortModelLookups
+      def find_output_port(name)
+        port = find_port(name)
+        port_model(port) if port&.output?
+      end
+
+      def find_input_port(name)
+        port = find_port(name)
+        port_model(port) if port&.input?
+      end
+
+      # Its input (output) ports, in declaration order.
+      def each_input_port(&)
+        return enum_for(__method__) unless block_given?
+
+        ports.each_value { |port| yield port_model(port) if port.input? }
+      end
+
+      def each_output_port(&)
+        return enum_for(__method__) unless block_given?
+
+        ports.each_value { |port| yield port_model(port) if port.output? }
+      end
+
+      private
+
+      # The Models::Port of the declaration +port+: one per declaration, so
+      # that a port read twice is the same object (+assert_same
+      # task_m.out_port, task_m.find_output_port('out')+), as in Syskit.
+      def port_model(port)
+        (@port_models ||= {}.compare_by_identity)[port] ||= Port.for(self, port)
+      end
+    end
   end
 end

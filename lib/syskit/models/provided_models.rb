@@ -41,7 +41,7 @@ module Syskit
         check_provides(model, location)
         return self if @parents.key?(model)
 
-        renames = Models.normalize_mappings(model, mappings, location, owner: self)
+        renames = Models.normalize_mappings(model, mappings, location, owner: self, error_class: SpecError)
         adopted = ProvidedPorts.new(self, model, renames, location).adopt
         @parents[model] = adopted
         @fullfilled_models = nil
@@ -151,14 +151,15 @@ module Syskit
     # Port mappings given to +provides+ or +driver_for+, as +{their_port =>
     # our_port}+. Either side may name the provided model's port (the seed
     # writes both orders); aliases such as 'bus_in' for 'from_bus' are known.
-    def self.normalize_mappings(model, mappings, location, owner:)
+    # A mapping naming no port of +model+ raises +error_class+.
+    def self.normalize_mappings(model, mappings, location, owner:, error_class: DeclarationError)
       mappings.to_h do |a, b|
         a = a.to_s
         b = b.to_s
         if (name = model.port_name_for(a)) then [name, b]
         elsif (name = model.port_name_for(b)) then [name, a]
         else
-          raise DeclarationError.new(
+          raise error_class.new(
             "#{model} has no port named '#{a}' or '#{b}' (mapping '#{a}' => '#{b}' on #{owner})",
             location: location,
             hint: "#{model}'s ports are #{model.ports.values.join(', ')}; " \

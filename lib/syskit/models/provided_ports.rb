@@ -11,6 +11,8 @@ module Syskit
     #   the model has a port of that name: then the user must say it is the
     #   same port ('pose' => 'pose') or map it to another one, even when
     #   both have the same type.
+    #
+    # A port that breaks these rules is a SpecError, as in Syskit.
     class ProvidedPorts
       def initialize(model, provided, renames, location)
         @model = model
@@ -34,7 +36,8 @@ module Syskit
           [port.name, name]
         end
         added.each do |port|
-          @model.add_port_entry(Port.new(port.name, port.direction, port.type, declared_type: port.declared_type))
+          @model.add_port_entry(Orogen::Port.new(port.name, port.direction, port.type,
+                                                 declared_type: port.declared_type))
         end
         mapping
       end
@@ -44,7 +47,7 @@ module Syskit
       def check_mapped(port, name)
         target = @model.find_port(name)
         unless target
-          raise DeclarationError.new(
+          raise SpecError.new(
             "#{@model} has no port '#{name}' to map #{@provided}'s #{port} to",
             location: @location,
             hint: "declare it before the provides statement (#{port.direction}_port '#{name}', " \
@@ -53,7 +56,7 @@ module Syskit
         end
         return if target.direction == port.direction && target.type == port.type
 
-        raise DeclarationError.new(
+        raise SpecError.new(
           "#{@provided}'s #{port} cannot be mapped to #{@model}'s #{target}",
           location: @location, hint: "map '#{port.name}' to an #{port.direction} port of type #{port.type}"
         )
@@ -68,8 +71,8 @@ module Syskit
           other = "if they are the same port, say so: provides #{@provided}, '#{port.name}' => '#{port.name}'; " \
                   "else #{other}"
         end
-        raise DeclarationError.new("#{@provided}'s #{port} collides with #{@model}'s #{existing}",
-                                   location: @location, hint: other)
+        raise SpecError.new("#{@provided}'s #{port} collides with #{@model}'s #{existing}",
+                            location: @location, hint: other)
       end
     end
   end

@@ -52,6 +52,20 @@ module Syskit
         @placeholder_model ||= Placeholder.for([self])
       end
 
+      # A task of the placeholder model: an abstract task standing for a
+      # component providing this model (a test's child, a plan's hole).
+      def create_placeholder_task(**arguments)
+        placeholder_model.new(arguments)
+      end
+
+      # A placeholder task added to +plan+ (a plan as data), as Syskit's
+      # +Srv.instanciate(plan)+.
+      def instanciate(plan, _context = nil, **arguments)
+        task = create_placeholder_task(**arguments)
+        plan.add(task)
+        task
+      end
+
       # The loaded task models (not abstract) that drive this device model,
       # by name.
       def find_all_drivers

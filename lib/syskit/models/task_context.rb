@@ -16,6 +16,7 @@ module Syskit
     module TaskContext
       include Component
       include PortLookup
+      include PortModelLookups
       include DynamicServices
       include DriverServices
       include TaskSpecialization
@@ -83,17 +84,9 @@ module Syskit
         ports[name.to_s]
       end
 
-      # Syskit's port lookups, with oroGen's port modifiers
-      # (+find_output_port('pose').triggered_once_per_update+); nil when
-      # there is no such port.
-      def find_output_port(name)
-        port = find_port(name)
-        PortModifiers.new(port) if port&.output?
-      end
-
-      def find_input_port(name)
-        port = find_port(name)
-        PortModifiers.new(port) if port&.input?
+      # A port of this model is its own component port (Syskit's name).
+      def self_port_to_component_port(port)
+        port
       end
 
       # Static ports of +direction+ and +type+, sorted by name.
@@ -179,16 +172,16 @@ module Syskit
         @stub_blocks = []
       end
 
-      # +out_port+ on the model (its Port) and on the tasks (theirs), for
-      # each static port of the spec.
+      # +out_port+ on the tasks and on the model, for each static port of
+      # the spec.
       def define_port_readers(spec)
         spec.all_ports.each_key { |name| define_port_reader(name) }
       end
 
       def define_port_reader(name)
         reader = "#{name}_port"
-        define_singleton_method(reader) { find_port(name) } unless singleton_class.method_defined?(reader)
         define_method(reader) { find_bound_port(name) } unless method_defined?(reader)
+        define_singleton_method(reader) { find_input_port(name) || find_output_port(name) } unless respond_to?(reader)
       end
 
       def add_service(...)

@@ -14,7 +14,7 @@ module Syskit
 
       # A driver for +model+, with the ports of the model.
       def device_driver(model)
-        ports = model.ports.values.map { |p| Syskit::Port.new(p.name, p.direction, p.type) }
+        ports = model.ports.values.map { |p| Syskit::Orogen::Port.new(p.name, p.direction, p.type) }
         task_model("stub_driver_for_#{model_slug(model)}", ports: ports) do |task|
           task.driver_for(model, as: 'dev')
         end
@@ -34,8 +34,8 @@ module Syskit
       def client_driver(model, bus_model, bus_to_client:, client_to_bus:)
         type = bus_model.message_type
         ports = []
-        ports << Syskit::Port.new('from_bus', :input, type) if bus_to_client
-        ports << Syskit::Port.new('to_bus', :output, type) if client_to_bus
+        ports << Syskit::Orogen::Port.new('from_bus', :input, type) if bus_to_client
+        ports << Syskit::Orogen::Port.new('to_bus', :output, type) if client_to_bus
         dynamic = model.is_a?(Models::ComBusModel) ? bus_ports(model.message_type) : []
         task_model("stub_driver_for_#{model_slug(model)}", ports: ports, dynamic: dynamic) do |task|
           task.driver_for(model, as: model.is_a?(Models::ComBusModel) ? 'bus' : 'dev')
@@ -48,24 +48,11 @@ module Syskit
       def service_provider(service_models, base: nil)
         @service_providers ||= {}
         @service_providers[[service_models, base]] ||= begin
-          ports = {}
-          mappings = service_models.each_with_index.map { |srv, i| stub_service_ports(srv, i, ports) }
+          ports, mappings = Models::Placeholder::PlaceholderBuilder.service_ports(service_models)
           slug = service_models.map { |m| model_slug(m) }.join('_')
           task_model("stub_#{slug}", ports: ports.values, base: base) do |task|
             service_models.each_with_index { |srv, i| task.provides(srv, mappings[i], as: "srv#{i}") }
           end
-        end
-      end
-
-      # Adds to +ports+ the ports of the service +srv+ (the +index+-th) and
-      # returns its port mappings: a port whose name another service took
-      # with another type or direction gets a name of its own.
-      def stub_service_ports(srv, index, ports)
-        srv.ports.each_value.to_h do |p|
-          taken = ports[p.name]
-          name = taken && (taken.type != p.type || taken.direction != p.direction) ? "#{p.name}_srv#{index}" : p.name
-          ports[name] ||= Syskit::Port.new(name, p.direction, p.type)
-          [p.name, name]
         end
       end
 

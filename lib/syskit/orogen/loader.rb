@@ -2,7 +2,7 @@
 
 require 'syskit/orogen/task_library'
 require 'syskit/orogen/spec_loader'
-require 'syskit/orogen/root_namespace'
+require 'syskit/orogen_namespace'
 require 'syskit/source_calls'
 
 module Syskit
@@ -18,7 +18,9 @@ module Syskit
         # Libraries whose .orogen file is being evaluated, outermost first.
         @loading = []
         @deployments = {}
-        @namespace = RootNamespace.new(self)
+        @namespace = Namespace.new('OroGen').extend(OroGenNamespace)
+        @namespace.loader = self
+        @namespace.const_set(:Spec, Compat::OrogenSpec)
         available_library_names.each { |name| @namespace.add_unloaded(name) }
       end
 

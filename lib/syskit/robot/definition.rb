@@ -165,10 +165,11 @@ module Syskit
                                      location: location, hint: "write device(Model, as: 'name')")
         end
         name = name.to_s
-        unless name.match?(/\A[a-z_][a-zA-Z0-9_]*\z/)
+        # Any identifier, as in Syskit (+as: 'COM'+ gives +COM_dev+).
+        unless name.match?(/\A[A-Za-z_]\w*\z/)
           raise DeclarationError.new("'#{name}' is not a valid device name",
                                      location: location,
-                                     hint: "device names are lower-case identifiers, e.g. as: 'gps'")
+                                     hint: "device names are identifiers, usually lower-case, e.g. as: 'gps'")
         end
         if (other = @devices[name])
           at = " at #{other.declared_at}" if other.respond_to?(:declared_at)

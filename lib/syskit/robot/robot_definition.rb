@@ -29,6 +29,14 @@ module Syskit
         @dsl.through(...)
       end
 
+      # Each device is also +robot.name_dev+, as Syskit's robots give them.
+      def add_device(...)
+        device = super
+        reader = "#{device.name}_dev"
+        define_singleton_method(reader) { device } unless respond_to?(reader)
+        device
+      end
+
       private
 
       # Without an app there is nothing to find drivers among yet.
@@ -45,6 +53,7 @@ module Syskit
       def ruby_task_models
         Models.defined_models.select { |m| m.is_a?(Class) && m < RubyTaskContext }
       end
+
     end
   end
 end

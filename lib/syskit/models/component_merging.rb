@@ -1,0 +1,58 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Models
+    # Whether two component models may stand for one task, and which model
+    # that task has, as Syskit's component models answer: +can_merge?+ and
+    # +merge+. Part of Component.
+    module ComponentMerging
+      # Whether a task of +target_model+ may stand for a task of this model:
+      # it fullfills this model (the models specializations were made from,
+      # for specializations), and the services of the same name they both
+      # have are of one model, with the same options when both come from
+      # dynamic services.
+      def can_merge?(target_model)
+        self_real = concrete_model
+        target_real = target_model.concrete_model
+        if !self_real.equal?(self) || !target_real.equal?(target_model)
+          return false unless self_real.can_merge?(target_real)
+        elsif !target_model.fullfills?(self)
+          return false
+        end
+
+        each_data_service.all? do |srv|
+          target_srv = target_model.find_data_service(srv.full_name)
+          !target_srv || mergeable_services?(srv, target_srv)
+        end
+      end
+
+      # The model of a task standing for both this model and +other+: the
+      # more specific of the two (a placeholder or a service of one merges
+      # itself).
+      def merge(other)
+        return other.merge(self) if other.is_a?(BoundDataService) || other.placeholder?
+        return self if self <= other
+        return other if other <= self
+
+        raise IncompatibleComponentModels.new("cannot merge #{self} and #{other}: neither derives from the other",
+                                              location: Location.of_caller,
+                                              hint: 'a task has one model: choose models that derive from one another')
+      end
+
+      # The model tasks of this one are deployed as: itself (task models'
+      # specializations say otherwise, see TaskSpecialization).
+      def concrete_model
+        self
+      end
+
+      private
+
+      def mergeable_services?(srv, target_srv)
+        return false unless srv.model.equal?(target_srv.model)
+        return true unless srv.dynamic? && target_srv.dynamic?
+
+        srv.dynamic_service_options == target_srv.dynamic_service_options
+      end
+    end
+  end
+end

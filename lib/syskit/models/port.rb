@@ -1,0 +1,138 @@
+# frozen_string_literal: true
+
+require 'forwardable'
+
+module Syskit
+  module Models
+    # A port of a component model or of a data service model (Syskit's
+    # +task_m.out_port+, +srv_m.find_input_port('cmd')+): the oroGen port
+    # (+orogen_model+) as seen from that model (+component_model+). The
+    # port of a task instance is a Syskit::Port.
+    class Port
+      extend Forwardable
+
+      attr_reader :component_model, :name, :type
+
+      # +orogen_model+: an Orogen::Port; +name+, when the port is known by
+      # another name on +component_model+.
+      def initialize(component_model, orogen_model, name = orogen_model.name)
+        @component_model = component_model
+        @port = orogen_model
+        @name = name
+        @type = orogen_model.type
+      end
+
+      # The port's model for +component_model+, of the class of its
+      # direction (InputPort or OutputPort).
+      def self.for(component_model, orogen_port)
+        (orogen_port.input? ? InputPort : OutputPort).new(component_model, orogen_port)
+      end
+
+      # oroGen's port, with its modifiers (+multiplexes+,
+      # +needs_reliable_connection+, +triggered_once_per_update+...).
+      def orogen_model
+        PortModifiers.new(@port)
+      end
+
+      # oroGen's modifiers, said on the port itself, as in Syskit
+      # (+find_output_port('samples').triggered_once_per_update+).
+      def_delegators :orogen_model, *(PortModifiers.public_instance_methods(false) - %i[name type ==])
+
+      def_delegators :@port, :direction, :input?, :output?, :multiplexes?, :reliable?, :orocos_type_name
+
+      # The same port, on +model+ (a submodel, a specialization).
+      def attach(model)
+        copy = dup
+        copy.instance_variable_set(:@component_model, model)
+        copy
+      end
+
+      # The port of a component model this port stands for (itself on a
+      # component model); a data service's port has none: ArgumentError.
+      def to_component_port
+        if component_model.respond_to?(:self_port_to_component_port)
+          return component_model.self_port_to_component_port(self)
+        end
+
+        raise ArgumentError, "cannot resolve a port of #{component_model} into a component port"
+      end
+
+      # #to_component_port, or itself when there is none.
+      def try_to_component_port
+        return self unless component_model.respond_to?(:self_port_to_component_port)
+
+        component_model.self_port_to_component_port(self)
+      end
+
+      # Whether this output port can feed +sink+, an input port of the
+      # same type, once both are resolved to component ports.
+      def can_connect_to?(sink)
+        source = try_to_component_port
+        return source.can_connect_to?(sink) unless source.equal?(self) || source == self
+
+        sink = sink.try_to_component_port if sink.respond_to?(:try_to_component_port)
+        output? && sink.input? && type == sink.type
+      end
+
+      # Checks that this port may be connected to +sink+ (a port of
+      # another component model): an output to an input of the same type.
+      # Models are connected as children of a composition (+out_child.x_port
+      # .connect_to in_child.y_port+), which is where the connection is kept.
+      def connect_to(sink, _policy = {})
+        location = Location.of_caller
+        source = to_component_port
+        sink = sink.to_component_port if sink.respond_to?(:to_component_port)
+        check_connection(source, sink, location)
+        raise DeclarationError.new(
+          "#{source} and #{sink} are ports of task models, not of composition children: there is nothing to keep " \
+          'the connection in', location: location, hint: 'connect the ports of children in a composition'
+        )
+      end
+
+      def ==(other)
+        other.is_a?(Port) && other.component_model == component_model && other.name == name &&
+          other.orogen_port.equal?(orogen_port)
+      end
+      alias eql? ==
+
+      def hash
+        [Port, component_model, name].hash
+      end
+
+      def to_s
+        "#{component_model}.#{name}_port[#{type.name}]"
+      end
+      alias short_name to_s
+      alias inspect to_s
+
+      protected
+
+      # The Orogen::Port itself.
+      def orogen_port
+        @port
+      end
+
+      private
+
+      def check_connection(source, sink, location)
+        error = if !source.output? then [WrongPortConnectionDirection, "#{source} is not an output port"]
+                elsif !sink.respond_to?(:input?) || !sink.input?
+                  [WrongPortConnectionDirection, "#{sink} is not an input port"]
+                elsif source.component_model == sink.component_model
+                  [SelfConnection, 'they are both ports of the same component']
+                elsif source.type != sink.type then [WrongPortConnectionTypes, 'their types differ']
+                end
+        return unless error
+
+        raise error[0].new("cannot connect #{source} to #{sink}: #{error[1]}",
+                           location: location, hint: 'connect an output port to an input port of the same type')
+      end
+    end
+
+    # An input port of a component or data service model.
+    class InputPort < Port; end
+
+    # An output port of a component or data service model.
+    class OutputPort < Port; end
+  end
+end

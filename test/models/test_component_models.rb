@@ -1,0 +1,80 @@
+# frozen_string_literal: true
+
+require 'helper'
+require 'pp'
+
+module Syskit
+  # Component models made in Ruby, as Syskit's own tests make them
+  # (Syskit::Component.new_submodel), and what a model knows of its
+  # submodels.
+  class TestComponentModels < Minitest::Test
+    def test_a_component_model_made_in_ruby_is_named_as_asked_and_is_a_model
+      model = Component.new_submodel(name: 'Arm')
+      assert_equal 'Arm', model.name
+      assert_equal 'Arm', model.short_name
+      assert Models.is_model?(model)
+      assert Models.is_model?(Component)
+      assert_kind_of model, model.new
+    end
+
+    def test_an_anonymous_component_model_says_where_it_was_made
+      assert_match(/anonymous component \(.*test_component_models.rb:\d+\)/, Component.new_submodel.to_s)
+    end
+
+    def test_a_component_model_knows_its_submodels_until_it_clears_them
+      root = Component.new_submodel
+      child = root.new_submodel
+      grandchild = child.new_submodel
+      other = root.new_submodel
+      assert root.has_submodel?(grandchild)
+      assert Component.has_submodel?(grandchild)
+
+      child.clear_submodels
+      refute child.has_submodel?(grandchild)
+      refute root.has_submodel?(grandchild)
+      assert root.has_submodel?(other)
+
+      root.clear_submodels
+      refute root.has_submodel?(child)
+    end
+
+    module Named; end
+
+    def test_clearing_submodels_removes_their_constants_but_keeps_the_gems_own_models
+      model = TaskContext.new_submodel
+      Named.const_set(:Task, model)
+      assert TaskContext.has_submodel?(model)
+      TaskContext.clear_submodels
+      refute TaskContext.has_submodel?(model)
+      refute Named.const_defined?(:Task, false)
+      assert TaskContext.has_submodel?(RubyTaskContext)
+      assert TaskContext.has_submodel?(TaskContext.new_submodel)
+    end
+
+    def test_a_service_bound_to_a_component_is_a_model
+      srv = DataService.new_submodel
+      task = Component.new_submodel { provides srv, as: 'srv' }
+      assert Models.is_model?(task.srv_srv)
+    end
+
+    def test_an_invalid_auto_connection_lists_the_ports_it_looked_at
+      double = Types::OpaqueType.new('/double')
+      source = TaskContext.new_submodel(name: 'Source') { output_port 'out', double }
+      sink = TaskContext.new_submodel(name: 'Sink') { input_port 'in', double }
+      text = PP.pp(InvalidAutoConnection.new(source, sink), +'')
+      assert_match(%r{the outputs of Source are\s+out\[/double\]}, text)
+      assert_match(%r{the inputs of Sink are\s+in\[/double\]}, text)
+    end
+
+    def test_a_dynamic_service_block_is_evaluated_on_an_instantiation_context
+      srv = DataService.new_submodel
+      task = TaskContext.new_submodel
+      dynamic = task.dynamic_service(srv, as: 'dyn') { provides srv }
+      context = Models::DynamicDataService::InstantiationContext.new(task, 'one', dynamic, frame: 'body')
+      assert_equal({ frame: 'body' }, context.options)
+      bound = context.provides(srv)
+      assert_equal 'one', bound.name
+      assert_raises(ArgumentError) { context.provides(srv) }
+    end
+  end
+end

@@ -1,0 +1,72 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # The ports of task and data service models (Syskit::Models::Port), as
+  # Syskit's model-level API gives them.
+  class TestPortModels < Minitest::Test
+    def setup
+      super
+      @double = Types::OpaqueType.new('/double')
+      @int = Types::OpaqueType.new('/int')
+      double = @double
+      @source = TaskContext.new_submodel do
+        input_port 'in', double
+        output_port 'out', double
+      end
+      @sink = TaskContext.new_submodel { input_port 'in', double }
+    end
+
+    def test_a_task_models_ports_are_ports_of_that_model_by_direction
+      port = @source.out_port
+      assert_kind_of Models::OutputPort, port
+      assert_same @source, port.component_model
+      assert_equal 'out', port.name
+      assert_equal port, @source.find_output_port('out')
+      assert_nil @source.find_input_port('out')
+      assert_kind_of Models::InputPort, @source.find_input_port('in')
+      assert_equal %w[out], @source.each_output_port.map(&:name)
+      assert_equal port, port.to_component_port
+    end
+
+    def test_the_orogen_model_of_a_port_is_what_its_declaration_returned
+      declared = nil
+      double = @double
+      model = TaskContext.new_submodel { declared = output_port('p', double) }
+      assert_equal declared, model.p_port.orogen_model
+    end
+
+    def test_a_service_port_has_no_component_port
+      double = @double
+      srv = DataService.new_submodel { output_port 'out', double }
+      assert_same srv, srv.out_port.component_model
+      assert_raises(ArgumentError) { srv.out_port.to_component_port }
+      assert_equal srv.out_port, srv.out_port.try_to_component_port
+    end
+
+    def test_ports_can_connect_from_an_output_to_an_input_of_the_same_type
+      int = @int
+      other = TaskContext.new_submodel { input_port 'in', int }
+      assert @source.out_port.can_connect_to?(@sink.in_port)
+      refute @sink.in_port.can_connect_to?(@source.out_port)
+      refute @source.out_port.can_connect_to?(other.in_port)
+    end
+
+    def test_connecting_ports_of_task_models_says_what_is_wrong
+      int = @int
+      other = TaskContext.new_submodel { input_port 'in', int }
+      assert_raises(WrongPortConnectionDirection) { @sink.in_port.connect_to(@sink.in_port) }
+      assert_raises(WrongPortConnectionDirection) { @source.out_port.connect_to(@source.out_port) }
+      assert_raises(SelfConnection) { @source.out_port.connect_to(@source.in_port) }
+      assert_raises(WrongPortConnectionTypes) { @source.out_port.connect_to(other.in_port) }
+      error = assert_raises(DeclarationError) { @source.out_port.connect_to(@sink.in_port) }
+      assert_match(/composition/, error.hint)
+    end
+
+    def test_a_port_takes_the_orogen_modifiers_of_its_declaration
+      @sink.in_port.needs_reliable_connection
+      assert @sink.in_port.reliable?
+    end
+  end
+end

@@ -53,7 +53,6 @@ module Syskit
       def ruby_task_models
         Models.defined_models.select { |m| m.is_a?(Class) && m < RubyTaskContext }
       end
-
     end
   end
 end

@@ -178,7 +178,7 @@ module Syskit
         @candidates = nil
         @by_model = nil
         @deployments << deployment
-        deployment.tasks.each do |task|
+        deployment.task_activities.each do |task|
           if (other = @deployed_tasks[task.name])
             raise DeploymentError.new(
               "deployed task name '#{task.name}' is used twice (#{other} and #{task})",

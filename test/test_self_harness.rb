@@ -100,6 +100,27 @@ module Syskit
       assert_equal "nil\n", out
     end
 
+    def test_runtime_classes_and_helpers_outside_syskit_skip_too
+      Dir.mktmpdir do |dir|
+        write_self_test(dir, 'test_runtime.rb', <<~RUBY)
+          require 'syskit/test/self'
+
+          describe 'runtime' do
+            it('waits on threads') { Concurrent::CyclicBarrier.new(2) }
+            it('makes a Roby app configuration') { Syskit::RobyApp::Configuration.new(Roby::Application.new) }
+            it('captures logs') { capture_log(Syskit, :warn) { flunk } }
+          end
+        RUBY
+        report = File.join(dir, 'report.jsonl')
+        out, err, = ruby_process('test/test_runtime.rb', chdir: dir, env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
+        assert_match(/3 runs, 0 assertions, 0 failures, 0 errors, 3 skips/, out, err)
+        messages = File.readlines(report).map { |l| JSON.parse(l)['message'] }.sort
+        assert_equal ["Concurrent::CyclicBarrier needs Syskit's runtime (Roby and Orocos)",
+                      "Syskit::RobyApp::Configuration needs Syskit's runtime (Roby and Orocos)",
+                      "capture_log needs Syskit's runtime (Roby and Orocos)"], messages
+      end
+    end
+
     def test_syskit_test_can_be_required_after_the_harness
       Dir.mktmpdir do |dir|
         write_self_test(dir, 'test_both.rb', <<~RUBY)

@@ -29,6 +29,11 @@ module Syskit
       assert model.spec.dynamic_port_for(:output, 'dev', Syskit.app.types.find('/float'))
     end
 
+    def test_a_dynamic_port_name_may_be_a_string_pattern_as_in_syskits_tests
+      model = TaskContext.new_submodel { dynamic_input_port 'w.*', '/double' }
+      assert model.spec.dynamic_port_for(:input, 'wheel', Syskit.app.types.find('/double'))
+    end
+
     def test_ports_declared_through_the_orogen_model
       model = TaskContext.new_submodel
       model.orogen_model.input_port 'frames_in', '/double'

@@ -13,7 +13,8 @@ module Syskit
         NOT_MODELLED = %i[using load_plugins setup_robot_names_from_config_dir shell? public_logs?
                           log_dir register_generators].freeze
 
-        def initialize(app)
+        # +app+: the active app (Roby's +Roby::Application.new+ takes none).
+        def initialize(app = DSL.app!)
           @app = app
         end
 

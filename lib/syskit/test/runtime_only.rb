@@ -18,6 +18,8 @@ module Syskit
         assert_has_one_new_sample assert_has_no_new_sample assert_event_command_failed assert_times_out
         assert_fatal_exception assert_transitions_to_state execute_robot_controller
         expect_execution_default_timeout= use_deployment use_ruby_tasks use_unmanaged_task
+        execution_engine capture_log droby_remote_marshaller droby_dump droby_marshalled_and_unmarshalled
+        assert_droby_compatible
       ].freeze
 
       METHODS.each do |name|

@@ -9,11 +9,28 @@ module Syskit
     # one (+.new+) skips the test, saying why. Outside the harness they do
     # not exist. A class the gem models is never replaced.
     module UnmodelledClasses
-      RUNTIME = "needs Syskit's runtime (Roby/Orocos)"
+      RUNTIME = RuntimeOnly::REASON
       INTERNAL = "is the inside of Syskit's implementation, which its tests pin; not modelled by this gem"
 
-      # Syskit's name => why the gem does not have it.
+      # Syskit's name (under Syskit, or from the top level with a leading
+      # +::+: Roby's, oroGen's and concurrent-ruby's classes that Syskit's
+      # tests reach) => why the gem does not have it. Syskit's tests reach
+      # Roby, Orocos and Typelib through the stand-ins Compat installs.
       CLASSES = {
+        'RobyApp::Configuration' => RUNTIME,
+        'RobyApp::UnmanagedTasksManager' => RUNTIME,
+        'RobyApp::UnmanagedProcess' => RUNTIME,
+        'Compat::Orocos::RubyTasks::ProcessManager' => RUNTIME,
+        'Compat::Orocos::RubyTasks::TaskContext' => RUNTIME,
+        'Compat::Orocos::TaskContext' => RUNTIME,
+        'Compat::Orocos::Property' => RUNTIME,
+        'Compat::Roby::DRoby::Marshal' => RUNTIME,
+        'Compat::Roby::DRoby::Unmarshallable' => RUNTIME,
+        'Compat::Typelib::CXXRegistry' => RUNTIME,
+        '::OroGen::Loaders::Base' => RUNTIME,
+        '::Concurrent::CyclicBarrier' => RUNTIME,
+        '::Concurrent::IVar' => RUNTIME,
+        '::Concurrent::Event' => RUNTIME,
         'Models::DynamicPortBinding' => RUNTIME,
         'Models::DynamicPortBinding::ValueResolver' => RUNTIME,
         'Models::DeploymentGroup' => RUNTIME,
@@ -37,13 +54,14 @@ module Syskit
       end
 
       def self.define(path, reason)
-        *parents, name = path.split('::')
-        namespace = parents.inject(Syskit) do |mod, part|
+        root = path.start_with?('::') ? Object : Syskit
+        *parents, name = path.delete_prefix('::').split('::')
+        namespace = parents.inject(root) do |mod, part|
           mod.const_defined?(part, false) ? mod.const_get(part, false) : mod.const_set(part, Module.new)
         end
         return if namespace.const_defined?(name, false)
 
-        full_name = "Syskit::#{path}"
+        full_name = path.start_with?('::') ? path.delete_prefix('::') : "Syskit::#{path}"
         namespace.const_set(name, Class.new do
           define_singleton_method(:new) { |*, **| raise Minitest::Skip, "#{full_name} #{reason}" }
         end)

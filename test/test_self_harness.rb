@@ -230,6 +230,12 @@ module Syskit
           assert_equal 'stubbed', syskit_deploy(@task_m).orocos_name
         end
 
+        it('deploys with a stub configured deployment') do
+          configured = syskit_stub_configured_deployment(@task_m, 'configured')
+          assert_equal 'stubs', configured.process_server_name
+          assert_equal 'configured', syskit_deploy(@task_m).orocos_name
+        end
+
         it('takes what answers to_action') do
           use_deployment @task_m => 'probe_task'
           assert_kind_of @task_m, syskit_deploy(flexmock(to_action: @task_m))
@@ -255,7 +261,7 @@ module Syskit
       Dir.mktmpdir do |dir|
         write_self_test(dir, 'test_deploy.rb', DEPLOY_TEST)
         out, err, = ruby_process('test/test_deploy.rb', '-v', chdir: dir)
-        assert_match(/7 runs, \d+ assertions, 0 failures, 0 errors, 1 skips/, out, err)
+        assert_match(/8 runs, \d+ assertions, 0 failures, 0 errors, 1 skips/, out, err)
         assert_match(/a Roby planner's result\) needs Syskit's runtime/, out)
       end
     end

@@ -30,9 +30,6 @@ module Syskit
   # A name (+child_name+, a definition) that nothing in the context resolves.
   class NameResolutionError < InstanciationError; end
 
-  # No task can be allocated for a requirement.
-  class TaskAllocationFailed < SpecError; end
-
   # Several specializations of a composition fit one selection.
   class AmbiguousSpecialization < Ambiguous; end
 

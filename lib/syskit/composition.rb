@@ -19,8 +19,7 @@ module Syskit
   class Composition < Component
     extend Models::Composition
 
-    attr_reader :arguments
-    attr_accessor :conf, :name, :requirement, :parent
+    attr_accessor :name, :parent
 
     def initialize(arguments = {})
       super()

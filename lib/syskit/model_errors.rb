@@ -14,9 +14,6 @@ module Syskit
   # stand for them (+provides Srv, 'in' => 'nonexistent'+).
   class InvalidPortMapping < SpecError; end
 
-  # A component model that cannot provide the service it declares.
-  class InvalidProvides < SpecError; end
-
   # A selection (+use('child' => Model)+) that cannot fulfil what it is
   # selected for.
   class InvalidSelection < SpecError; end
@@ -32,9 +29,6 @@ module Syskit
 
   # A name (+child_name+, a definition) that nothing in the context resolves.
   class NameResolutionError < InstanciationError; end
-
-  # No task can be allocated for a requirement.
-  class TaskAllocationFailed < SpecError; end
 
   # Several specializations of a composition fit one selection.
   class AmbiguousSpecialization < Ambiguous; end
@@ -123,4 +117,9 @@ module Syskit
       end
     end
   end
+
+  # A component model that cannot provide the service it declares (no
+  # port, or several, for a port of the service; a mapping naming a port
+  # that does not exist): a declaration error, so an ArgumentError too.
+  class InvalidProvides < DeclarationError; end
 end

@@ -28,6 +28,16 @@ module Syskit
       assert_same service, @model.require_dynamic_service('speed', as: 'left')
     end
 
+    def test_errors_of_the_block_name_the_composition_and_the_instance
+      @model.dynamic_service Rig::Services::SpeedSource, as: 'speed' do
+        raise ArgumentError, 'broken'
+      end
+      error = assert_raises(DeclarationError) { @model.require_dynamic_service 'speed', as: 'left' }
+      assert_match(/in dynamic service 'speed' of Rig for 'left'/, error.message)
+      assert_equal "dynamic service 'speed' (Rig::Services::SpeedSource) of Rig",
+                   @model.find_dynamic_service('speed').to_s
+    end
+
     def test_an_instance_must_provide_the_service
       @model.dynamic_service Rig::Services::SpeedSource, as: 'speed' do
         export follow_child.command_port

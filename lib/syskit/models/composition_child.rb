@@ -60,7 +60,8 @@ module Syskit
 
       # Replaces what the child requires, and the +x_port+ readers with it.
       def requirements=(requirements)
-        @requirements = requirements
+        # Held by the model from now on, as Syskit freezes what it is given.
+        @requirements = requirements.freeze
         @ports = nil
         @children = nil
         define_port_readers

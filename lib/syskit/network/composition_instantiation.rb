@@ -20,7 +20,7 @@ module Syskit
         composition = model.new(task_arguments(model, requirements, parent))
         composition.conf = requirements.conf
         composition.name = path
-        composition.requirement = requirements
+        composition.requirements = requirements
         composition.parent = parent
         @building.push(composition)
         instantiate_children(composition, selections, requirements, context)

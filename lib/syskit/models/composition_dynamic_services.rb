@@ -57,7 +57,8 @@ module Syskit
 
         raise DeclarationError.new(
           "the block of dynamic service '#{dynamic.name}' of #{self} provides no #{dynamic.service_model} as '#{as}'",
-          location: dynamic.declared_at || location, hint: "call provides #{dynamic.service_model}, as: name in the block"
+          location: dynamic.declared_at || location,
+          hint: "call provides #{dynamic.service_model}, as: name in the block"
         )
       end
     end

@@ -89,16 +89,13 @@ module Syskit
       end
 
       # A plain component model has no ports (task contexts and
-      # compositions do), and drives no device.
+      # compositions do). (What devices it drives: DriverServices, from
+      # its services, as for every component model.)
       def ports
         {}
       end
 
       def find_port(_name); end
-
-      def driver_services
-        []
-      end
 
       private
 

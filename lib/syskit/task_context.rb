@@ -163,14 +163,19 @@ module Syskit
     end
 
     def find_port(name)
-      created_ports[name.to_s] || model.find_port(name)
+      created_ports[name.to_s] || model.ports[name.to_s]
     end
 
     # The port +name+ of this task (+task.out_port+), which knows what it
     # is connected to in the network; nil when there is no such port.
     def find_bound_port(name)
       port = find_port(name)
-      BoundPort.new(self, port) if port
+      Port.new(Models::Port.for(model, port), self) if port
+    end
+
+    # A port of this task is its own component port (Syskit's name).
+    def self_port_to_component_port(port)
+      port
     end
 
     # The connections of the network that start or end at this task.

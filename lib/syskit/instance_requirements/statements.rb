@@ -62,6 +62,12 @@ module Syskit
         change(selections: injection, declared_at: declared_at || location)
       end
 
+      # Syskit's +add_models+: these requirements also requiring +added+
+      # (a model that refines one of the models replaces it).
+      def add_models(added, location: Location.of_caller)
+        copy(models: Models.merge_models(models, added, location, self))
+      end
+
       # Syskit's +with_dynamic_service+: the task model specialized with
       # the instance +as+ of its dynamic service +dynamic_name+ (see
       # Models::DynamicServices#require_dynamic_service).

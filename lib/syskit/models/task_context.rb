@@ -78,10 +78,6 @@ module Syskit
         spec ? spec.all_ports : {}
       end
 
-      def find_port(name)
-        ports[name.to_s]
-      end
-
       # A port of this model is its own component port (Syskit's name).
       def self_port_to_component_port(port)
         port
@@ -170,16 +166,18 @@ module Syskit
         @stub_blocks = []
       end
 
-      # +out_port+ on the tasks and on the model, for each static port of
-      # the spec.
+      # +out_port+ on the model (its Models::Port) and on the tasks
+      # (theirs, a Syskit::Port), for each static port of the spec.
       def define_port_readers(spec)
         spec.all_ports.each_key { |name| define_port_reader(name) }
       end
 
       def define_port_reader(name)
         reader = "#{name}_port"
+        unless singleton_class.method_defined?(reader)
+          define_singleton_method(reader) { find_input_port(name) || find_output_port(name) }
+        end
         define_method(reader) { find_bound_port(name) } unless method_defined?(reader)
-        define_singleton_method(reader) { find_input_port(name) || find_output_port(name) } unless respond_to?(reader)
       end
 
       def add_service(...)

@@ -53,7 +53,7 @@ module Syskit
       def library_deployments(task)
         model = task.model.concrete_model
         @context.app.orogen.each_task_model.select { |m| m <= model }.flat_map do |m|
-          m.spec.library.deployments.values.select { |d| d.tasks.any? { |t| t.model <= model } }.map(&:name)
+          m.spec.library.deployments.values.select { |d| d.task_activities.any? { |t| t.model <= model } }.map(&:name)
         end
       end
 

@@ -90,8 +90,8 @@ module Syskit
       end
 
       # A plain component model has no ports (task contexts and
-      # compositions do). It drives no device unless it declares
-      # driver_for (see Models::DriverServices).
+      # compositions do). (It drives no device: it has no driver service,
+      # see Models::DriverServices.)
       def ports
         {}
       end

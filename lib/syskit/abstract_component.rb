@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/component'
+require 'syskit/compat/roby_task_arguments'
 require 'syskit/models/component_submodels'
 
 module Syskit
@@ -159,7 +160,7 @@ module Syskit
     # arguments[:setpoint] = hash end+), the others, and a delayed
     # argument, as they are.
     def assign_arguments(given)
-      @arguments = {}
+      @arguments = Compat::Roby::TaskArguments.new
       given.each do |key, value|
         if model.argument_declared?(key) && !value.is_a?(Compat::DelayedArgument)
           public_send(:"#{key}=", value)

@@ -7,11 +7,14 @@ module Syskit
   # +planning_task+; running it (generating and deploying the network
   # when the plan executes) is Roby's runtime.
   class InstanceRequirementsTask
-    attr_reader :requirements, :job_id
+    attr_reader :requirements, :job_id, :arguments
 
     def initialize(requirements, job_id: nil)
       @requirements = requirements
       @job_id = job_id
+      @arguments = Compat::Roby::TaskArguments.new
+      @arguments[:job_id] = job_id if job_id
+      @arguments.freeze
       freeze
     end
 

@@ -191,6 +191,8 @@ module Syskit
       planned = requirements.as_plan(job_id: 3, speed: 2)
       assert_kind_of task, planned
       assert_equal({ speed: 2 }, planned.arguments)
+      refute planned.arguments.set?(:job_id)
+      assert planned.planning_task.arguments.set?(:job_id)
       assert_empty requirements.arguments
       assert_equal [requirements.with_arguments(speed: 2), 3],
                    [planned.planning_task.requirements, planned.planning_task.job_id]

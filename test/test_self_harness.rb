@@ -22,7 +22,7 @@ module Syskit
         it 'defines models without an app' do
           srv = data_service_type 'Ranging'
           cmp = Syskit::Composition.new_submodel { add srv, as: 'ranger' }
-          assert_same srv, cmp.ranger_child.model
+          assert_same srv.placeholder_model, cmp.ranger_child.model
         end
 
         it 'gives each test a robot of its own' do

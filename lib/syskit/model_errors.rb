@@ -14,9 +14,6 @@ module Syskit
   # stand for them (+provides Srv, 'in' => 'nonexistent'+).
   class InvalidPortMapping < SpecError; end
 
-  # A component model that cannot provide the service it declares.
-  class InvalidProvides < SpecError; end
-
   # A selection (+use('child' => Model)+) that cannot fulfil what it is
   # selected for.
   class InvalidSelection < SpecError; end
@@ -106,6 +103,23 @@ module Syskit
 
   module Models
     # A port asked of a composition child that its models do not have.
-    class InvalidCompositionChildPort < Error; end
+    class InvalidCompositionChildPort < Error
+      attr_reader :composition_model, :child_name, :port_name
+
+      def initialize(composition_model, child_name, port_name, location: nil)
+        @composition_model = composition_model
+        @child_name = child_name
+        @port_name = port_name
+        child = composition_model.find_child(child_name)
+        known = child ? child.ports.keys.sort : []
+        super("#{child || "#{composition_model}.#{child_name}_child"} has no port '#{port_name}'",
+              location: location, hint: known.empty? ? nil : "its ports are #{known.join(', ')}")
+      end
+    end
   end
+
+  # A component model that cannot provide the service it declares (no
+  # port, or several, for a port of the service; a mapping naming a port
+  # that does not exist): a declaration error, so an ArgumentError too.
+  class InvalidProvides < DeclarationError; end
 end

@@ -32,53 +32,103 @@ module Syskit
     end
   end
 
-  # A port of a task in a generated network (+task.out_port+): it tells
-  # what it is connected to.
-  class BoundPort
-    attr_reader :task, :port
+  # A port of a task (+task.out_port+): its model (a Models::Port of the
+  # task's model) and the task (+component+). It tells what it is
+  # connected to, and connects to another task's port as plan data.
+  class Port
+    attr_reader :model, :component
 
-    def initialize(task, port)
-      @task = task
-      @port = port
+    def initialize(model, component)
+      @model = model
+      @component = component
     end
 
     def name
-      port.name
+      model.name
     end
 
     def type
-      port.type
+      model.type
     end
 
     def direction
-      port.direction
+      model.direction
     end
 
-    # Whether a connection of the network links this port and +other+ (a
-    # bound port), in either direction.
-    def connected_to?(other)
-      task.connections.any? do |c|
-        (c.from_task.equal?(task) && c.from_port.name == name && c.to_task.equal?(other.task) &&
-          c.to_port.name == other.name) ||
-          (c.to_task.equal?(task) && c.to_port.name == name && c.from_task.equal?(other.task) &&
-            c.from_port.name == other.name)
-      end
+    def input?
+      model.input?
     end
 
-    # The component's own port: this one (a service's port readers give
-    # the task's ports already, see BoundDataService).
+    def output?
+      model.output?
+    end
+
+    # The port of the task itself this port stands for (this one on a
+    # task); ArgumentError when the component cannot say.
     def to_component_port
+      return component.self_port_to_component_port(self) if component.respond_to?(:self_port_to_component_port)
+
+      raise ArgumentError, "cannot resolve #{self} into a component port: #{component} has no ports of its own"
+    end
+
+    # Connects this output port to +sink+, an input port of another task
+    # of the same type: both tasks then know the connection (as the
+    # network's connections), with the policy given.
+    def connect_to(sink, policy = {})
+      location = Location.of_caller
+      source = to_component_port
+      sink = sink.to_component_port
+      check_connection(source, sink, location)
+      connection = Network::Connect::Connection.new(source.component, source.model.orogen_port, sink.component,
+                                                    sink.model.orogen_port, policy, nil, location)
+      source.component.add_connection(connection)
+      sink.component.add_connection(connection)
       self
     end
 
+    # Whether a connection of the network links this port and +other+ (a
+    # task's port), in either direction.
+    def connected_to?(other)
+      source = to_component_port
+      other = other.to_component_port
+      source.component.connections.any? { |c| source.links?(c, other) || other.links?(c, source) }
+    end
+
     def ==(other)
-      other.is_a?(BoundPort) && other.task.equal?(task) && other.name == name
+      other.is_a?(Port) && other.component.equal?(component) && other.model == model
+    end
+    alias eql? ==
+
+    def hash
+      [Port, component.object_id, name].hash
     end
 
     def to_s
-      "#{task}.#{name}_port"
+      "#{component}.#{name}_port"
     end
     alias inspect to_s
+
+    protected
+
+    # Whether +connection+ goes from this port to +sink+.
+    def links?(connection, sink)
+      connection.from_task.equal?(component) && connection.from_port.name == name &&
+        connection.to_task.equal?(sink.component) && connection.to_port.name == sink.name
+    end
+
+    private
+
+    def check_connection(source, sink, location)
+      error = if !source.output? then [WrongPortConnectionDirection, "#{source} is not an output port"]
+              elsif !sink.input? then [WrongPortConnectionDirection, "#{sink} is not an input port"]
+              elsif source.component.equal?(sink.component) then [SelfConnection, 'they are ports of the same task']
+              elsif source.type != sink.type then [WrongPortConnectionTypes, 'their types differ']
+              end
+      return unless error
+
+      raise error[0].new("cannot connect #{source} to #{sink}: #{error[1]}",
+                         location: location, hint: 'connect an output port to an input port of the same type')
+    end
   end
 
   # A pattern of ports a task can create at configure time

@@ -31,20 +31,12 @@ module Syskit
     NO_CONNECTIONS = [].freeze
     private_constant :NO_PORTS, :NO_CALLS, :NO_CONNECTIONS
 
-    attr_reader :arguments, :properties, :deployed_task
-    attr_accessor :conf
-    # The requirements (a device action, a composition's child) the
-    # generator made this task for.
-    attr_accessor :requirement
-    # Where the task stands in the network when it is a composition's
-    # child (+arm_control.position2twist+), and where the requirements it
-    # was made for are declared (the definition).
-    attr_accessor :plan_path, :root_location
+    attr_reader :properties, :deployed_task
 
     # The name the task goes by before it is deployed: its device's, or
     # its place in a composition (+arm_control_position2twist+).
     def plan_name
-      requirement&.device&.name || plan_path&.tr('.', '_') || Naming.underscore(model.name.to_s.split('::').last)
+      requirements&.device&.name || plan_path&.tr('.', '_') || Naming.underscore(model.name.to_s.split('::').last)
     end
 
     def initialize(arguments = {})
@@ -171,14 +163,19 @@ module Syskit
     end
 
     def find_port(name)
-      created_ports[name.to_s] || model.find_port(name)
+      created_ports[name.to_s] || model.ports[name.to_s]
     end
 
     # The port +name+ of this task (+task.out_port+), which knows what it
     # is connected to in the network; nil when there is no such port.
     def find_bound_port(name)
       port = find_port(name)
-      BoundPort.new(self, port) if port
+      Port.new(Models::Port.for(model, port), self) if port
+    end
+
+    # A port of this task is its own component port (Syskit's name).
+    def self_port_to_component_port(port)
+      port
     end
 
     # The connections of the network that start or end at this task.

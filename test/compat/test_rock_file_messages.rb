@@ -89,7 +89,7 @@ module Syskit
       assert_match(%r{ cmd  input /base/commands/Joints \(= /base/samples/Joints\)$}, Render::Text.render(plan))
       assert_match(%r{ samples  output /base/samples/IMUSensors$}, Render::Text.render(plan))
       assert_equal "input port 'cmd' (/base/commands/Joints (= /base/samples/Joints))",
-                   OroGen.imu.Task.find_port('cmd').to_s
+                   OroGen.imu.Task.ports['cmd'].to_s
     end
 
     # Ruby takes 'models/services/pose' as loaded once any directory of the

@@ -17,10 +17,6 @@ module Syskit
       assert_kind_of model, model.new
     end
 
-    def test_an_anonymous_component_model_says_where_it_was_made
-      assert_match(/anonymous component \(.*test_component_models.rb:\d+\)/, Component.new_submodel.to_s)
-    end
-
     def test_a_component_model_knows_its_submodels_until_it_clears_them
       root = Component.new_submodel
       child = root.new_submodel
@@ -75,6 +71,36 @@ module Syskit
       bound = context.provides(srv)
       assert_equal 'one', bound.name
       assert_raises(ArgumentError) { context.provides(srv) }
+    end
+
+    def test_a_provides_whose_ports_do_not_fit_is_an_invalid_provides
+      double = Types::OpaqueType.new('/double')
+      srv = DataService.new_submodel { output_port 'out', double }
+      task = TaskContext.new_submodel { input_port 'out', double }
+      assert_raises(InvalidProvides) { task.provides(srv, as: 'srv') }
+      assert_raises(InvalidProvides) { task.provides(srv, { 'nothing' => 'out' }, as: 'srv') }
+      assert_raises(ArgumentError) { task.provides(srv, as: 'srv') }
+    end
+
+    def test_a_dynamic_service_records_what_syskit_does_with_running_components
+      srv = DataService.new_submodel
+      task = TaskContext.new_submodel
+      plain = task.dynamic_service(srv, as: 'plain') { provides srv }
+      assert_same task, plain.component_model
+      assert_same srv, plain.service_model
+      assert plain.addition_requires_reconfiguration?
+      assert plain.remove_when_unused?
+      refute task.dynamic_service(srv, as: 'live', dynamic: true) { provides srv }.addition_requires_reconfiguration?
+    end
+
+    def test_a_ruby_task_model_declares_dynamic_ports_its_dynamic_services_create
+      double = Types::OpaqueType.new('/double')
+      srv = DataService.new_submodel { output_port 'out', double }
+      task = TaskContext.new_submodel { dynamic_output_port(/\w+_out/, double) }
+      task.dynamic_service(srv, as: 'dyn') { provides srv, 'out' => "#{name}_out" }
+      made = task.specialize
+      made.require_dynamic_service('dyn', as: 'left')
+      assert_equal 'left_out', made.left_srv.out_port.name
     end
   end
 end

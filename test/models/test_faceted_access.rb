@@ -26,6 +26,8 @@ module Syskit
     def test_task_models_have_port_readers
       assert_same @task.find_output_port('front'), @task.front_port
       assert_equal @base.find_output_port('status').name, @task.status_port.name
+      assert_same @task.find_port('front'), @task.front_port
+      assert_same @task, @task.status_port.component_model
     end
 
     def test_ports_stand_for_the_tasks_ports

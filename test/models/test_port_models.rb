@@ -70,3 +70,49 @@ module Syskit
     end
   end
 end
+
+module Syskit
+  # The ports of task instances (Syskit::Port): connected as plan data.
+  class TestTaskPorts < Minitest::Test
+    def setup
+      super
+      double = Types::OpaqueType.new('/double')
+      int = Types::OpaqueType.new('/int')
+      @model = TaskContext.new_submodel do
+        input_port 'in', double
+        output_port 'out', double
+        input_port 'count', int
+      end
+      @source = @model.new
+      @sink = @model.new
+    end
+
+    def test_a_tasks_port_knows_its_model_and_task
+      port = @source.out_port
+      assert_same @source, port.component
+      assert_equal @model.out_port, port.model
+      assert_equal port, Port.new(@model.out_port, @source)
+      assert_equal 1, { port => 1 }[Port.new(@model.out_port, @source)]
+      assert_nil({ port => 1 }[@sink.out_port])
+    end
+
+    def test_connecting_task_ports_records_the_connection_on_both_tasks
+      refute @source.out_port.connected_to?(@sink.in_port)
+      @source.out_port.connect_to(@sink.in_port)
+      assert @source.out_port.connected_to?(@sink.in_port)
+      assert @sink.in_port.connected_to?(@source.out_port)
+      refute @source.out_port.connected_to?(@sink.count_port)
+    end
+
+    def test_connecting_task_ports_says_what_is_wrong
+      assert_raises(WrongPortConnectionDirection) { @sink.in_port.connect_to(@source.in_port) }
+      assert_raises(WrongPortConnectionDirection) { @source.out_port.connect_to(@sink.out_port) }
+      assert_raises(SelfConnection) { @source.out_port.connect_to(@source.in_port) }
+      assert_raises(WrongPortConnectionTypes) { @source.out_port.connect_to(@sink.count_port) }
+    end
+
+    def test_a_port_of_something_that_is_not_a_task_has_no_component_port
+      assert_raises(ArgumentError) { Port.new(@model.out_port, Object.new).to_component_port }
+    end
+  end
+end

@@ -169,7 +169,7 @@ module Syskit
       def add_port_entry(port)
         ports[port.name] = port
         reader = "#{port.name}_port"
-        define_singleton_method(reader) { Port.for(self, find_port(port.name)) } unless respond_to?(reader)
+        define_singleton_method(reader) { find_port(port.name) } unless respond_to?(reader)
         port
       end
 

@@ -19,15 +19,30 @@ module Syskit
     # mappings may name ports the task does not have: they are created,
     # when one of the task's dynamic_*_port patterns allows them.
     class DynamicDataService
-      attr_reader :task_model, :name, :model, :declared_at
+      # The component model it is declared on, its name, the model of
+      # the services it makes (+service_model+), where it is declared.
+      attr_reader :component_model, :name, :service_model, :declared_at
 
-      def initialize(task_model, name, model, block, location, demoted: nil)
-        @task_model = task_model
+      # +addition_requires_reconfiguration:+ and +remove_when_unused:+ say
+      # what Syskit does with running components; recorded.
+      def initialize(component_model, name, service_model, block, location, demoted: nil,
+                     addition_requires_reconfiguration: true, remove_when_unused: true)
+        @component_model = component_model
         @name = name
-        @model = model
+        @service_model = service_model
         @block = block
         @declared_at = location
+        @addition_requires_reconfiguration = addition_requires_reconfiguration
+        @remove_when_unused = remove_when_unused
         @demoted = demoted
+      end
+
+      def addition_requires_reconfiguration?
+        @addition_requires_reconfiguration
+      end
+
+      def remove_when_unused?
+        @remove_when_unused
       end
 
       # The dynamic service as the task model that declared it has it
@@ -39,31 +54,39 @@ module Syskit
       # This dynamic service as one of +component_model+, a submodel of
       # its task model (what +Sub.find_dynamic_service+ gives).
       def attach(component_model)
-        DynamicDataService.new(component_model, name, model, @block, declared_at, demoted: demoted)
+        DynamicDataService.new(
+          component_model, name, service_model, @block, declared_at,
+          demoted: demoted, addition_requires_reconfiguration: addition_requires_reconfiguration?,
+          remove_when_unused: remove_when_unused?
+        )
       end
 
       # The service named +as+ (a BoundDataService of +on+, the task model or
       # a specialization of it) and the ports it needs created; +location+
       # is where the instance is asked for.
-      def instantiate(as, options, location, on: task_model)
+      def instantiate(as, options, location, on: component_model)
         context = InstantiationContext.new(on, as, self, **options)
-        begin
-          context.instance_exec(&@block)
-        rescue ScriptError, StandardError => e
-          raise UserCode.translate(e, error_class: DeclarationError,
-                                      context: "in dynamic service '#{name}' of #{task_model.name} for '#{as}'")
-        end
+        evaluate(context, as)
         return [context.service, context.created_ports] if context.service
 
         raise DeclarationError.new(
-          "the block of dynamic service '#{name}' of #{task_model.name} provides nothing for '#{as}'",
+          "the block of dynamic service '#{name}' of #{component_model.name} provides nothing for '#{as}'",
           location: declared_at || location,
-          hint: "call provides #{model}, 'service_port' => \"\#{name}_port\" (or driver_for) in the block"
+          hint: "call provides #{service_model}, 'service_port' => \"\#{name}_port\" (or driver_for) in the block"
         )
       end
 
+      # Runs the block on +context+ for the instance +as+, its errors
+      # located in the block.
+      def evaluate(context, as)
+        context.instance_exec(&@block)
+      rescue ScriptError, StandardError => e
+        raise UserCode.translate(e, error_class: DeclarationError,
+                                    context: "in dynamic service '#{name}' of #{task_model} for '#{as}'")
+      end
+
       def to_s
-        "dynamic service '#{name}' (#{model}) of #{task_model.name}"
+        "dynamic service '#{name}' (#{model}) of #{component_model.name}"
       end
 
       # What the block of a dynamic service is evaluated on (Syskit's
@@ -139,11 +162,11 @@ module Syskit
             raise DeclarationError.new("as: '#{as}' in dynamic service '#{@dynamic.name}': the instance is '#{name}'",
                                        location: location, hint: 'leave as: out, the name is the instance\'s')
           end
-          return if model.is_a?(DataServiceModel) && model.fullfills?(@dynamic.model)
+          return if model.is_a?(DataServiceModel) && model.fullfills?(@dynamic.service_model)
 
           raise DeclarationError.new(
-            "dynamic service '#{@dynamic.name}' is a #{@dynamic.model}, the block provides #{model.inspect}",
-            location: location, hint: "provide #{@dynamic.model} or a model that provides it"
+            "dynamic service '#{@dynamic.name}' is a #{@dynamic.service_model}, the block provides #{model.inspect}",
+            location: location, hint: "provide #{@dynamic.service_model} or a model that provides it"
           )
         end
       end

@@ -4,15 +4,16 @@ require 'syskit/models/dynamic_data_service'
 
 module Syskit
   module Models
-    # +dynamic_service+ on task models (see DynamicDataService).
+    # +dynamic_service+ on task and composition models (see
+    # DynamicDataService, CompositionDynamicServices).
     module DynamicServices
       # Declares a dynamic service of +model+ named +as+; the block declares
       # each instance (see DynamicDataService). Syskit's +dynamic:+,
       # +remove_when_unused:+ and +addition_requires_reconfiguration:+ say
-      # when a running component is reconfigured: accepted, no effect on a
-      # plan.
-      def dynamic_service(model, as: nil, dynamic: false, remove_when_unused: true, # rubocop:disable Lint/UnusedMethodArgument
-                          addition_requires_reconfiguration: true, &block) # rubocop:disable Lint/UnusedMethodArgument
+      # when a running component is reconfigured: recorded (the old
+      # +dynamic: true+ means no reconfiguration), no effect on a plan.
+      def dynamic_service(model, as: nil, dynamic: false, remove_when_unused: true,
+                          addition_requires_reconfiguration: !dynamic, &block)
         location = Location.of_caller
         unless model.is_a?(DataServiceModel) && as && block
           raise DeclarationError.new(
@@ -27,7 +28,10 @@ module Syskit
         end
 
         Component.declarations_changed
-        (@dynamic_services ||= {})[as.to_s] = DynamicDataService.new(self, as.to_s, model, block, location)
+        (@dynamic_services ||= {})[as.to_s] = DynamicDataService.new(
+          self, as.to_s, model, block, location,
+          addition_requires_reconfiguration: addition_requires_reconfiguration, remove_when_unused: remove_when_unused
+        )
       end
 
       # Syskit's +require_dynamic_service+: the instance +as+ of the dynamic
@@ -41,16 +45,13 @@ module Syskit
       def require_dynamic_service(dynamic_name, as:, **options)
         location = Location.of_caller
         dynamic = fetch_dynamic_service(dynamic_name, location, "to require as '#{as}'")
-        raise not_a_specialization(dynamic_name, location) unless specialization?
-
         existing = find_service(as.to_s)
-        return existing if existing&.fullfills?(dynamic.model)
+        return existing if existing&.fullfills?(dynamic.service_model)
         raise already_a_service(existing, dynamic, location) if existing
 
-        service, ports = dynamic.instantiate(as.to_s, options, location, on: self)
-        ports.each { |port| spec.ports[port.name] = port }
+        service = instantiate_dynamic_service(dynamic, as.to_s, options, location)
         (@required_dynamic_services ||= []) << service
-        register_service(service)
+        service
       end
 
       # The services required from dynamic services, inherited ones
@@ -103,6 +104,17 @@ module Syskit
 
       private
 
+      # The service the block of +dynamic+ declares for the instance +as+,
+      # registered on this model: on a task model, with the ports it
+      # creates, on a specialization only (see #not_a_specialization).
+      def instantiate_dynamic_service(dynamic, as, options, location)
+        raise not_a_specialization(dynamic.name, location) unless specialization?
+
+        service, ports = dynamic.instantiate(as, options, location, on: self)
+        ports.each { |port| spec.ports[port.name] = port }
+        register_service(service)
+      end
+
       # Syskit changes the task model itself; here the ports a dynamic
       # service creates go on a specialization, made for the purpose.
       def not_a_specialization(dynamic_name, location)
@@ -116,7 +128,7 @@ module Syskit
       def already_a_service(existing, dynamic, location)
         DeclarationError.new(
           "#{name} already has a service '#{existing.full_name}' (#{existing.model}), not the " \
-          "#{dynamic.model} of dynamic service '#{dynamic.name}'",
+          "#{dynamic.service_model} of dynamic service '#{dynamic.name}'",
           location: location, hint: "give the instance another name with as: 'other_name'"
         )
       end

@@ -34,11 +34,22 @@ module Syskit
         PortModifiers.new(@port)
       end
 
+      # What the declaration says (see Orogen::Port and ConnectionNeeds).
+      def_delegators :@port, :direction, :input?, :output?, :multiplexes?, :reliable?, :reliable, :buffer_size,
+                     :orocos_type_name, :type_name, :dynamic?, :declared_type, :type_description
+
       # oroGen's modifiers, said on the port itself, as in Syskit
       # (+find_output_port('samples').triggered_once_per_update+).
-      def_delegators :orogen_model, *(PortModifiers.public_instance_methods(false) - %i[name type ==])
+      READERS = (ConnectionNeeds::NEEDS - %i[multiplexes]).freeze
+      def_delegators :orogen_model, *(PortModifiers.public_instance_methods(false) - READERS - %i[name type ==])
 
-      def_delegators :@port, :direction, :input?, :output?, :multiplexes?, :reliable?, :orocos_type_name
+      # +port.period+ reads what the declaration says, +port.period(0.1)+
+      # says it (the same for doc, burst and sample_size).
+      READERS.each do |reader|
+        define_method(reader) do |*args|
+          args.empty? ? @port.public_send(reader) : orogen_model.public_send(reader, *args)
+        end
+      end
 
       # The same port, on +model+ (a submodel, a specialization).
       def attach(model)
@@ -62,6 +73,17 @@ module Syskit
         return self unless component_model.respond_to?(:self_port_to_component_port)
 
         component_model.self_port_to_component_port(self)
+      end
+
+      # Whether a connection of its component model links this port to
+      # +sink+: never for the ports of task and service models, whose
+      # connections are kept by compositions (see ChildPort#connected_to?).
+      def connected_to?(sink)
+        source = try_to_component_port
+        return source.connected_to?(sink) unless source.equal?(self)
+
+        sink = sink.try_to_component_port if sink.respond_to?(:try_to_component_port)
+        !!(component_model.respond_to?(:connected?) && component_model.connected?(self, sink))
       end
 
       # Whether this output port can feed +sink+, an input port of the
@@ -105,9 +127,7 @@ module Syskit
       alias short_name to_s
       alias inspect to_s
 
-      protected
-
-      # The Orogen::Port itself.
+      # The Orogen::Port itself (#orogen_model is a view of it).
       def orogen_port
         @port
       end

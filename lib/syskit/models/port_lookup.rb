@@ -50,17 +50,31 @@ module Syskit
     # +find_output_port('pose').triggered_once_per_update+); nil when there
     # is no such port. (+find_port+ and +ports+ give the declarations.)
     module PortModelLookups
+      # The port +name+ of this model (a Models::Port, the same object
+      # each time), nil when there is none. Its declaration is
+      # +ports[name]+.
+      def find_port(name)
+        port = ports[name.to_s]
+        port && port_model(port)
+      end
+
       def find_output_port(name)
-        port = find_port(name)
+        port = ports[name.to_s]
         port_model(port) if port&.output?
       end
 
       def find_input_port(name)
-        port = find_port(name)
+        port = ports[name.to_s]
         port_model(port) if port&.input?
       end
 
-      # Its input (output) ports, in declaration order.
+      # Its ports (input, output), in declaration order.
+      def each_port(&)
+        return enum_for(__method__) unless block_given?
+
+        ports.each_value { |port| yield port_model(port) }
+      end
+
       def each_input_port(&)
         return enum_for(__method__) unless block_given?
 

@@ -14,7 +14,8 @@ module Syskit
       def initialize(task_model, srv_model, mappings, location, dynamic: false)
         @task_model = task_model
         @srv_model = srv_model
-        @explicit = Models.normalize_mappings(srv_model, mappings, location, owner: task_model.name)
+        @explicit = Models.normalize_mappings(srv_model, mappings, location,
+                                              owner: task_model.name, error_class: InvalidProvides)
         @location = location
         @dynamic = dynamic
         @created = []
@@ -38,7 +39,7 @@ module Syskit
           return explicit_port(srv_port, name)
         end
 
-        same_name = @task_model.find_port(srv_port.name)
+        same_name = @task_model.ports[srv_port.name]
         return same_name if compatible?(same_name, srv_port)
 
         candidates = @task_model.ports.values.select { |p| compatible?(p, srv_port) }
@@ -52,12 +53,12 @@ module Syskit
       end
 
       def explicit_port(srv_port, name)
-        port = @task_model.find_port(name)
+        port = @task_model.ports[name]
         return port if compatible?(port, srv_port)
         return create(srv_port, name) if !port && @dynamic && dynamic_pattern(srv_port, name)
 
         problem = port ? "is an #{port}" : 'does not exist'
-        raise DeclarationError.new(
+        raise InvalidProvides.new(
           "#{@task_model.name}'s port '#{name}', mapped to #{@srv_model}'s #{srv_port}, #{problem}",
           location: @location, hint: "map '#{srv_port.name}' to an #{srv_port.direction} port of type " \
                                      "#{srv_port.type}#{port_list(srv_port)}"
@@ -81,7 +82,7 @@ module Syskit
           next if pairs.size == 1 || pairs.all? { |srv_port, _| @explicit.key?(srv_port) }
 
           names = pairs.map(&:first).sort
-          raise DeclarationError.new(
+          raise InvalidProvides.new(
             "#{@srv_model}'s ports #{names.join(', ')} would all be bound to #{@task_model.name}'s port " \
             "'#{task_port}'",
             location: @location,
@@ -91,7 +92,7 @@ module Syskit
       end
 
       def no_port(srv_port)
-        DeclarationError.new(
+        InvalidProvides.new(
           "#{@task_model.name} has no #{srv_port.direction} port of type #{srv_port.type} " \
           "for #{@srv_model}'s port '#{srv_port.name}'",
           location: @location,
@@ -101,7 +102,7 @@ module Syskit
 
       def ambiguous(srv_port, candidates)
         names = candidates.map(&:name).sort
-        DeclarationError.new(
+        InvalidProvides.new(
           "#{@task_model.name} has several #{srv_port.direction} ports of type #{srv_port.type} " \
           "for #{@srv_model}'s port '#{srv_port.name}': #{names.join(', ')}",
           location: @location, hint: "choose one explicitly: '#{srv_port.name}' => '#{names.first}'"

@@ -45,7 +45,7 @@ module Syskit
       private
 
       def check_mapped(port, name)
-        target = @model.find_port(name)
+        target = @model.ports[name]
         unless target
           raise SpecError.new(
             "#{@model} has no port '#{name}' to map #{@provided}'s #{port} to",
@@ -63,7 +63,7 @@ module Syskit
       end
 
       def check_unmapped(port)
-        existing = @model.find_port(port.name)
+        existing = @model.ports[port.name]
         return unless existing
 
         other = "map it to another port: provides #{@provided}, '#{port.name}' => 'other_name'"

@@ -2,7 +2,6 @@
 
 require 'syskit/models/component'
 require 'syskit/models/port_lookup'
-require 'syskit/models/driver_services'
 require 'syskit/models/dynamic_services'
 require 'syskit/models/task_specialization'
 
@@ -18,7 +17,6 @@ module Syskit
       include PortLookup
       include PortModelLookups
       include DynamicServices
-      include DriverServices
       include TaskSpecialization
 
       attr_reader :spec
@@ -78,10 +76,6 @@ module Syskit
       # Static ports by name (inherited ones included).
       def ports
         spec ? spec.all_ports : {}
-      end
-
-      def find_port(name)
-        ports[name.to_s]
       end
 
       # A port of this model is its own component port (Syskit's name).
@@ -172,16 +166,18 @@ module Syskit
         @stub_blocks = []
       end
 
-      # +out_port+ on the tasks and on the model, for each static port of
-      # the spec.
+      # +out_port+ on the model (its Models::Port) and on the tasks
+      # (theirs, a Syskit::Port), for each static port of the spec.
       def define_port_readers(spec)
         spec.all_ports.each_key { |name| define_port_reader(name) }
       end
 
       def define_port_reader(name)
         reader = "#{name}_port"
+        unless singleton_class.method_defined?(reader)
+          define_singleton_method(reader) { find_input_port(name) || find_output_port(name) }
+        end
         define_method(reader) { find_bound_port(name) } unless method_defined?(reader)
-        define_singleton_method(reader) { find_input_port(name) || find_output_port(name) } unless respond_to?(reader)
       end
 
       def add_service(...)

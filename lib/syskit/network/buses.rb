@@ -94,7 +94,7 @@ module Syskit
           ports.group_by(&:name).each do |name, same|
             if same.size > 1
               @context.error(port_clash(bus_task, name, same))
-            elsif (static = bus_task.model.find_port(name))
+            elsif (static = bus_task.model.ports[name])
               @context.error(static_clash(bus_task, same.first, static))
             end
           end

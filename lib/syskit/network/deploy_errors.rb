@@ -81,8 +81,8 @@ module Syskit
       end
 
       def shared(deployed, first_task, second_task)
-        first = first_task.requirement
-        second = second_task.requirement
+        first = first_task.requirements
+        second = second_task.requirements
         DeploymentError.new(
           "#{describe(first_task)} and #{describe(second_task)} both need the deployed task #{deployed} " \
           "(#{describe(first_task)} is declared at #{device_location(first, first_task)})",
@@ -113,7 +113,7 @@ module Syskit
       end
 
       def describe(task)
-        task.requirement.device&.to_s || task.plan_path || task.plan_name
+        task.requirements.device&.to_s || task.plan_path || task.plan_name
       end
     end
   end

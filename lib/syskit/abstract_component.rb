@@ -89,16 +89,12 @@ module Syskit
       end
 
       # A plain component model has no ports (task contexts and
-      # compositions do), and drives no device.
+      # compositions do).
       def ports
         {}
       end
 
       def find_port(_name); end
-
-      def driver_services
-        []
-      end
 
       private
 

@@ -89,7 +89,8 @@ module Syskit
       end
 
       # A plain component model has no ports (task contexts and
-      # compositions do).
+      # compositions do). (It drives no device: it has no driver service,
+      # see Models::DriverServices.)
       def ports
         {}
       end

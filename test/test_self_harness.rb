@@ -198,6 +198,16 @@ module Syskit
           assert_match(/cannot find a concrete implementation for Syskit::Models::Placeholder<Ranging>/, e.message)
         end
 
+        it('resolves actions as Actions does in Syskit') do
+          @profile.define 'avoid', @cmp_m.use(@srv_m => @task_m)
+          @profile.define 'other', @cmp_m.use(@srv_m => @task_m)
+          assert_equal %w[Nav.avoid_def], Actions(@profile, exclude: @profile.other_def).map(&:to_s)
+        end
+
+        it('skips the actions of Roby interfaces') do
+          Actions(Roby::Actions::Interface.new_submodel.act)
+        end
+
         it('checks plain requirements without a profile') do
           assert_can_instanciate(@cmp_m.use(@srv_m => @task_m))
         end
@@ -270,7 +280,7 @@ module Syskit
       Dir.mktmpdir do |dir|
         write_self_test(dir, 'test_profiles.rb', PROFILE_TEST)
         out, err, = ruby_process('test/test_profiles.rb', chdir: dir)
-        assert_match(/4 runs, \d+ assertions, 1 failures, 0 errors, 0 skips/, out, err)
+        assert_match(/6 runs, \d+ assertions, 1 failures, 0 errors, 1 skips/, out, err)
         assert_match(/Avoid is not self contained/, out)
       end
     end

@@ -49,6 +49,15 @@ module Syskit
         alias_method "assert_#{name}_together", "#{name}_together"
       end
 
+      # Syskit's +Actions(action_or_profile)+: the requirements actions,
+      # profiles or requirements stand for, less +exclude:+. Actions of
+      # Roby's action interfaces need the runtime: the test skips.
+      def Actions(*actions, exclude: []) # rubocop:disable Naming/MethodName -- Syskit's name
+        actions.flatten.each { |action| Test.requirements_of(action) }
+        excluded = Array(exclude).empty? ? [] : syskit_requirements(Array(exclude))
+        syskit_requirements(actions).reject { |req| excluded.any? { |e| syskit_same_action?(e, req) } }
+      end
+
       private
 
       # The profile the actions are checked in: the first profile among

@@ -22,7 +22,7 @@ module Syskit
         it 'defines models without an app' do
           srv = data_service_type 'Ranging'
           cmp = Syskit::Composition.new_submodel { add srv, as: 'ranger' }
-          assert_same srv, cmp.ranger_child.model
+          assert_same srv.placeholder_model, cmp.ranger_child.model
         end
 
         it 'gives each test a robot of its own' do
@@ -158,6 +158,56 @@ module Syskit
       end
     end
 
+    # Profile assertions on profiles made in Ruby and plain requirements.
+    PROFILE_TEST = <<~RUBY
+      require 'syskit/test/self'
+
+      describe 'profile assertions' do
+        before do
+          @srv_m = Syskit::DataService.new_submodel(name: 'Ranging')
+          @task_m = Syskit::TaskContext.new_submodel(name: 'Sonar')
+          @task_m.provides @srv_m, as: 'ranging'
+          @cmp_m = Syskit::Composition.new_submodel(name: 'Avoid')
+          @cmp_m.add @srv_m, as: 'ranger'
+          @profile = Syskit::Actions::Profile.new('Nav')
+        end
+
+        attr_reader :subject_syskit_model
+
+        it('checks the profile the test is about') do
+          @subject_syskit_model = @profile
+          @profile.tag 'range', @srv_m
+          @profile.define 'avoid', @cmp_m.use(@srv_m => @profile.range_tag)
+          assert_is_self_contained
+          e = assert_raises(Syskit::Test::ProfileAssertions::ProfileAssertionFailed) { assert_can_instanciate }
+          assert_match(/Nav.avoid_def: cannot find a concrete implementation for profile:Nav.range_tag/, e.message)
+        end
+
+        it('names abstract services and tags of other profiles') do
+          other = Syskit::Actions::Profile.new('Other')
+          other.tag 'range', @srv_m
+          @profile.define 'avoid', @cmp_m.use(@srv_m => other.range_tag)
+          @profile.define 'open', @cmp_m
+          e = assert_raises(Syskit::Test::ProfileAssertions::ProfileAssertionFailed) do
+            assert_is_self_contained(@profile.avoid_def)
+          end
+          assert_match(/Nav.avoid_def contains tags from another profile: profile:Other.range_tag/, e.message)
+          e = assert_raises(Syskit::Test::ProfileAssertions::ProfileAssertionFailed) do
+            assert_can_instanciate(@profile.open_def)
+          end
+          assert_match(/cannot find a concrete implementation for Syskit::Models::Placeholder<Ranging>/, e.message)
+        end
+
+        it('checks plain requirements without a profile') do
+          assert_can_instanciate(@cmp_m.use(@srv_m => @task_m))
+        end
+
+        it('fails as a test fails') do
+          assert_is_self_contained(@cmp_m)
+        end
+      end
+    RUBY
+
     # Network generation with the deployments a test declares.
     DEPLOY_TEST = <<~RUBY
       require 'syskit/test/self'
@@ -178,6 +228,12 @@ module Syskit
         it('deploys with a stub deployment model') do
           use_deployment syskit_stub_deployment_model(@task_m, 'stubbed')
           assert_equal 'stubbed', syskit_deploy(@task_m).orocos_name
+        end
+
+        it('deploys with a stub configured deployment') do
+          configured = syskit_stub_configured_deployment(@task_m, 'configured')
+          assert_equal 'stubs', configured.process_server_name
+          assert_equal 'configured', syskit_deploy(@task_m).orocos_name
         end
 
         it('takes what answers to_action') do
@@ -213,6 +269,15 @@ module Syskit
         out, err, = ruby_process('test/test_deploy.rb', '-v', chdir: dir)
         assert_match(/8 runs, \d+ assertions, 0 failures, 0 errors, 1 skips/, out, err)
         assert_match(/a Roby planner's result\) needs Syskit's runtime/, out)
+      end
+    end
+
+    def test_profile_assertions_raise_syskit_s_failure_with_its_words
+      Dir.mktmpdir do |dir|
+        write_self_test(dir, 'test_profiles.rb', PROFILE_TEST)
+        out, err, = ruby_process('test/test_profiles.rb', chdir: dir)
+        assert_match(/4 runs, \d+ assertions, 1 failures, 0 errors, 0 skips/, out, err)
+        assert_match(/Avoid is not self contained/, out)
       end
     end
 

@@ -15,11 +15,56 @@ module Syskit
       self.class
     end
 
+    # Whether its model fullfills +models+ (a model or a list).
+    def fullfills?(models)
+      model.fullfills?(models)
+    end
+
     # The service +name+ of this component (+task.gps_srv+ reads it): its
-    # model's service, bound to this component.
+    # model's service, bound to this component, one object per service.
     def find_data_service(name)
+      name = name.to_s
+      bound = (@bound_services ||= {})
+      return bound[name] if bound.key?(name)
+
       srv = model.find_data_service(name)
-      srv && BoundDataService.new(self, srv)
+      bound[name] = srv && BoundDataService.new(self, srv)
+    end
+
+    # Its services whose model is or provides +srv_model+, each seen as
+    # +srv_model+ (what +Srv.try_bind(task)+ chooses from).
+    def find_all_data_services_from_type(srv_model)
+      model.find_all_data_services_from_type(srv_model).map do |srv|
+        find_data_service(srv.full_name).as(srv_model)
+      end
+    end
+
+    # The only service of type +srv_model+, nil if none, an
+    # AmbiguousServiceSelection if several.
+    def find_data_service_from_type(srv_model)
+      candidates = find_all_data_services_from_type(srv_model)
+      return candidates.first if candidates.size <= 1
+
+      raise AmbiguousServiceSelection.new(
+        "#{self} has several services of type #{srv_model}: #{candidates.map(&:full_name).sort.join(', ')}",
+        location: Location.of_caller, hint: 'choose one by its name (task.name_srv)'
+      )
+    end
+
+    # The compositions this task is a child of (Roby's +each_parent_task+).
+    def each_parent_task(&)
+      return enum_for(__method__) unless block_given?
+
+      (@parent_tasks || []).each(&)
+    end
+
+    # Records +composition+ as a parent (see Composition#add_child).
+    def add_parent_task(composition)
+      (@parent_tasks ||= []) << composition unless @parent_tasks&.any? { |p| p.equal?(composition) }
+    end
+
+    def remove_parent_task(composition)
+      @parent_tasks&.delete_if { |p| p.equal?(composition) }
     end
   end
 
@@ -39,6 +84,22 @@ module Syskit
         to_s
       end
 
+      def inspect
+        to_s
+      end
+
+      # A plain component model has no ports (task contexts and
+      # compositions do), and drives no device.
+      def ports
+        {}
+      end
+
+      def find_port(_name); end
+
+      def driver_services
+        []
+      end
+
       private
 
       # A plain component model (+Syskit::Component.new_submodel+): made
@@ -49,6 +110,23 @@ module Syskit
         Models.register_model(model)
         model
       end
+    end
+
+    attr_reader :arguments
+    # The requirements (a device action, a composition's child, what
+    # InstanceRequirements#instanciate was given) the task was made for
+    # (Syskit's +requirements+); its configuration sections; where it
+    # stands in the network; where the requirements of the network's root
+    # it belongs to are declared (the definition).
+    attr_accessor :requirements, :conf, :plan_path, :root_location
+    # What plans it, when it stands for requirements still to be planned
+    # (see InstanceRequirements#as_plan).
+    attr_accessor :planning_task
+
+    def initialize(arguments = {})
+      super()
+      @conf = InstanceRequirements::DEFAULT_CONF
+      assign_arguments(arguments)
     end
 
     # Syskit's name for Models::Placeholder.for: a model standing for any
@@ -63,22 +141,17 @@ module Syskit
     end
 
     # Whether the task is of an abstract model (a placeholder's, an
-    # abstract task's): a network cannot run it.
+    # abstract task's), or was made for requirements marked abstract:
+    # something must still be chosen in its place, a network cannot run it.
     def abstract?
-      model.abstract? || false
-    end
-
-    # The service +name+ of this task (a Syskit::BoundDataService), or nil.
-    def find_data_service(name)
-      srv = model.find_service(name.to_s)
-      srv && BoundDataService.new(self, srv)
+      model.abstract? || requirements&.abstract? || false
     end
 
     # The services of this task, as Syskit::BoundDataService.
     def each_data_service(&block)
       return enum_for(__method__) unless block
 
-      model.services.each_value { |srv| yield BoundDataService.new(self, srv) }
+      model.services.each_key { |name| yield find_data_service(name) }
     end
 
     private

@@ -27,6 +27,20 @@ module Syskit
       service_model.ports.each_key do |name|
         define_singleton_method("#{name}_port") { find_port(name) }
       end
+      model.each_slave_data_service do |slave|
+        define_singleton_method("#{slave.name}_srv") { find_data_service(slave.name) }
+      end
+    end
+
+    # Its slave service +name+ (+task.stereo_srv.find_data_service('left')+),
+    # bound to the same component.
+    def find_data_service(name)
+      component.find_data_service("#{full_name}.#{name}")
+    end
+
+    # The service models it fullfills: its service model and those it provides.
+    def each_fullfilled_model(&)
+      service_model.each_fullfilled_model(&)
     end
 
     def name
@@ -60,6 +74,15 @@ module Syskit
       return unless service_model.find_port(name)
 
       component.find_bound_port(model.task_port_for(service_model, name.to_s).name)
+    end
+
+    # As #find_port, for an input (output) port of the service only.
+    def find_input_port(name)
+      find_port(name) if service_model.find_input_port(name)
+    end
+
+    def find_output_port(name)
+      find_port(name) if service_model.find_output_port(name)
     end
 
     def ==(other)

@@ -19,8 +19,7 @@ module Syskit
   class Composition < Component
     extend Models::Composition
 
-    attr_reader :arguments
-    attr_accessor :conf, :name, :requirement, :parent
+    attr_accessor :name, :parent
 
     def initialize(arguments = {})
       super()
@@ -44,7 +43,10 @@ module Syskit
     alias find_child child_task
 
     def add_child(role, task)
+      @children[role]&.remove_parent_task(self)
       @children[role] = task
+      task.add_parent_task(self)
+      task
     end
 
     # Roby's +depends_on(task, role: 'name')+ as Syskit's tests write it:
@@ -57,7 +59,9 @@ module Syskit
     # Removes +task+ from the children.
     def remove_dependency(task)
       @children.delete_if { |_, child| child.equal?(task) }
+      task.remove_parent_task(self)
     end
+    alias remove_child remove_dependency
 
     # The child task of role +role+, or nil.
     def find_child_from_role(role)

@@ -121,6 +121,7 @@ module Syskit
     # Adds +mappings+ (see #add), normalized, to the explicit selections.
     def add_explicit(mappings)
       mappings.each do |key, value|
+        value.freeze if value.is_a?(InstanceRequirements) # held by the injection from now on, as in Syskit
         explicit[key] = value unless value == key && explicit.key?(key)
       end
       @explicit = DependencyInjection.resolve_recursive_selection_mapping(explicit)
@@ -128,6 +129,7 @@ module Syskit
     end
 
     def add_defaults(values)
+      values.each { |value| value.freeze if value.is_a?(InstanceRequirements) }
       @defaults |= values
       self
     end

@@ -82,6 +82,15 @@ module Syskit
       DependencyInjectionContext.resolved(state.except(*keys), @locations)
     end
 
+    # The selections by name of the children of child +name+ (the keys
+    # 'name.grandchild'), by grandchild name.
+    def grandchild_selections(name)
+      prefix = "#{name}."
+      state.each_with_object({}) do |(key, value), result|
+        result[key.delete_prefix(prefix)] = value if key.is_a?(String) && key.start_with?(prefix)
+      end
+    end
+
     # Where +key+ was selected.
     def location_of(key)
       @locations[key]

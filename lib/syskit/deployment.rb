@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/deployment'
+require 'syskit/models/configured_deployment'
 
 module Syskit
   # A deployment: the process running an oroGen deployment's tasks. Its

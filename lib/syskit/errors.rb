@@ -135,10 +135,23 @@ module Syskit
   # A generator that refuses to run.
   class GeneratorError < Error; end
 
+  # Syskit's "cannot find a concrete implementation": a network needs a
+  # component that is abstract, and nothing selects one for it. +abstract+
+  # is what stands for it: the requirements (a tag's), or the abstract
+  # model.
+  class TaskAllocationFailed < NetworkError
+    attr_reader :abstract
+
+    def initialize(message, abstract: nil, **options)
+      super(message, **options)
+      @abstract = abstract
+    end
+  end
+
   # A tag of +profile+ that nothing selects: an error where the tag is
   # used, but not for the profile declaring it, which leaves it to the
   # profiles using it (Syskit's generic profiles).
-  class UnselectedTag < NetworkError
+  class UnselectedTag < TaskAllocationFailed
     attr_reader :profile
 
     def initialize(message, profile:, **options)

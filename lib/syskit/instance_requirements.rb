@@ -3,6 +3,10 @@
 require 'syskit/models/fullfillment'
 require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
+require 'syskit/instance_requirements/combination'
+require 'syskit/instance_requirements/changes'
+require 'syskit/actions/models/action'
+require 'syskit/instance_requirements_task'
 require 'syskit/models/faceted_access'
 
 module Syskit
@@ -20,6 +24,8 @@ module Syskit
   class InstanceRequirements
     include Statements
     include Readers
+    include Combination
+    include Changes
     # Whether these requirements fullfill a model (or each of a list).
     include Models::Fullfillment
 
@@ -68,6 +74,15 @@ module Syskit
       end
     end
 
+    # +models+ with the component model's service +bound+ replaced by its
+    # component model: a service among the models stands for its component
+    # model with that service selected, as in Syskit.
+    def self.without_service(models, bound)
+      return models&.freeze unless bound
+
+      models.map { |m| m.equal?(bound) ? bound.component_model : m }.freeze
+    end
+
     # The models +value+ (a selection) fullfills: what a default selection
     # is registered under.
     def self.fullfilled_models_of(value)
@@ -78,9 +93,10 @@ module Syskit
                    conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil,
                    selections: DependencyInjection::EMPTY, specialization_hints: NO_HINTS, declared_at: nil,
                    instance: nil, abstract: false, doc: nil, open: false)
-      @models = models&.freeze
+      bound = models&.grep(Models::BoundDataService)&.first
+      @models = InstanceRequirements.without_service(models, bound)
       @device = device
-      @service = service
+      @service = service || bound
       @profile = profile
       @name = name
       @arguments = arguments.frozen? ? arguments : arguments.dup.freeze
@@ -94,9 +110,8 @@ module Syskit
       @instance = instance
       @abstract = abstract
       @doc = doc
-      readers = Readers.for(component_model)
-      extend(readers) if readers
-      freeze unless open
+      @open = open
+      extend_readers
     end
 
     # The required models: a component model and/or data service models;
@@ -105,18 +120,20 @@ module Syskit
       @models || (device ? [device.model] : [])
     end
 
-    # The component model, or the placeholder standing for it and the
-    # required services it does not provide (Syskit's +model+).
+    # What the requirements are (Syskit's +model+, and +base_model+): the
+    # selected service, else the proxy model.
     def model
+      service || proxy_model
+    end
+    alias base_model model
+
+    # The component model, or the placeholder standing for it and the
+    # required services it does not provide.
+    def proxy_model
       component = component_model
       return component if component && models.all? { |m| component.fullfills?(m) }
 
       Models::Placeholder.for(models)
-    end
-
-    # The same requirements on +models+, without a selected service or task.
-    def with_models(models)
-      copy(models: models, service: nil, instance: nil)
     end
 
     # Equal when they ask for the same thing (where they are written aside).
@@ -221,15 +238,10 @@ module Syskit
     def instanciate(plan, context = DependencyInjectionContext::EMPTY, task_arguments: {}, specialization_hints: [])
       arguments = task_arguments.dup
       conf = Array(arguments.delete(:conf))
-      requirements = with_arguments(**arguments)
+      requirements = dup.with_arguments(**arguments)
       requirements = requirements.with_conf(*conf) unless conf.empty?
       requirements = requirements.prefer_specializations(specialization_hints) unless specialization_hints.empty?
       Network::Instantiate.into_plan(plan, requirements, context)
-    end
-
-    # The child +name+ of the composition model (as +Cmp.use(...).x_child+).
-    def find_child(name)
-      component_model.respond_to?(:find_child) ? component_model.find_child(name) : nil
     end
 
     # An action by its name (+Base.drive_def+, +gps_dev+), else the model
@@ -297,16 +309,6 @@ module Syskit
 
       DependencyInjection.of(selections.explicit.merge(other.selections.explicit),
                              selections.defaults | other.selections.defaults, other.selections.declared_at)
-    end
-
-    def copy(**changes)
-      values = FIELDS.to_h { |f| [f, instance_variable_get(:"@#{f}")] }
-      values[:selections] ||= DependencyInjection::EMPTY
-      values[:arguments] ||= NO_ARGUMENTS
-      values[:specialization_hints] ||= NO_HINTS
-      own_models = values.delete(:models)
-      models = changes.delete(:models) { own_models }
-      changes.delete(:class) { self.class }.new(models, **values, **changes)
     end
   end
 end

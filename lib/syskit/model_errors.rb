@@ -30,9 +30,6 @@ module Syskit
   # A name (+child_name+, a definition) that nothing in the context resolves.
   class NameResolutionError < InstanciationError; end
 
-  # No task can be allocated for a requirement.
-  class TaskAllocationFailed < SpecError; end
-
   # Several specializations of a composition fit one selection.
   class AmbiguousSpecialization < Ambiguous; end
 
@@ -106,7 +103,19 @@ module Syskit
 
   module Models
     # A port asked of a composition child that its models do not have.
-    class InvalidCompositionChildPort < Error; end
+    class InvalidCompositionChildPort < Error
+      attr_reader :composition_model, :child_name, :port_name
+
+      def initialize(composition_model, child_name, port_name, location: nil)
+        @composition_model = composition_model
+        @child_name = child_name
+        @port_name = port_name
+        child = composition_model.find_child(child_name)
+        known = child ? child.ports.keys.sort : []
+        super("#{child || "#{composition_model}.#{child_name}_child"} has no port '#{port_name}'",
+              location: location, hint: known.empty? ? nil : "its ports are #{known.join(', ')}")
+      end
+    end
   end
 
   # A component model that cannot provide the service it declares (no

@@ -47,9 +47,8 @@ module Syskit
         add_port(name, :output, type)
       end
 
-      # Ports created at configure time whose names match +pattern+ (a
-      # Regexp), of +type+ (any type without one): +dynamic_input_port
-      # /^w\w+$/, '/double'+.
+      # Declares ports the task creates at configure time, by name pattern:
+      # +dynamic_output_port(/^\w+$/, '/double')+ (a type of nil: any type).
       def dynamic_input_port(pattern, type = nil)
         add_dynamic_port(pattern, :input, type)
       end

@@ -31,20 +31,12 @@ module Syskit
     NO_CONNECTIONS = [].freeze
     private_constant :NO_PORTS, :NO_CALLS, :NO_CONNECTIONS
 
-    attr_reader :arguments, :properties, :deployed_task
-    attr_accessor :conf
-    # The requirements (a device action, a composition's child) the
-    # generator made this task for.
-    attr_accessor :requirement
-    # Where the task stands in the network when it is a composition's
-    # child (+arm_control.position2twist+), and where the requirements it
-    # was made for are declared (the definition).
-    attr_accessor :plan_path, :root_location
+    attr_reader :properties, :deployed_task
 
     # The name the task goes by before it is deployed: its device's, or
     # its place in a composition (+arm_control_position2twist+).
     def plan_name
-      requirement&.device&.name || plan_path&.tr('.', '_') || Naming.underscore(model.name.to_s.split('::').last)
+      requirements&.device&.name || plan_path&.tr('.', '_') || Naming.underscore(model.name.to_s.split('::').last)
     end
 
     def initialize(arguments = {})

@@ -18,6 +18,7 @@ module Syskit
       assert_equal odometry.odometry_port, odometry.find_output_port('odometry')
       assert_same odometry, odometry.odometry_port.component_model
       assert_equal RBS, Rig::Services::Pose.pose_port.orocos_type_name
+      assert_equal RBS, Rig::Services::Pose.pose_port.type_name
     end
 
     # Syskit's service models include what they provide: Ruby's module

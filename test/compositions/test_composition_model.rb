@@ -33,8 +33,22 @@ module Syskit
       assert_same child, model.find_child('pose')
       assert_equal 'pose', child.child_name
       assert_same model, child.composition_model
-      assert_same Rig::Services::Pose, child.model
+      assert_same Rig::Services::Pose.placeholder_model, child.model
       assert_nil model.find_child('nothing')
+    end
+
+    def test_a_childs_model_is_the_placeholder_of_what_it_requires
+      model = new_cmp do
+        add OroGen.rig.Follower, as: 'follow'
+        add [Rig::Services::Pose, Rig::Services::SpeedSource], as: 'both'
+      end
+      assert_same OroGen.rig.Follower, model.follow_child.model
+      both = model.both_child.model
+      assert both.placeholder?
+      assert_equal [Rig::Services::Pose, Rig::Services::SpeedSource], both.proxied_data_service_models
+      model.overload 'follow', Rig::Services::Pose
+      assert_equal [Rig::Services::Pose], model.follow_child.model.proxied_data_service_models
+      assert_same OroGen.rig.Follower, model.follow_child.model.proxied_component_model
     end
 
     def test_a_child_needs_a_name
@@ -131,33 +145,6 @@ module Syskit
       end
       assert model.odom_child.odometry_port.connected_to?(model.follow_child.pose_port)
       refute model.follow_child.command_port.connected_to?(model.follow_child.pose_port)
-    end
-
-    def test_connections_by_child_pair_as_syskit_lists_them
-      model = new_cmp do
-        add OroGen.rig.Follower, as: 'follow'
-        add OroGen.rig.Splitter, as: 'split'
-        add Rig::Services::Pose, as: 'pose'
-        follow_child.command_port.connect_to split_child.in_port, type: :buffer, size: 2
-        pose_child.pose_port.connect_to follow_child.pose_port
-      end
-      expected = { %w[follow split] => { %w[command in] => { 'type' => 'buffer', 'size' => 2 } },
-                   %w[pose follow] => { %w[pose pose] => {} } }
-      assert_equal expected, model.connections
-      assert_equal expected.to_a, model.each_explicit_connection.to_a
-      assert_equal 2, model.port_connections.size
-    end
-
-    def test_connections_name_the_ports_a_submodel_overloads_a_child_with
-      parent = new_cmp do
-        add Rig::Services::Pose, as: 'pose'
-        add OroGen.rig.Follower, as: 'follow'
-        pose_child.pose_port.connect_to follow_child.pose_port
-      end
-      submodel = parent.new_submodel
-      submodel.overload 'pose', OroGen.rig.Tracker.front_pose_srv
-      assert_equal({ %w[pose follow] => { %w[front pose] => {} } }, submodel.connections)
-      assert_equal({ %w[pose follow] => { %w[pose pose] => {} } }, parent.connections)
     end
 
     def test_connect_to_refuses_ports_of_different_types

@@ -48,6 +48,12 @@ module Syskit
       assert_raises(AmbiguousServiceSelection) { DependencyInjection.normalize_selection(@pose => @twice) }
     end
 
+    def test_a_task_selected_for_a_service_is_narrowed_to_its_service
+      task = @gps.new
+      assert_equal({ @pose => task.fix_srv }, DependencyInjection.normalize_selection(@pose => task))
+      assert_raises(ArgumentError) { DependencyInjection.normalize_selection(@twice => task) }
+    end
+
     def test_selections_must_fullfill_their_key_and_keys_be_names_or_models
       assert_raises(ArgumentError) { DependencyInjection.normalize_selection(@gps => @twice) }
       assert_raises(ArgumentError) { DependencyInjection.normalize_selection(@odometry => @pose) }

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'compositions/composition_test_helper'
+require 'syskit/test/plan'
 
 module Syskit
   # Requirements as Syskit's InstanceRequirements read and change: their
@@ -122,6 +123,126 @@ module Syskit
       assert_raises(AmbiguousServiceSelection) do
         InstanceRequirements.new([task, odometry]).find_data_service_from_type(pose)
       end
+    end
+
+    # Syskit's requirements made on a service (+new([Task.x_srv])+) and
+    # their ports (x_port, of the selected service when there is one).
+    def test_requirements_on_a_service_and_their_ports
+      pose, task = pose_and_task
+      on_service = InstanceRequirements.new([task.fix_srv])
+      assert_equal [[task], task.fix_srv], [on_service.models, on_service.service]
+      assert_equal 'out', on_service.pose_port.name
+      assert_equal 'out', task.to_instance_requirements.out_port.name
+      assert_nil on_service.find_port('nothing')
+      summary = task.with_arguments(a: 1).fullfilled_model
+      assert_equal [task, [pose, AbstractComponent, DataService], { a: 1 }],
+                   [summary[0], summary[1].sort_by(&:to_s), summary[2]]
+    end
+
+    # Merging two requirements, binding a task to requirements.
+    def test_merge_and_bind
+      pose, task = pose_and_task
+      on_service = InstanceRequirements.new([task.fix_srv])
+      merged = task.with_arguments(a: 1).merge(on_service.abstract)
+      assert_equal [task.fix_srv, { a: 1 }, false], [merged.service, merged.arguments, merged.abstract?]
+      assert task.to_instance_requirements.abstract.merge(on_service, keep_abstract: true).abstract?
+      assert_raises(IncompatibleComponentModels) { on_service.merge(TaskContext.new_submodel) }
+      instance = task.new
+      assert_same instance, pose.to_instance_requirements.try_bind(instance)
+      assert_nil on_service.try_bind(TaskContext.new_submodel.new)
+      assert_raises(ArgumentError) { on_service.bind(task) }
+    end
+
+    # Requirements as an action of Syskit's action interface: the model it
+    # returns, an argument per task argument (required without default).
+    def test_requirements_as_an_action_model
+      _, task = pose_and_task
+      task.argument :speed, doc: 'in m/s'
+      task.argument :mode, default: 'fast'
+      action = task.with_arguments(mode: 'slow').to_action_model
+      assert_same task, action.returned_type
+      speed = action.find_arg(:speed)
+      assert_equal [true, nil, 'in m/s'], [speed.required, speed.default, speed.doc]
+      mode = action.find_arg(:mode)
+      assert_equal [false, 'slow'], [mode.required, mode.default]
+      refute action.has_arg?(:other)
+    end
+
+    # A task made from requirements knows them (Syskit's +requirements+),
+    # and is abstract when they are marked so.
+    def test_a_plain_component_instanciated_knows_its_requirements
+      component = Component.new_submodel
+      plan = Test::Plan.new
+      task = component.to_instance_requirements.instanciate(plan)
+      assert_kind_of component, task
+      refute task.abstract?
+      assert_equal InstanceRequirements.new([component]), task.requirements.with_models([component])
+      abstract = component.to_instance_requirements.abstract.instanciate(plan)
+      assert abstract.abstract?
+      assert abstract.requirements.abstract?
+      assert plan.include?(abstract)
+    end
+
+    # A task to be planned from requirements (Syskit's +as_plan+): the
+    # requirements, with the arguments given, are its planning task's.
+    def test_a_task_to_be_planned_carries_its_requirements
+      _, task = pose_and_task
+      requirements = InstanceRequirements.new([task.fix_srv])
+      planned = requirements.as_plan(job_id: 3, speed: 2)
+      assert_kind_of task, planned
+      assert_equal({ speed: 2 }, planned.arguments)
+      assert_empty requirements.arguments
+      assert_equal [requirements.with_arguments(speed: 2), 3],
+                   [planned.planning_task.requirements, planned.planning_task.job_id]
+    end
+
+    # Selecting a service given as requirements brings their arguments.
+    def test_a_service_selected_with_its_arguments
+      _, task = pose_and_task
+      with_key = InstanceRequirements.new([task]).select_service(task.with_arguments(key: 1).fix_srv)
+      assert_equal [task.fix_srv, { key: 1 }], [with_key.model, with_key.arguments]
+    end
+
+    # As Syskit's: statements change requirements made on the spot; those
+    # a model, a profile or an injection holds give a changed copy.
+    def test_statements_change_requirements_that_nothing_holds
+      _, task = pose_and_task
+      requirements = InstanceRequirements.new([task])
+      assert_same requirements, requirements.with_arguments(a: 1).select_service(task.fix_srv)
+      assert_equal [{ a: 1 }, task.fix_srv], [requirements.arguments, requirements.service]
+      assert_equal task.fix_srv, requirements.model
+      assert_nil requirements.unselect_service.service
+      assert_same task, requirements.model
+      copy = requirements.dup
+      copy.with_arguments(b: 2)
+      assert_equal({ a: 1 }, requirements.arguments)
+      DependencyInjection.new('x' => requirements)
+      refute_same requirements, requirements.with_arguments(c: 3)
+      assert_equal({ a: 1 }, requirements.arguments)
+    end
+
+    # As Syskit's +use+: a model selected by name for a child must derive
+    # from the child's component model; children are read off a
+    # composition's requirements only.
+    def test_children_of_requirements_and_what_use_selects_for_them
+      pose, task = pose_and_task
+      other = TaskContext.new_submodel(name: 'Other')
+      cmp = Composition.new_submodel(name: 'Cmp') { add task, as: 'nav' }
+      assert_raises(InvalidSelection) { cmp.use('nav' => other) }
+      assert cmp.use('nav' => task.new_submodel)
+      assert_equal ['nav'], cmp.to_instance_requirements.each_child.map(&:first)
+      assert_raises(ArgumentError) { task.to_instance_requirements.find_child('nav') }
+      assert_nil InstanceRequirements.new([task.fix_srv]).to_component_model.service
+      assert_same task.find_port('out'), task.to_instance_requirements.out_port.to_component_port
+      refute_nil pose
+    end
+
+    def pose_and_task
+      tracker_app
+      pose = DataService.new_submodel(name: 'Pose') { output_port 'pose', '/double' }
+      task = TaskContext.new_submodel(name: 'Task') { output_port 'out', '/double' }
+      task.provides pose, as: 'fix'
+      [pose, task]
     end
   end
 end

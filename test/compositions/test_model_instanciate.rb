@@ -51,6 +51,16 @@ module Syskit
       assert cmp.pose_child.model.placeholder?
     end
 
+    def test_a_data_service_selected_for_a_child_adds_to_what_it_requires
+      cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => Rig::Services::SpeedSource))
+      assert_equal [Rig::Services::SpeedSource, Rig::Services::Pose], cmp.pose_child.model.proxied_data_service_models
+      cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => Rig::Services::SpeedSource.placeholder_model))
+      assert_equal [Rig::Services::SpeedSource, Rig::Services::Pose].to_set,
+                   cmp.pose_child.model.proxied_data_service_models.to_set
+      refined = InstanceRequirements.new([Rig::Services::Pose]).add_models([Rig::Services::Odometry])
+      assert_equal [Rig::Services::Odometry], refined.models
+    end
+
     def test_task_arguments_are_the_root_task_arguments
       model = watch_model
       model.argument :gain

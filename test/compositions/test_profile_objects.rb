@@ -54,5 +54,13 @@ module Syskit
       profile.use(@task => @task)
       assert_equal({ @task => @task }, profile.selections.explicit)
     end
+
+    def test_devices_declared_on_the_robot_of_a_profile_object
+      profile = Actions::Profile.new('Base')
+      camera = Device.new_submodel(name: 'Camera')
+      device = profile.robot.device(camera, as: 'front')
+      assert_same device, profile.front_dev.device
+      assert_raises(ArgumentError) { profile.front_dev('x') }
+    end
   end
 end

@@ -101,6 +101,26 @@ module Syskit
       refute odometry.compatible_with?(tracker)
     end
 
+    def test_specialize_without_children_makes_a_private_submodel
+      private_m = @model.specialize { add OroGen.rig.Splitter, as: 'split' }
+      assert private_m.private_specialization?
+      refute @model.private_specialization?
+      assert_same @model, private_m.superclass
+      assert_equal 'Drive{1}', private_m.name
+      assert private_m.find_child('split')
+      refute @model.find_child('split')
+      assert OroGen.rig.Follower.specialize.private_specialization?
+    end
+
+    def test_two_specialized_models_merge_into_the_one_with_both_specializations
+      odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      follower = @model.specialize(@model.follow_child => OroGen.rig.Follower.new_submodel)
+      merged = odometry.composition_model.merge(follower.composition_model)
+      assert_equal [odometry, follower], merged.applied_specializations
+      assert_same merged, follower.composition_model.merge(odometry.composition_model)
+      assert_same odometry.composition_model, odometry.composition_model.merge(@model)
+    end
+
     def test_an_empty_specialization_is_compatible_with_any
       empty = Models::CompositionSpecialization.new
       assert empty.empty?

@@ -17,7 +17,7 @@ module Syskit
       model = Syskit::Deployment.new_submodel(name: 'cameras') { task 'left', task_m }
       assert model < Syskit::Deployment
       assert_equal 'cameras', model.deployment_name
-      assert_equal([['left', task_m]], model.orogen_model.tasks.map { |t| [t.name, t.model] })
+      assert_equal([['left', task_m]], model.orogen_model.task_activities.map { |t| [t.name, t.model] })
       assert_same model, Syskit::Deployment.model_for(model.orogen_model)
     end
 

@@ -67,7 +67,8 @@ module Syskit
       srv = @gps_task.find_data_service_from_type(MyApp::Pose)
       assert_equal 'gps', srv.full_name
       assert_equal MyApp::Pose, srv.model, 'seen through the model asked for'
-      assert_equal 'fix', srv.pose_port.name
+      assert_equal 'pose', srv.pose_port.name
+      assert_equal 'fix', srv.pose_port.to_component_port.name
       assert_nil @stereo_task.find_data_service_from_type(MyApp::Pose)
       assert_equal @gps_task.cmd_srv, @gps_task.find_data_service_from_type(MyApp::Cmd)
     end
@@ -87,12 +88,21 @@ module Syskit
     def test_a_service_gives_the_task_ports_behind_its_ports
       srv = @gps_task.gps_srv
       assert_equal @gps_task, srv.component_model
-      assert_equal MyApp::Devices::Gps, srv.fullfilled_model
-      assert_same @gps_task.find_port('fix'), srv.position_port
-      assert_same @gps_task.find_port('fix'), srv.find_port('position')
+      assert_equal [MyApp::Devices::Gps], srv.fullfilled_model
+      assert_same srv.find_output_port('position'), srv.position_port, 'one port model per service port'
+      assert_same srv, srv.position_port.component_model
+      assert_equal @gps_task.fix_port, srv.position_port.to_component_port
+      assert_same @gps_task.find_port('fix'), srv.find_port('position'), 'the declaration behind it'
       assert_nil srv.find_port('fix'), 'a port of the task, not of the service'
-      assert_equal %w[fix], srv.each_output_port.map(&:name)
+      assert_equal %w[position], srv.each_output_port.map(&:name)
       assert_empty srv.each_input_port.to_a
+    end
+
+    def test_the_port_models_of_a_promoted_service_are_its_own
+      srv = @gps_task.gps_srv
+      srv.position_port
+      sub = @gps_task.new_submodel
+      assert_equal sub, srv.attach(sub).position_port.to_component_port.component_model
     end
 
     def test_a_service_maps_its_ports_to_the_task_ports
@@ -101,12 +111,13 @@ module Syskit
       assert_equal({ 'pose' => 'fix' }, srv.port_mappings_for(MyApp::Pose))
       assert_equal 'position', srv.find_port_for_task_port('fix').name
       assert_nil srv.find_port_for_task_port('cmd')
-      assert_same @gps_task.find_port('fix'), srv.self_port_to_component_port('position')
+      assert_same srv.position_port, srv.find_port_for_task_port('fix')
+      assert_equal @gps_task.fix_port, srv.self_port_to_component_port('position')
     end
 
     def test_a_service_seen_through_a_model_it_provides
       pose = @gps_task.gps_srv.as(MyApp::Pose)
-      assert_equal 'fix', pose.pose_port.name
+      assert_equal 'fix', pose.pose_port.to_component_port.name
       assert_equal({ 'pose' => 'fix' }, pose.port_mappings_for_task)
       refute_equal @gps_task.gps_srv, pose
       assert pose.same_service?(@gps_task.gps_srv)
@@ -121,7 +132,7 @@ module Syskit
       assert_same stereo.right_srv, stereo.find_data_service('right')
       assert_nil stereo.find_data_service('stereo')
       assert_equal %w[stereo.left stereo.right], stereo.each_slave_data_service.map(&:full_name)
-      assert_equal 'right', stereo.right_srv.image_port.name
+      assert_equal 'right', stereo.right_srv.image_port.to_component_port.name
     end
 
     def test_a_submodel_has_the_services_of_its_parent_as_its_own

@@ -63,7 +63,7 @@ module Syskit
       task = OroGen.nav.GpsTask
       srv = MyApp::Pose.bind(task)
       assert_equal 'gps', srv.full_name
-      assert_equal 'fix', srv.pose_port.name
+      assert_equal 'fix', srv.pose_port.to_component_port.name
       assert_equal task.cmd_srv, MyApp::Cmd.try_bind(task)
       assert_equal srv, MyApp::Pose.try_bind(task.gps_srv), 'a service is seen as the model'
       assert_nil MyApp::Cmd.try_bind(task.gps_srv)
@@ -121,10 +121,17 @@ module Syskit
       assert_equal [OroGen.nav.GpsTask], MyApp::Devices::Gps.find_all_drivers
       assert_equal OroGen.nav.GpsTask, MyApp::Devices::Gps.default_driver
       assert_equal [OroGen.nav.MonoTask, OroGen.nav.StereoTask], MyApp::Devices::Camera.find_all_drivers
-      error = assert_raises(DriverError) { MyApp::Devices::Camera.default_driver }
+      error = assert_raises(Ambiguous) { MyApp::Devices::Camera.default_driver }
       assert_match 'several task models drive (nav::MonoTask, nav::StereoTask) MyApp::Devices::Camera', error.message
-      error = assert_raises(DriverError) { MyApp::Devices::Lidar.default_driver }
+      error = assert_raises(ArgumentError) { MyApp::Devices::Lidar.default_driver }
       assert_match 'no loaded task model drives MyApp::Devices::Lidar', error.message
+    end
+
+    def test_drivers_made_in_ruby_are_found_too
+      ruby_driver = TaskContext.new_submodel { output_port 'range', '/double' }
+      ruby_driver.driver_for MyApp::Devices::Lidar, as: 'lidar'
+      assert_equal [ruby_driver], MyApp::Devices::Lidar.find_all_drivers
+      refute_includes MyApp::Devices::Lidar.find_all_drivers, MyApp::Devices::Lidar.placeholder_model
     end
   end
 end

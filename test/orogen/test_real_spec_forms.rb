@@ -81,9 +81,9 @@ module Syskit
     def test_the_statements_of_a_spec_written_as_real_packages_write_them
       app = load_sonar
       assert_equal [%w[gain double]], OroGen.sonar.Task.operations['set_gain'].arguments
-      deployed = app.orogen.find_deployment('sonar_test').tasks.map { |t| [t.name, t.model.name] }
+      deployed = app.orogen.find_deployment('sonar_test').task_activities.map { |t| [t.name, t.model.name] }
       assert_equal [%w[sonar_test sonar::Task]], deployed
-      assert_equal 'logger::Logger', app.orogen.find_deployment('sonar_logged').tasks.last.model.name
+      assert_equal 'logger::Logger', app.orogen.find_deployment('sonar_logged').task_activities.last.model.name
     end
 
     def test_dynamic_ports_of_any_type_and_what_plugins_add

@@ -119,7 +119,7 @@ module Syskit
     def test_deployments_are_registered
       app = load_spec
       deployment = app.orogen.find_deployment('serial_imu_test')
-      assert_equal([['imu', OroGen.serial_imu.Task]], deployment.tasks.map { |t| [t.name, t.model] })
+      assert_equal([['imu', OroGen.serial_imu.Task]], deployment.task_activities.map { |t| [t.name, t.model] })
     end
 
     def test_the_bundled_canbus_library
@@ -147,7 +147,7 @@ module Syskit
     def test_the_bundled_canbus_deployment_and_types_are_rocks
       app = load_app(my_app)
       app.using_task_library('canbus')
-      deployed = app.orogen.find_deployment('test_canbus').tasks
+      deployed = app.orogen.find_deployment('test_canbus').task_activities
       assert_equal([%w[can canbus::Task]], deployed.map { |t| [t.name, t.model.name] })
       assert_equal %i[SOCKET HICO HICO_PCI EASY_SYNC], ::Types.canbus.DRIVER_TYPE.values
       assert_equal %w[ports_name mask id], ::Types.canbus.CanOutputPort.fields.keys

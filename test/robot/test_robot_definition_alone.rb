@@ -34,6 +34,13 @@ module Syskit
       refute @robot.has_device?('front')
     end
 
+    def test_the_requirements_of_a_device_bind_its_driver_to_it
+      device = @robot.device(@device_m, as: 'front')
+      requirements = device.requirements
+      assert_equal [@driver_m], requirements.models
+      assert_same device, requirements.arguments[:sonar_dev]
+    end
+
     def test_devices_are_found_by_name_slaves_by_their_full_name
       slave_m = DataService.new_submodel(name: 'Beam')
       @driver_m.provides slave_m, as: 'beam', slave_of: 'sonar'

@@ -99,6 +99,20 @@ module Syskit
       free = robot.add_device(Robot::MasterDeviceInstance, MyApp::Devices::ECU::Engine, 'free',
                               using: nil, options: {}, location: nil)
       refute_respond_to free, :can_id
+      assert_includes MyApp::Devices::Bus::CANWithID.attached_device_configuration_module.instance_methods, :can_id
+    end
+
+    def test_clear_model_forgets_ports_and_provided_models
+      load_app(fixture('seed', 'new_bus'))
+      bus = ComBus.new_submodel(message_type: '/double')
+      bus.clear_model
+      assert_equal [bus], bus.fullfilled_models
+      bus.provides ComBus
+      assert bus.fullfills?(ComBus)
+      device = Device.new_submodel { output_port 'out', '/double' }
+      device.clear_model
+      assert_empty device.ports
+      refute device.fullfills?(Device)
     end
 
     def test_dsl_attribute_as_the_seed_shows

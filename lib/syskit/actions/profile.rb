@@ -59,7 +59,9 @@ module Syskit
         @given_name = name
         @namespace = namespace || self
         @declared_at = location
-        @robot = Robot::Definition.new(self)
+        # A profile made in Ruby declares its devices on its robot
+        # (+profile.robot.device(...)+), as Syskit's.
+        @robot = namespace ? Robot::Definition.new(self) : Robot::RobotDefinition.new(self)
         Profile.register_submodel(self) if register
       end
 

@@ -134,7 +134,7 @@ module Syskit
           name = Arguments.name(name, statement: 'tag', what: 'a tag name', pattern: Arguments::METHOD_NAME,
                                       example: "tag 'localization', Services::Pose")
           models = models.flatten
-          if models.empty? || !models.all? { |m| m.is_a?(Models::DataServiceModel) || (m.is_a?(Class) && m < Component) }
+          if models.empty? || !models.all? { |m| m.is_a?(Syskit::Models::DataServiceModel) || (m.is_a?(Class) && m < Component) }
             raise DeclarationError.new("tag '#{name}' expects data service or component models",
                                        location: location, hint: "write tag '#{name}', Services::Pose")
           end

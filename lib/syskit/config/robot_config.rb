@@ -178,7 +178,7 @@ module Syskit
         @candidates = nil
         @by_model = nil
         @deployments << deployment
-        deployment.tasks.each do |task|
+        deployment.task_activities.each do |task|
           if (other = @deployed_tasks[task.name])
             raise DeploymentError.new(
               "deployed task name '#{task.name}' is used twice (#{other} and #{task})",
@@ -205,7 +205,7 @@ module Syskit
       def add_spec(spec, prefix, location)
         case spec
         when String, Symbol then add(prefixed(named_deployment(spec.to_s, location), prefix), location)
-        when Models::Deployment then add(prefixed(spec.orogen_model, prefix), location)
+        when Models::Deployment, Models::ConfiguredDeployment then add(prefixed(spec.orogen_model, prefix), location)
         when Hash then spec.each { |key, value| add_mapping(key, value, prefix, location) }
         else raise usage_error(spec, location)
         end

@@ -182,7 +182,18 @@ module Syskit
                         (value.is_a?(Class) && value.find_all_data_services_from_type(key).empty?)
 
         check_fullfills(key, value, location)
-        value.respond_to?(:find_data_service_from_type) ? value.find_data_service_from_type(key) || value : value
+        return value unless value.respond_to?(:find_data_service_from_type) || value.is_a?(AbstractComponent)
+
+        service_of_type(value, key) || value
+      end
+
+      # The service of +value+ (a component model, requirements or a task)
+      # that is a +service_model+.
+      def service_of_type(value, service_model)
+        return value.find_data_service_from_type(service_model) unless value.is_a?(AbstractComponent)
+
+        srv = value.model.find_data_service_from_type(service_model)
+        srv && Syskit::BoundDataService.new(value, srv)
       end
 
       def narrow_to_component(key, value, location)
@@ -196,6 +207,7 @@ module Syskit
       end
 
       def check_fullfills(key, value, location)
+        value = value.model if value.is_a?(AbstractComponent)
         return if !value.respond_to?(:fullfills?) || value.fullfills?(key)
 
         raise DeclarationError.new("use cannot select #{Arguments.shown(value)} for #{key}: it is not a #{key}",

@@ -87,7 +87,9 @@ module Syskit
       def deployments
         found = {}
         catalog.entries(:task_library).each do |entry|
-          entry.object.deployments.each_value { |deployment| add_deployed(found, deployment.tasks, entry.object) }
+          entry.object.deployments.each_value do |deployment|
+            add_deployed(found, deployment.task_activities, entry.object)
+          end
         end
         catalog.app.robot_configs.sort.each do |robot, config|
           add_deployed(found, config.deployed_tasks).each { |d| d.robots << robot }

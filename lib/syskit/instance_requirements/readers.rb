@@ -21,10 +21,20 @@ module Syskit
 
         services = service_names(model)
         children = child_names(model)
-        return if services.empty? && children.empty?
+        ports = port_names(model)
+        return if services.empty? && children.empty? && ports.empty?
 
-        key = [services, children].freeze
-        LOCK.synchronize { MODULES[key] ||= build(services, children) }
+        key = [services, children, ports].freeze
+        LOCK.synchronize { MODULES[key] ||= build(services, children, ports) }
+      end
+
+      # The names of the ports of +model+ and of its services (readers
+      # x_port, see #find_port).
+      def self.port_names(model)
+        own = model.respond_to?(:ports) ? model.ports.keys : []
+        services = model.respond_to?(:each_data_service) ? model.each_data_service.to_a : []
+        served = services.flat_map { |s| s.model.ports.keys }
+        (own + served).uniq
       end
 
       # The names of +model+'s master services (readers x_srv).
@@ -37,11 +47,23 @@ module Syskit
         model.respond_to?(:child_names) ? model.child_names : []
       end
 
-      def self.build(services, children)
+      def self.build(services, children, ports)
         Module.new do
           services.each { |name| define_method("#{name}_srv") { find_data_service(name) } }
           children.each { |name| define_method("#{name}_child") { find_child(name) } }
+          ports.each do |name|
+            define_method("#{name}_port") do
+              find_port(name) || raise(NoMethodError.new("#{self} has no port '#{name}'", "#{name}_port"))
+            end
+          end
         end
+      end
+
+      # The port +name+ of the selected service, or of the model when none
+      # is selected (nil when there is none).
+      def find_port(name)
+        owner = model
+        owner.respond_to?(:find_port) ? owner.find_port(name) : nil
       end
 
       # These requirements with the service +name+ of the component model
@@ -66,7 +88,7 @@ module Syskit
         end
 
         check_unambiguous_service(service_model)
-        found = model.find_data_service_from_type(service_model)
+        found = proxy_model.find_data_service_from_type(service_model)
         found && copy(service: found)
       end
 
@@ -83,6 +105,30 @@ module Syskit
           "#{component} and #{also} both provide #{service_model} in #{self}",
           location: Location.of_caller, hint: "select the #{service_model} service explicitly (x_srv)"
         )
+      end
+
+      # The child +name+ of the composition model (as +Cmp.use(...).x_child+);
+      # an ArgumentError when the requirements are not a composition's.
+      def find_child(name)
+        unless composition?
+          raise DeclarationError.new("#{self} is not a composition: it has no child '#{name}'",
+                                     location: Location.of_caller, hint: 'ask a composition model for its children')
+        end
+
+        component_model.find_child(name)
+      end
+
+      # Enumerates the children of the composition model.
+      def each_child(&)
+        return enum_for(__method__) unless composition?
+
+        component_model.each_child(&)
+      end
+
+      # The same requirements without a selected service (Syskit's
+      # +to_component_model+).
+      def to_component_model
+        copy(service: nil)
       end
 
       # Why +name+ is not a method of the requirements when it looks like

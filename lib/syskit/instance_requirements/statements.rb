@@ -17,12 +17,12 @@ module Syskit
                                      location: location, hint: "write with_conf('default', 'forward')")
         end
 
-        copy(conf: names, conf_location: location)
+        change(conf: names, conf_location: location)
       end
 
       # Task arguments (see Component#argument).
       def with_arguments(**arguments)
-        copy(arguments: self.arguments.merge(arguments).freeze)
+        change(arguments: self.arguments.merge(arguments).freeze)
       end
 
       # Deployed tasks to prefer (names or regexps).
@@ -34,7 +34,7 @@ module Syskit
                                      location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
         end
 
-        copy(deployment_hints: deployment_hints + hints, declared_at: Location.of_caller)
+        change(deployment_hints: deployment_hints + hints, declared_at: Location.of_caller)
       end
 
       # A deployment of its own (see Robot::MasterDevice#deployed_as).
@@ -56,8 +56,16 @@ module Syskit
         end
 
         injection = selections.dup.add(*mappings).freeze
-        component_model.check_child_keys(injection.explicit.keys.grep(String) - selections.explicit.keys, location)
-        copy(selections: injection, declared_at: declared_at || location)
+        names = injection.explicit.keys.grep(String) - selections.explicit.keys
+        component_model.check_child_keys(names, location)
+        component_model.check_child_selections(injection.explicit.slice(*names), location)
+        change(selections: injection, declared_at: declared_at || location)
+      end
+
+      # Syskit's +add_models+: these requirements also requiring +added+
+      # (a model that refines one of the models replaces it).
+      def add_models(added, location: Location.of_caller)
+        copy(models: Models.merge_models(models, added, location, self))
       end
 
       # Syskit's +with_dynamic_service+: the task model specialized with
@@ -72,7 +80,7 @@ module Syskit
 
         specialized = model.specialize
         specialized.require_dynamic_service(dynamic_name, as: as, **options)
-        copy(models: models.map { |m| m.equal?(model) ? specialized : m })
+        change(models: models.map { |m| m.equal?(model) ? specialized : m })
       end
 
       # The transformer's frame names (+use_frames('world' => 'map')+) and
@@ -101,12 +109,12 @@ module Syskit
       # The same requirements, marked abstract: what fills them must still
       # be chosen (Syskit's +abstract+).
       def abstract
-        copy(abstract: true)
+        change(abstract: true)
       end
 
       # Without the arguments given so far.
       def with_no_arguments
-        copy(arguments: NO_ARGUMENTS)
+        change(arguments: NO_ARGUMENTS)
       end
 
       # Syskit's former name of with_conf.
@@ -117,7 +125,11 @@ module Syskit
       # These requirements with +srv+, a service of their component model,
       # selected (as +x_srv+ does).
       def select_service(srv)
-        srv = srv.service if srv.is_a?(InstanceRequirements)
+        if srv.is_a?(InstanceRequirements)
+          # Requirements on a service: their arguments come along, as in Syskit.
+          arguments = srv.arguments
+          srv = srv.service
+        end
         model = component_model
         unless srv.is_a?(Models::BoundDataService) && model.is_a?(Class) && model <= srv.task_model
           shown = srv.respond_to?(:task_model) ? srv : Arguments.shown(srv)
@@ -125,23 +137,35 @@ module Syskit
                                      location: Location.of_caller, hint: 'select one of its x_srv')
         end
 
-        copy(service: srv)
+        return change(service: srv) if arguments.nil? || arguments.empty?
+
+        change(service: srv, arguments: self.arguments.merge(arguments))
+      end
+
+      # These requirements without a selected service.
+      def unselect_service
+        change(service: nil)
+      end
+
+      # Names the requirements (Syskit's +name=+).
+      def name=(name)
+        @name = name
       end
 
       # Which specializations to prefer when several apply.
       def prefer_specializations(hints)
-        copy(specialization_hints: specialization_hints + [hints])
+        change(specialization_hints: specialization_hints + [hints])
       end
 
       # These requirements as the definition +name+ of +profile+.
       def named(name, profile, location, doc: nil)
-        copy(class: Actions::Profile::Definition, name: name, profile: profile, declared_at: location, doc: doc)
+        copy(class: Actions::Profile::Definition, name: name, profile: profile, declared_at: location, doc: doc).freeze
       end
 
       private
 
       def declare_deployment(name, unmanaged, location)
-        copy(deployment: Robot::MasterDevice::DeclaredDeployment.declare(
+        change(deployment: Robot::MasterDevice::DeclaredDeployment.declare(
           name, unmanaged, location, owner: self, hint: "write deployed_as('name_of_the_task')"
         ))
       end

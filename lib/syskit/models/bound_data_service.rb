@@ -44,9 +44,15 @@ module Syskit
         task_model
       end
 
-      # The service model (Syskit's +fullfilled_model+ of a bound service).
+      # The models a task must fullfill to stand for the service, as
+      # Syskit lists them: its service model.
       def fullfilled_model
-        model
+        [model]
+      end
+
+      # Its service model and those it provides.
+      def each_fullfilled_model(&)
+        model.each_fullfilled_model(&)
       end
 
       # The name the task model knows the service by: +name+, after its
@@ -75,7 +81,16 @@ module Syskit
         @argument_name ||= :"#{name}_dev"
       end
 
+      # Whether its service model is or provides +other+ (a service model,
+      # a placeholder of service models alone, or a list of them); never a
+      # component model.
       def fullfills?(other)
+        return other.all? { |m| fullfills?(m) } if other.is_a?(Array)
+        if other.respond_to?(:placeholder?) && other.placeholder?
+          return other.proxied_component_model.equal?(Syskit::Component) &&
+                 fullfills?(other.proxied_data_service_models)
+        end
+
         model.fullfills?(other)
       end
 
@@ -85,8 +100,10 @@ module Syskit
       end
 
       # Enumerates this service's slaves, in declaration order.
-      def each_slave_data_service(&)
-        task_model.each_slave_data_service(self, &)
+      def each_slave_data_service(&block)
+        return enum_for(__method__) unless block
+
+        task_model.each_data_service { |srv| yield srv if srv.master&.full_name == full_name }
       end
 
       # The same service seen through +other+, a model it provides: its
@@ -108,7 +125,9 @@ module Syskit
       # This service as a service of +component_model+, a submodel of its
       # task model (Syskit's promotion): what +Sub.gps_srv+ is when Sub
       # inherits the service; +master+ is the promoted master of a slave.
+      # Given a service, attaches to that service's component model.
       def attach(component_model, master: nil)
+        component_model = component_model.component_model if component_model.is_a?(BoundDataService)
         return self if component_model.equal?(task_model)
 
         unless component_model.is_a?(Class) && component_model < task_model
@@ -135,10 +154,22 @@ module Syskit
         other.is_a?(BoundDataService) && other.demoted.equal?(demoted)
       end
 
-      # This service of +task+ (a task of a network), as its configure
-      # method sees it (see Syskit::BoundDataService).
+      # This service of +task+ (a task of a network or of a test's plan),
+      # as its configure method sees it (see Syskit::BoundDataService); given
+      # a task's service, that service when it is this one. The task must
+      # fullfill the service's component model: when it does without
+      # deriving from it, the service is found on the task by name (a
+      # placeholder's base model service, a dynamic service instance) or
+      # by type (a service the placeholder stands for).
       def bind(task)
-        Syskit::BoundDataService.new(task, self)
+        return task if task.is_a?(Syskit::BoundDataService) && task.model == self
+        return Syskit::BoundDataService.new(task, self) if task.model <= component_model
+
+        unless task.fullfills?(component_model)
+          raise ArgumentError, "cannot bind #{self} on #{task}: does not fullfill #{component_model}"
+        end
+
+        bind_by_name_or_type(task)
       end
 
       # The task port a port of +srv_model+ (this service's model or one it
@@ -163,6 +194,18 @@ module Syskit
       end
 
       private
+
+      def bind_by_name_or_type(task)
+        if component_model.placeholder?
+          base_srv = component_model.proxied_component_model.find_data_service(name)
+          return base_srv ? Syskit::BoundDataService.new(task, base_srv) : task.find_data_service_from_type(model)
+        end
+
+        resolved = task.find_data_service(full_name)
+        return resolved if resolved&.model&.same_service?(self)
+
+        raise InternalError, "#{task} fullfills #{component_model} but has no service standing for #{self}"
+      end
 
       def options_frozen(options)
         options.frozen? ? options : options.dup.freeze

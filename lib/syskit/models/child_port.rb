@@ -37,6 +37,12 @@ module Syskit
         name
       end
 
+      # The oroGen port it is (what an export of it keeps, see
+      # CompositionPorts#ports).
+      def orogen_model
+        @port.is_a?(Port) ? @port.orogen_model : @port
+      end
+
       def input?
         direction == :input
       end
@@ -161,6 +167,25 @@ module Syskit
     module ChildConnections
       def connect_to(other, policy = {})
         ChildPort.autoconnect(each_output_port.to_a, other, policy, Location.of_caller)
+        self
+      end
+
+      # Syskit's +connect_ports(other_child, ['out', 'in'] => policy)+:
+      # connects ports of this child to ports of +other+, a child of the
+      # same composition model, by name.
+      def connect_ports(other, mappings)
+        unless other.respond_to?(:composition_model) && other.composition_model.equal?(composition_model)
+          raise ArgumentError, "#{self} can only be connected to children of #{composition_model}, " \
+                               "got #{Arguments.shown(other)}"
+        end
+
+        mappings.each do |(out_name, in_name), policy|
+          out = find_output_port(out_name) ||
+                raise(InvalidCompositionChildPort.new(composition_model, child_name, out_name))
+          input = other.find_input_port(in_name) ||
+                  raise(InvalidCompositionChildPort.new(composition_model, other.child_name, in_name))
+          out.connect_to(input, policy || {})
+        end
         self
       end
     end

@@ -36,6 +36,14 @@ module Syskit
           bound_service&.name
         end
 
+        def composition_model
+          child.composition_model
+        end
+
+        def child_name
+          child.child_name
+        end
+
         # As a selection (+use('x' => tracker_child.rear_pose_srv)+): the
         # child's task, through this service (see ChildReference).
         def referenced_child

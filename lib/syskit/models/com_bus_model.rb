@@ -22,7 +22,7 @@ module Syskit
 
       def initialize(message_type: nil, **options)
         super(**options)
-        @attached_device_configuration = nil
+        @attached_device_configuration_module = nil
         @lazy_dispatch = false
         @override_policy = true
         self.message_type = message_type if message_type
@@ -75,15 +75,22 @@ module Syskit
       def extend_attached_device_configuration(&block)
         Arguments.block(block, statement: 'extend_attached_device_configuration',
                                example: 'extend_attached_device_configuration do dsl_attribute :can_id end')
-        @attached_device_configuration ||= DeviceConfigurationModule.new.tap { DataServiceModel.hierarchy_changed }
-        @attached_device_configuration.module_eval(&block)
-        @attached_device_configuration
+        attached_device_configuration_module.module_eval(&block)
+        attached_device_configuration_module
+      end
+
+      # The module this bus model's own extend_attached_device_configuration
+      # blocks define (those of the models it provides are apart: see
+      # #attached_device_configuration_modules).
+      def attached_device_configuration_module
+        @attached_device_configuration_module ||=
+          DeviceConfigurationModule.new.tap { DataServiceModel.hierarchy_changed }
       end
 
       def attached_device_configuration_modules
         hierarchy_view(:attached_device_configuration_modules) do
           fullfilled_models.reverse.filter_map do |m|
-            m.instance_variable_get(:@attached_device_configuration) if m.is_a?(ComBusModel)
+            m.instance_variable_get(:@attached_device_configuration_module) if m.is_a?(ComBusModel)
           end
         end
       end

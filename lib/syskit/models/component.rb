@@ -6,6 +6,7 @@ require 'syskit/models/bound_data_service'
 require 'syskit/models/component_merging'
 require 'syskit/models/port_mapper'
 require 'syskit/models/service_lookups'
+require 'syskit/models/driver_services'
 require 'syskit/models/task_arguments'
 require 'syskit/models/task_requirements'
 
@@ -19,6 +20,7 @@ module Syskit
       include TaskArguments
       include TaskRequirementStatements
       include ServiceLookups
+      include DriverServices
       include ComponentMerging
 
       class << self
@@ -71,16 +73,16 @@ module Syskit
         @abstract == true
       end
 
+      # Whether it is a submodel made by +specialize+ for the use of one
+      # requirement or test (Syskit's private specializations).
+      def private_specialization?
+        @private_specialization == true
+      end
+
       # Whether it is a placeholder model (see Placeholder): a component
       # model declared in a file is not.
       def placeholder?
         false
-      end
-
-      # The placeholder models made from this one, by kind and services
-      # (see Placeholder.for).
-      def placeholder_models
-        @placeholder_models ||= {}
       end
 
       # Services by name, inherited ones included.
@@ -136,10 +138,12 @@ module Syskit
       end
 
       # Whether this model is +model+ (or a submodel of it) or provides it;
-      # given a list, whether it fullfills each of them.
+      # given a list, whether it fullfills each of them. A placeholder is
+      # fullfilled by what provides all it stands for, a specialization by
+      # a model of its task model having its required dynamic services.
       def fullfills?(model)
         return model.all? { |m| fullfills?(m) } if model.is_a?(Array)
-        return self <= model if model.is_a?(Class)
+        return self <= model || fullfills_placeholder_or_specialization?(model) if model.is_a?(Class)
 
         model.is_a?(DataServiceModel) && !services_fulfilling(model).empty?
       end
@@ -168,6 +172,14 @@ module Syskit
       end
 
       private
+
+      def fullfills_placeholder_or_specialization?(model)
+        return model.fullfilled_by?(self) if model.respond_to?(:placeholder?) && model.placeholder?
+        return false unless model.respond_to?(:each_required_dynamic_service) && !model.concrete_model.equal?(model)
+
+        concrete_model <= model.concrete_model &&
+          model.each_required_dynamic_service.all? { |srv| find_data_service(srv.full_name)&.same_service?(srv) }
+      end
 
       # The class of a new submodel (see #new_submodel).
       def submodel_class

@@ -34,6 +34,9 @@ module Syskit
         return self if self <= other
         return other if other <= self
 
+        merged = merged_specializations(other)
+        return merged if merged
+
         raise IncompatibleComponentModels.new("cannot merge #{self} and #{other}: neither derives from the other",
                                               location: Location.of_caller,
                                               hint: 'a task has one model: choose models that derive from one another')
@@ -46,6 +49,10 @@ module Syskit
       end
 
       private
+
+      # The model made of this one's and +other+'s specializations, when
+      # both specialize one model (see CompositionSpecializations).
+      def merged_specializations(_other); end
 
       def mergeable_services?(srv, target_srv)
         return false unless srv.model.equal?(target_srv.model)

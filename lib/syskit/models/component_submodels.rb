@@ -26,8 +26,13 @@ module Syskit
         each_submodel.include?(model)
       end
 
-      # Forgets the submodels of this model, and theirs; the placeholders
-      # made from it are made anew when next asked for.
+      # The placeholder models made from this one, by kind and services
+      # (see Placeholder.for): submodels too, made anew once forgotten.
+      def placeholder_models
+        @placeholder_models ||= {}
+      end
+
+      # Forgets the submodels of this model, and theirs.
       def clear_submodels
         @placeholder_models = nil
         subclasses.each do |sub|

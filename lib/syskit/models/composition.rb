@@ -1,9 +1,11 @@
 # frozen_string_literal: true
 
 require 'syskit/models/composition_child'
+require 'syskit/models/composition_configurations'
 require 'syskit/models/composition_ports'
 require 'syskit/models/composition_specializations'
 require 'syskit/models/composition_lookups'
+require 'syskit/models/composition_dynamic_services'
 
 module Syskit
   # The class-level side of components (see Composition).
@@ -28,6 +30,8 @@ module Syskit
       include CompositionPorts
       include CompositionSpecializations
       include CompositionLookups
+      include CompositionConfigurations
+      include CompositionDynamicServices
 
       # Options of +add+ that only matter to Roby's runtime (what the
       # child's events mean to the composition): accepted, not modelled.
@@ -148,34 +152,14 @@ module Syskit
           (promoted_child(name, superclass.find_child(name)) if superclass.respond_to?(:find_child))
       end
 
-      # Named configurations: +conf 'slow', controller_child => ['default', 'slow']+
-      # gives the children these sections when the composition is used
-      # with_conf('slow').
-      def conf(name, mappings = {})
-        location = Location.of_caller
-        sections = mappings.to_h do |child, confs|
-          child_name = child.respond_to?(:child_name) ? child.child_name : child.to_s
-          unless find_child(child_name)
-            raise DeclarationError.new("conf '#{name}' names #{child_name}, which is not a child of #{self}",
-                                       location: location, hint: "children are #{child_names.join(', ')}")
-          end
-
-          [child_name, Array(confs).map(&:to_s).freeze]
+      # The +x_child+ readers of this model's children (its parents'
+      # included), as a module the CompositionChild objects standing for a
+      # composition of this model extend: a child added later is readable
+      # on them too.
+      def child_readers
+        @child_readers ||= Module.new.tap do |readers|
+          readers.include(superclass.child_readers) if superclass.respond_to?(:child_readers)
         end
-        (@configuration_locations ||= {})[name.to_s] = location
-        (@configurations ||= {})[name.to_s] = sections.freeze
-      end
-
-      # Named configurations (see #conf), inherited ones included.
-      def configurations
-        inherited = superclass.respond_to?(:configurations) ? superclass.configurations : {}
-        inherited.merge(@configurations || {})
-      end
-
-      # Where the named configuration +name+ is declared.
-      def configuration_location(name)
-        @configuration_locations&.[](name) ||
-          (superclass.configuration_location(name) if superclass.respond_to?(:configuration_location))
       end
 
       # Requirements of this model (see InstanceRequirements).
@@ -248,11 +232,13 @@ module Syskit
                                          selections: merged.selections, declared_at: location)
       end
 
-      # +name_child+ on the model and on its instances.
+      # +name_child+ on the model, on its instances and on the children
+      # standing for a composition of this model (see #child_readers).
       def define_child_readers(name)
         reader = "#{name}_child"
         define_singleton_method(reader) { find_child(name) } unless singleton_class.method_defined?(reader)
         define_method(reader) { child_task(name) } unless method_defined?(reader)
+        child_readers.define_method(reader) { find_child(name) } unless CompositionChild.method_defined?(reader)
       end
 
       # A parent's child seen from this model (kept, so that it is the same

@@ -3,6 +3,7 @@
 require 'syskit/models/child_port'
 require 'syskit/models/port_lookup'
 require 'syskit/models/child_service_view'
+require 'syskit/models/composition_child_binding'
 
 module Syskit
   module Models
@@ -17,6 +18,7 @@ module Syskit
       include PortLookup
       include ChildConnections
       include ChildReference
+      include Binding
 
       # +reached_through+: for a child of a child composition, reached as
       # +first_child.src_child+, the child it is reached through (nil for a
@@ -26,8 +28,8 @@ module Syskit
 
       attr_reader :composition_model, :child_name, :requirements, :declared_at, :reached_through
 
-      def initialize(composition_model, child_name, requirements, location, optional: false, reached_through: nil,
-                     facets: [])
+      def initialize(composition_model, child_name, requirements = InstanceRequirements.new([Syskit::Component]),
+                     location = nil, optional: false, reached_through: nil, facets: [])
         @composition_model = composition_model
         @facets = facets.freeze
         @child_name = child_name
@@ -58,7 +60,8 @@ module Syskit
 
       # Replaces what the child requires, and the +x_port+ readers with it.
       def requirements=(requirements)
-        @requirements = requirements
+        # Held by the model from now on, as Syskit freezes what it is given.
+        @requirements = requirements.freeze
         @ports = nil
         @children = nil
         define_port_readers
@@ -99,10 +102,10 @@ module Syskit
         requirements.models
       end
 
-      # The child's model: its component model, else its one service model,
-      # else the list of its service models.
+      # The child's model, as Syskit's: its component model, else the
+      # placeholder model of what it requires (see Placeholder).
       def model
-        requirements.component_model || (models.size == 1 ? models.first : models)
+        Placeholder.for(models)
       end
 
       def fullfills?(model)
@@ -124,6 +127,16 @@ module Syskit
 
       def optional?
         @optional
+      end
+
+      # Syskit's +require_dynamic_service+ on a child (in the block of a
+      # composition's dynamic service): the child is overloaded with a
+      # specialization of its task model that has the instance +as+ of the
+      # dynamic service +dynamic_name+; returns that service.
+      def require_dynamic_service(dynamic_name, as:, **options)
+        overloaded = requirements.with_dynamic_service(dynamic_name, as: as, **options)
+        composition_model.overload(child_name, overloaded.component_model)
+        overloaded.component_model.find_service(as.to_s)
       end
 
       # Marks the child optional: left out of the network when nothing
@@ -227,11 +240,11 @@ module Syskit
       end
 
       # +x_child+ for each child of a child composition.
+      # (the readers of that composition model, see
+      # Composition#child_readers: a child it gets later is readable too).
       def define_child_readers
-        child_names.each do |name|
-          reader = "#{name}_child"
-          define_singleton_method(reader) { find_child(name) } unless respond_to?(reader)
-        end
+        model = child_composition_model
+        extend(model.child_readers) if model.respond_to?(:child_readers)
       end
 
       def service_names

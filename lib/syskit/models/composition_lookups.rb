@@ -18,6 +18,26 @@ module Syskit
         end
       end
 
+      # Checks that what +selections+ (child name => value) select for
+      # this model's children is a submodel of the component model each
+      # requires, as Syskit does when +use+ is called (what services a
+      # component provides may be declared later, and is checked where the
+      # selection fills the child).
+      def check_child_selections(selections, location)
+        selections.each do |name, value|
+          child = find_child(name)
+          required = child&.requirements&.component_model
+          next unless required.is_a?(Class) && InstanceRequirements.selectable?(value)
+
+          selected = InstanceRequirements.from(value).component_model
+          next if !selected.is_a?(Class) || selected <= required
+
+          raise InvalidSelection.new("#{selected} cannot be selected for the child '#{name}' of #{self}: " \
+                                     "it is not a #{required}",
+                                     location: location, hint: "select a #{required} (or a submodel of it)")
+        end
+      end
+
       # The child +name+ of this model or, when it has none, of one of its
       # specializations (+specialize ... do add X, as: 'extra' end+).
       def find_child_anywhere(name)

@@ -81,10 +81,14 @@ module Syskit
         exports.each_value.any? { |e| e.port.same_port?(port) }
       end
 
-      # The composition's ports (its exports), as ports of a component.
+      # The composition's ports (its exports), as ports of a component:
+      # each keeps the oroGen port of the child port it exports, under the
+      # exported name.
       def ports
         cached(:ports) do
-          exports.transform_values { |e| Orogen::Port.new(e.name, e.port.direction, e.port.type) }.freeze
+          exports.transform_values do |e|
+            (e.port.input? ? InputPort : OutputPort).new(self, e.port.orogen_model, e.name)
+          end.freeze
         end
       end
 

@@ -27,7 +27,7 @@ module Syskit
       # the block evaluated on it.
       def specialize(mappings = {}, &block)
         location = Location.of_caller
-        return new_submodel(&block) if mappings.empty?
+        return private_specialization(&block) if mappings.empty?
 
         mappings = without_not_option(mappings, location)
         children = normalize_specialization(mappings, location)
@@ -129,6 +129,25 @@ module Syskit
 
       def own_specializations
         @own_specializations ||= []
+      end
+
+      # Two specialized models of one composition model merge into the
+      # specialized model with the specializations of both applied.
+      def merged_specializations(other)
+        return unless specialization? && other.respond_to?(:specialization?) && other.specialization? &&
+                      specialization_root.equal?(other.specialization_root)
+
+        specialization_root.specialized_model(applied_specializations | other.applied_specializations)
+      end
+
+      # A submodel of its own, named after this model, on which +block+ is
+      # evaluated (see Component#private_specialization?).
+      def private_specialization(&block)
+        @private_specialization_count = (@private_specialization_count || 0) + 1
+        model = new_submodel(name: "#{self}{#{@private_specialization_count}}")
+        model.instance_variable_set(:@private_specialization, true)
+        model.class_eval(&block) if block
+        model
       end
 
       # Syskit's +not:+ option of specialize, which its selection does not

@@ -66,12 +66,7 @@ module Syskit
       # is where the instance is asked for.
       def instantiate(as, options, location, on: component_model)
         context = InstantiationContext.new(on, as, self, **options)
-        begin
-          context.instance_exec(&@block)
-        rescue ScriptError, StandardError => e
-          raise UserCode.translate(e, error_class: DeclarationError,
-                                      context: "in dynamic service '#{name}' of #{component_model.name} for '#{as}'")
-        end
+        evaluate(context, as)
         return [context.service, context.created_ports] if context.service
 
         raise DeclarationError.new(
@@ -79,6 +74,15 @@ module Syskit
           location: declared_at || location,
           hint: "call provides #{service_model}, 'service_port' => \"\#{name}_port\" (or driver_for) in the block"
         )
+      end
+
+      # Runs the block on +context+ for the instance +as+, its errors
+      # located in the block.
+      def evaluate(context, as)
+        context.instance_exec(&@block)
+      rescue ScriptError, StandardError => e
+        raise UserCode.translate(e, error_class: DeclarationError,
+                                    context: "in dynamic service '#{name}' of #{task_model} for '#{as}'")
       end
 
       def to_s

@@ -4,7 +4,8 @@ require 'syskit/models/dynamic_data_service'
 
 module Syskit
   module Models
-    # +dynamic_service+ on task models (see DynamicDataService).
+    # +dynamic_service+ on task and composition models (see
+    # DynamicDataService, CompositionDynamicServices).
     module DynamicServices
       # Declares a dynamic service of +model+ named +as+; the block declares
       # each instance (see DynamicDataService). Syskit's +dynamic:+,
@@ -44,16 +45,13 @@ module Syskit
       def require_dynamic_service(dynamic_name, as:, **options)
         location = Location.of_caller
         dynamic = fetch_dynamic_service(dynamic_name, location, "to require as '#{as}'")
-        raise not_a_specialization(dynamic_name, location) unless specialization?
-
         existing = find_service(as.to_s)
         return existing if existing&.fullfills?(dynamic.service_model)
         raise already_a_service(existing, dynamic, location) if existing
 
-        service, ports = dynamic.instantiate(as.to_s, options, location, on: self)
-        ports.each { |port| spec.ports[port.name] = port }
+        service = instantiate_dynamic_service(dynamic, as.to_s, options, location)
         (@required_dynamic_services ||= []) << service
-        register_service(service)
+        service
       end
 
       # The services required from dynamic services, inherited ones
@@ -105,6 +103,17 @@ module Syskit
       end
 
       private
+
+      # The service the block of +dynamic+ declares for the instance +as+,
+      # registered on this model: on a task model, with the ports it
+      # creates, on a specialization only (see #not_a_specialization).
+      def instantiate_dynamic_service(dynamic, as, options, location)
+        raise not_a_specialization(dynamic.name, location) unless specialization?
+
+        service, ports = dynamic.instantiate(as, options, location, on: self)
+        ports.each { |port| spec.ports[port.name] = port }
+        register_service(service)
+      end
 
       # Syskit changes the task model itself; here the ports a dynamic
       # service creates go on a specialization, made for the purpose.

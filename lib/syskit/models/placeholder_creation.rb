@@ -92,13 +92,13 @@ module Syskit
 
         # The ports a task needs to provide each of +services+ (by name),
         # and each service's port mappings: a port whose name another
-        # service took with another type or direction gets a name of its
-        # own (+pose_srv1+).
-        def self.service_ports(services)
+        # service or the +base+ model took with another type or direction
+        # gets a name of its own (+pose_srv1+).
+        def self.service_ports(services, base = nil)
           ports = {}
           mappings = services.each_with_index.map do |srv, index|
             srv.ports.each_value.to_h do |p|
-              taken = ports[p.name]
+              taken = ports[p.name] || base&.find_port(p.name)
               clash = taken && (taken.type != p.type || taken.direction != p.direction)
               name = clash ? "#{p.name}_srv#{index}" : p.name
               ports[name] ||= Syskit::Orogen::Port.new(name, p.direction, p.type)
@@ -112,7 +112,7 @@ module Syskit
           base = @task_model.equal?(Syskit::Component) ? Syskit::TaskContext : @task_model
           spec = Orogen::TaskSpec.new('placeholder', nil)
           spec.superclass = base.spec if base.respond_to?(:spec) && base.spec
-          ports, @mappings = PlaceholderBuilder.service_ports(@services)
+          ports, @mappings = PlaceholderBuilder.service_ports(@services, base)
           ports.each_value { |p| spec.ports[p.name] = p unless base.find_port(p.name) }
           spec.abstract = true
           spec.finalize

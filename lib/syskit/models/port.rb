@@ -36,7 +36,7 @@ module Syskit
 
       # What the declaration says (see Orogen::Port and ConnectionNeeds).
       def_delegators :@port, :direction, :input?, :output?, :multiplexes?, :reliable?, :reliable, :buffer_size,
-                     :orocos_type_name, :dynamic?, :declared_type, :type_description
+                     :orocos_type_name, :type_name, :dynamic?, :declared_type, :type_description
 
       # oroGen's modifiers, said on the port itself, as in Syskit
       # (+find_output_port('samples').triggered_once_per_update+).
@@ -73,6 +73,17 @@ module Syskit
         return self unless component_model.respond_to?(:self_port_to_component_port)
 
         component_model.self_port_to_component_port(self)
+      end
+
+      # Whether a connection of its component model links this port to
+      # +sink+: never for the ports of task and service models, whose
+      # connections are kept by compositions (see ChildPort#connected_to?).
+      def connected_to?(sink)
+        source = try_to_component_port
+        return source.connected_to?(sink) unless source.equal?(self)
+
+        sink = sink.try_to_component_port if sink.respond_to?(:try_to_component_port)
+        !!(component_model.respond_to?(:connected?) && component_model.connected?(self, sink))
       end
 
       # Whether this output port can feed +sink+, an input port of the

@@ -50,6 +50,18 @@ module Syskit
         self
       end
 
+      # Forgets what the model declares, its ports and the models it
+      # provides, as MetaRuby's +clear_model+ does before a model's file is
+      # loaded again (which then provides them anew).
+      def clear_model
+        @ports = {}
+        @parents = {}
+        @fullfilled_models = nil
+        @identity_mappings = nil
+        DataServiceModel.hierarchy_changed
+        self
+      end
+
       # The models this one provides, directly or not (Syskit's
       # +parent_models+), in the order of #fullfilled_models.
       def parent_models

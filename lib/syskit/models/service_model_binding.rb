@@ -58,31 +58,31 @@ module Syskit
         placeholder_model.new(arguments)
       end
 
-      # A placeholder task added to +plan+ (a plan as data), as Syskit's
-      # +Srv.instanciate(plan)+.
-      def instanciate(plan, _context = nil, **arguments)
-        task = create_placeholder_task(**arguments)
-        plan.add(task)
-        task
-      end
-
-      # The loaded task models (not abstract) that drive this device model,
-      # by name.
+      # The component models (not abstract) that drive this device model,
+      # by name: the loaded task libraries' and those made in Ruby
+      # (+TaskContext.new_submodel { driver_for Dev, as: 'x' }+), as Syskit
+      # finds them among Syskit::Component's submodels.
       def find_all_drivers
         app = Syskit.app
-        app ? app.orogen.current_driver_index.drivers_for(self) : []
+        indexed = app ? app.orogen.current_driver_index.drivers_for(self) : []
+        made = Syskit::Component.each_submodel.select { |m| !m.abstract? && m.fullfills?(self) }
+        (indexed | made).sort_by(&:to_s)
       end
 
-      # The only loaded task model driving this device model; an error when
-      # there are none or several.
+      # The only component model driving this device model; Syskit's
+      # Ambiguous when there are several, an ArgumentError when none.
       def default_driver
         drivers = find_all_drivers
         return drivers.first if drivers.size == 1
 
-        message = drivers.empty? ? 'no loaded task model drives' : "several task models drive (#{drivers.join(', ')})"
-        raise DriverError.new("#{message} #{self}",
-                              location: Location.of_caller,
-                              hint: drivers.empty? ? "load its driver's task library (using_task_library)" : 'pick one')
+        location = Location.of_caller
+        if drivers.empty?
+          raise DeclarationError.new("no loaded task model drives #{self}",
+                                     location: location, hint: "load its driver's task library (using_task_library)")
+        end
+
+        raise Ambiguous.new("several task models drive (#{drivers.join(', ')}) #{self}",
+                            location: location, hint: 'pick one')
       end
     end
   end

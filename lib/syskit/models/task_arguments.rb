@@ -11,7 +11,7 @@ module Syskit
       # task has its arguments' defaults. An argument declared without a
       # default is required, as in Syskit: reading it unset is an error
       # that says how to set it.
-      def argument(name, default: NO_DEFAULT, doc: nil) # rubocop:disable Lint/UnusedMethodArgument -- Syskit's signature
+      def argument(name, default: NO_DEFAULT, doc: nil)
         location = Location.of_caller
         name = name.to_sym
         if name.end_with?('_dev') || !name.match?(/\A[a-z_]\w*\z/)
@@ -19,7 +19,7 @@ module Syskit
                                      location: location, hint: 'arguments are lower-case names not ending in _dev')
         end
 
-        (@argument_declarations ||= {})[name] = [default, location]
+        (@argument_declarations ||= {})[name] = [default, location, doc]
         define_method(name) { arguments.fetch(name) { self.class.argument_default(name, Location.of_caller) } }
         # As on a Roby task, tests set arguments on an instance (+task.x = 1+).
         define_method("#{name}=") { |value| @arguments = arguments.merge(name => value) }
@@ -36,6 +36,11 @@ module Syskit
           "argument '#{name}' of #{self.name} is not set (declared at #{declared_at})",
           location: location, hint: "pass it with with_arguments(#{name}: ...), or give it a default"
         )
+      end
+
+      # The documentation given to the argument +name+ (doc:), or nil.
+      def argument_doc(name)
+        argument_declarations.fetch(name.to_sym, [])[2]
       end
 
       # Default values of the arguments declared with {#argument}, inherited

@@ -2,7 +2,6 @@
 
 require 'syskit/models/component'
 require 'syskit/models/port_lookup'
-require 'syskit/models/driver_services'
 require 'syskit/models/dynamic_services'
 require 'syskit/models/task_specialization'
 
@@ -18,7 +17,6 @@ module Syskit
       include PortLookup
       include PortModelLookups
       include DynamicServices
-      include DriverServices
       include TaskSpecialization
 
       attr_reader :spec

@@ -21,6 +21,7 @@ module Syskit
         # ports require_dynamic_service can add to.
         model = new_submodel(name: name || "#{self.name}{#{@specialization_count}}")
         model.instance_variable_set(:@concrete_model, concrete_model)
+        model.instance_variable_set(:@private_specialization, true)
         model
       end
 

@@ -20,7 +20,7 @@ module Syskit
         composition = model.new(task_arguments(model, requirements, parent))
         composition.conf = requirements.conf
         composition.name = path
-        composition.requirement = requirements
+        composition.requirements = requirements
         composition.parent = parent
         @building.push(composition)
         instantiate_children(composition, selections, requirements, context)
@@ -99,7 +99,7 @@ module Syskit
       # selected the child, with the enclosing requirements' selections
       # for its children ('child.grandchild' keys) and its own.
       def child_context(context, selection, requirements, name, child_requirements)
-        grandchildren = requirements.selections.grandchild_selections(name)
+        grandchildren = context.grandchild_selections(name).merge(requirements.selections.grandchild_selections(name))
         context = context.mask(selection.used_keys)
         context = context.with(DependencyInjection.of(grandchildren, [], requirements.declared_at)) unless
           grandchildren.empty?

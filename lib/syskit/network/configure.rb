@@ -20,7 +20,7 @@ module Syskit
       # Errors go to the context. A task made for no device (a component a
       # test configures on its own) has no device.
       def configure(task)
-        device = task.requirement&.device
+        device = task.requirements&.device
         apply_sections(task, device)
         user_code(task, device, 'configure') { task.configure }
         component = task.orocos_task
@@ -76,7 +76,7 @@ module Syskit
       def sections_location(task, device)
         return device.conf_location || device.declared_at if device
 
-        requirement = task.requirement
+        requirement = task.requirements
         requirement&.conf_location || requirement&.declared_at || task.root_location
       end
 

@@ -41,7 +41,7 @@ module Syskit
       def add_task(task, device, requirement)
         @tasks << task
         @task_by_device[device] = task if device
-        task.requirement = requirement
+        task.requirements = requirement
         task
       end
 
@@ -51,13 +51,13 @@ module Syskit
       end
 
       def requirement_for(task)
-        task.requirement
+        task.requirements
       end
 
       # The device a task was created for (nil for a task of a composition
       # that drives no device).
       def device_of(task)
-        task.requirement.device
+        task.requirements.device
       end
 
       # Collects an error; the step raises them all at its end.

@@ -22,7 +22,7 @@ module Syskit
         used = {}.compare_by_identity
         stub = @context.stub_deployments
         @context.tasks.each do |task|
-          requirement = task.requirement
+          requirement = task.requirements
           declared = declared(task, requirement.declared_deployment) unless stub
           deployed = declared || (stub ? stub_deployment(task) : choose(task, requirement))
           next unless deployed

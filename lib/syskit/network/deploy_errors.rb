@@ -53,7 +53,7 @@ module Syskit
       def library_deployments(task)
         model = task.model.concrete_model
         @context.app.orogen.each_task_model.select { |m| m <= model }.flat_map do |m|
-          m.spec.library.deployments.values.select { |d| d.tasks.any? { |t| t.model <= model } }.map(&:name)
+          m.spec.library.deployments.values.select { |d| d.task_activities.any? { |t| t.model <= model } }.map(&:name)
         end
       end
 
@@ -81,8 +81,8 @@ module Syskit
       end
 
       def shared(deployed, first_task, second_task)
-        first = first_task.requirement
-        second = second_task.requirement
+        first = first_task.requirements
+        second = second_task.requirements
         DeploymentError.new(
           "#{describe(first_task)} and #{describe(second_task)} both need the deployed task #{deployed} " \
           "(#{describe(first_task)} is declared at #{device_location(first, first_task)})",
@@ -113,7 +113,7 @@ module Syskit
       end
 
       def describe(task)
-        task.requirement.device&.to_s || task.plan_path || task.plan_name
+        task.requirements.device&.to_s || task.plan_path || task.plan_name
       end
     end
   end

@@ -35,7 +35,7 @@ module Syskit
                                  hint: "declare driver_for #{device.model} in #{model.name}'s extension")
         end
 
-        arguments = services.to_h { |srv| [srv.argument_name, device] }
+        arguments = device.driver_arguments
         arguments = requirement.arguments.merge(arguments) unless requirement.arguments.empty?
         task = model.new(arguments)
         task.conf = requirement.conf

@@ -78,7 +78,7 @@ module Syskit
         context = @base.with(requirement.selections)
         task = instantiate(requirement, context, root_name(requirement), nil)
         @context.roots << task
-        @root_requirements[task.requirement] = true
+        @root_requirements[task.requirements] = true
       ensure
         @root = nil
       end
@@ -163,7 +163,7 @@ module Syskit
         conf = requirements.conf
         return if conf == task.conf && requirements.arguments.all? { |k, v| task.arguments[k] == v }
 
-        first = task.requirement
+        first = task.requirements
         raise NetworkError.new(
           "#{device} is used with #{describe_use(first)} (#{first.declared_at}) and with " \
           "#{describe_use(requirements)}, but its driver is one task",

@@ -16,9 +16,12 @@ module Syskit
         message = "#{where} needs a #{what}, which is abstract, and nothing selects a component for it" \
                   "#{" (#{requirements.profile&.name}.#{tag} selects nothing)" if tag}"
         hint = abstract_hint(requirements, role, parent, tag, model)
-        return UnselectedTag.new(message, profile: requirements.profile, location: location, hint: hint) if tag
+        if tag
+          return UnselectedTag.new(message, profile: requirements.profile, abstract: requirements, location: location,
+                                            hint: hint)
+        end
 
-        NetworkError.new(message, location: location, hint: hint)
+        TaskAllocationFailed.new(message, abstract: model || requirements, location: location, hint: hint)
       end
 
       def abstract_hint(requirements, role, parent, tag, model)

@@ -20,7 +20,7 @@ module Syskit
       end
 
       def run
-        groups = equal_groups(@context.tasks.reject { |t| t.requirement.device })
+        groups = equal_groups(@context.tasks.reject { |t| t.requirements.device })
         return if groups.empty?
 
         replaced = {}.compare_by_identity
@@ -37,7 +37,7 @@ module Syskit
 
       # Tasks with the same merge key, by groups of two or more.
       def equal_groups(tasks)
-        tasks.group_by { |t| Instantiate.merge_key(t.model, t.requirement, t.arguments) }
+        tasks.group_by { |t| Instantiate.merge_key(t.model, t.requirements, t.arguments) }
              .values.select { |g| g.size > 1 }
       end
 

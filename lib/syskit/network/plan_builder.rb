@@ -32,7 +32,7 @@ module Syskit
         # A composition, its exports followed down to the tasks that have
         # the ports; the action it was made for when it is a root.
         def composition_entry(composition)
-          requirement = composition.requirement
+          requirement = composition.requirements
           Composition.new(
             composition.name, composition.model.short_name,
             (requirement.to_s if requirement.name && !composition.parent),

@@ -41,9 +41,29 @@ module Syskit
 
         value = resolve_tag(value, context)
         location = context.location_of(used.first) || child.declared_at
-        selected = InstanceRequirements.from(value, location: location)
+        selected = InstanceRequirements.from(expand_placeholder(value), location: location)
+        # Data services (or a placeholder of them) selected for a child add
+        # to what it requires, as in Syskit (+narrow('pose' => Srv)+: a Pose
+        # that also provides Srv).
+        selected = selected.add_models(child.models, location: location) if services_only?(selected)
         check_fullfills(child, selected, value, location)
         Result.new(child.requirements.merge_selection(selected), used, explicit, nil)
+      end
+
+      # Whether +selected+ names data services only (no component, device
+      # or task).
+      def services_only?(selected)
+        return false if selected.device || selected.instance || selected.models.empty?
+
+        selected.models.all?(Models::DataServiceModel)
+      end
+
+      # A placeholder model selected stands for the models it was made of.
+      def expand_placeholder(value)
+        return value unless value.is_a?(Class) && value.placeholder?
+
+        base = value.proxied_component_model
+        value.proxied_data_service_models + (base.equal?(Syskit::Component) ? [] : [base])
       end
 
       # A tag selected by the profile's (or a using profile's) injection.

@@ -48,7 +48,7 @@ module Syskit
       def service_provider(service_models, base: nil)
         @service_providers ||= {}
         @service_providers[[service_models, base]] ||= begin
-          ports, mappings = Models::Placeholder::PlaceholderBuilder.service_ports(service_models)
+          ports, mappings = Models::Placeholder::PlaceholderBuilder.service_ports(service_models, base)
           slug = service_models.map { |m| model_slug(m) }.join('_')
           task_model("stub_#{slug}", ports: ports.values, base: base) do |task|
             service_models.each_with_index { |srv, i| task.provides(srv, mappings[i], as: "srv#{i}") }

@@ -6,20 +6,26 @@ module Syskit
     # .orogen file (+deployment 'test_canbus' do task('can0', 'canbus::Task') end+)
     # or made for one task by +Syskit.conf.use_deployment OroGen.x.Task => 'name'+.
     class DeploymentSpec
-      # One task instance of a deployment.
+      # One task instance of a deployment (oroGen's task activity).
       DeployedTask = Struct.new(:name, :model, :deployment, :declared_at, keyword_init: true) do
         def to_s
           "#{name} (#{model.name}, deployment #{deployment.name})"
         end
+
+        # oroGen's name for the task context model it runs.
+        def context
+          model.orogen_model
+        end
       end
 
-      attr_reader :name, :tasks, :declared_at
+      # The task instances, in declaration order (oroGen's name).
+      attr_reader :name, :task_activities, :declared_at
 
       # +unmanaged:+ a process started outside of Syskit (a device's
       # deployed_as_unmanaged).
       def initialize(name, location: nil, unmanaged: false)
         @name = name
-        @tasks = []
+        @task_activities = []
         @declared_at = location
         @unmanaged = unmanaged
       end
@@ -31,14 +37,20 @@ module Syskit
       # A copy whose task names start with +prefix+ (use_deployment's
       # 'deployment' => 'prefix' form).
       def with_prefix(prefix)
-        copy = DeploymentSpec.new("#{prefix}#{name}", location: declared_at)
-        tasks.each { |t| copy.add_task("#{prefix}#{t.name}", t.model, location: t.declared_at) }
+        with_name_mappings(task_activities.to_h { |t| [t.name, "#{prefix}#{t.name}"] }, name: "#{prefix}#{name}")
+      end
+
+      # A copy whose tasks are renamed by +mappings+ (deployed name =>
+      # new name; the others keep theirs): what a robot configures.
+      def with_name_mappings(mappings, name: self.name)
+        copy = DeploymentSpec.new(name, location: declared_at, unmanaged: unmanaged?)
+        task_activities.each { |t| copy.add_task(mappings.fetch(t.name, t.name), t.model, location: t.declared_at) }
         copy
       end
 
       def add_task(name, model, location: nil)
         task = DeployedTask.new(name: name, model: model, deployment: self, declared_at: location)
-        @tasks << task
+        @task_activities << task
         task
       end
 

@@ -46,6 +46,20 @@ module Syskit
         name
       end
 
+      # Views of the same spec are the same oroGen model.
+      def ==(other)
+        other.is_a?(ModelView) && other.spec.equal?(spec)
+      end
+      alias eql? ==
+
+      def hash
+        spec.hash
+      end
+
+      protected
+
+      attr_reader :spec
+
       private
 
       def declarations(statement)

@@ -28,6 +28,12 @@ module Syskit
         @dynamic
       end
 
+      # The port of the component (Syskit's +to_component_port+): a task
+      # model's port is its own.
+      def to_component_port
+        self
+      end
+
       # Whether this port can be connected to +other+: an output to an input
       # of the same type (Syskit's +can_connect_to?+).
       def can_connect_to?(other)

@@ -107,6 +107,18 @@ module Syskit
         slaves.key?(name.to_s)
       end
 
+      # The task arguments that bind the driver's services to this device
+      # (+gps_dev: device+), once the driver is known.
+      def driver_arguments
+        driver_model.driver_services_for(model).to_h { |srv| [srv.argument_name, self] }
+      end
+
+      # What the device asks of its driver (Syskit's +device.requirements+):
+      # the driver model, with the arguments that bind it to the device.
+      def requirements
+        InstanceRequirements.new([driver_model], device: self, arguments: driver_arguments, declared_at: declared_at)
+      end
+
       # Nil: a device declared in a robot block is its own master.
       def master_device; end
 

@@ -12,8 +12,11 @@ module Syskit
     # driver of its model), among the loaded task models and those made in
     # Ruby so far (+Syskit::TaskContext.new_submodel { driver_for ... }+).
     class RobotDefinition < Definition
-      def initialize
-        super(nil)
+      # +profile+: the profile made in Ruby whose robot it is
+      # (+Actions::Profile.new.robot.device(...)+ gives the profile its
+      # +x_dev+ action), none for a robot made alone.
+      def initialize(profile = nil)
+        super
         @dsl = DSL.new(self)
       end
 

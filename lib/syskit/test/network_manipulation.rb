@@ -20,6 +20,17 @@ module Syskit
         end
       end
 
+      # A configured deployment (Models::ConfiguredDeployment) of one task
+      # of +task_model+ named +task_name+, on the process server +on+;
+      # with +register:+ (the default) the test deploys with it.
+      def syskit_stub_configured_deployment(task_model = nil, task_name = nil, process_server_name: 'stubs',
+                                            register: true, &block)
+        model = syskit_stub_deployment_model(task_model, task_name, &block)
+        configured = Models::ConfiguredDeployment.new(process_server_name, model)
+        use_deployment(configured) if register
+        configured
+      end
+
       # Deploys, in this test, task instances as a robot configuration
       # does (see Config::RobotConfig#use_deployment): a task model by
       # name (+Task => 'name'+), or a deployment model.

@@ -22,19 +22,28 @@ module Syskit
     # use it: is_self_contained accepts them (not another profile's), the
     # other assertions do not.
     module ProfileAssertions
+      # A profile assertion that does not hold (a test failure, as Syskit's):
+      # its message says which action, and the generator's reports.
+      class ProfileAssertionFailed < Minitest::Assertion
+        # Minitest counts failures by exact class (Assertion): reported as
+        # one, so that a run's summary counts it.
+        def class
+          Minitest::Assertion
+        end
+      end
+
       # Each assertion, and the generator step it runs up to.
       STEPS = { is_self_contained: :Instantiate, can_instanciate: :Buses, can_deploy: :Order,
                 can_configure: :Connect }.freeze
 
       STEPS.each do |name, step|
-        own_tags = name == :is_self_contained
         define_method(name) do |*actions, exclude: [], together_with: []|
-          syskit_check_each(actions, Network.const_get(step), own_tags: own_tags, exclude: exclude,
-                                                              together_with: together_with)
+          syskit_check_each(actions, name, Network.const_get(step), exclude: exclude, together_with: together_with)
         end
         define_method("#{name}_together") do |*actions|
-          syskit_check_together(syskit_requirements(actions), Network.const_get(step),
-                                own_tags: own_tags, profile: syskit_profile(actions))
+          requirements = syskit_requirements(actions)
+          syskit_check_together(requirements, name, Network.const_get(step), profile: syskit_profile(actions),
+                                                                             label: requirements.join(', '))
         end
         alias_method "assert_#{name}", name
         alias_method "assert_#{name}_together", "#{name}_together"
@@ -42,14 +51,33 @@ module Syskit
 
       private
 
-      # The described profile; else, for assertions given profiles, the
-      # first of them.
+      # The profile the actions are checked in: the first profile among
+      # +actions+, else the test's subject (Syskit's +subject_syskit_model+,
+      # or the described profile); nil for plain requirements.
       def syskit_profile(actions = [])
-        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
-        profile = desc.respond_to?(:syskit_profile) ? desc.syskit_profile : nil
-        profile ||= actions.flatten.find { |a| a.respond_to?(:syskit_profile) }&.syskit_profile
-        return profile if profile
+        given = actions.flatten.find { |a| a.respond_to?(:syskit_profile) || a.is_a?(Actions::Profile) }
+        return syskit_profile_of(given) if given
 
+        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
+        syskit_profile_of(desc) || syskit_profile_of(syskit_subject)
+      end
+
+      # Syskit's +subject_syskit_model+, when the test has one.
+      def syskit_subject
+        subject_syskit_model if respond_to?(:subject_syskit_model)
+      rescue ArgumentError
+        nil
+      end
+
+      def syskit_profile_of(object)
+        return object if object.is_a?(Actions::Profile)
+
+        object.syskit_profile if object.respond_to?(:syskit_profile)
+      end
+
+      # Fails, saying how to name what to check, when there is nothing.
+      def syskit_no_profile
+        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
         message = "profile assertions need `describe SomeProfile do ... end`, not #{desc.inspect}"
         # A profile whose file did not load leaves its name to whatever
         # else has it (Rock's ::Base, from the base typekit).
@@ -61,7 +89,7 @@ module Syskit
       # when there are none).
       def syskit_requirements(actions)
         actions = actions.flatten
-        return syskit_profile.all_requirements if actions.empty?
+        return (syskit_profile || syskit_no_profile).all_requirements if actions.empty?
 
         actions.flat_map { |action| syskit_action_requirements(action) }
       end
@@ -71,29 +99,88 @@ module Syskit
         return action.all_requirements if action.is_a?(Actions::Profile)
         return [InstanceRequirements.from(action)] if InstanceRequirements.selectable?(action)
 
-        profile = syskit_profile
+        profile = syskit_profile || syskit_no_profile
         [profile.find_action(action) || flunk(Network::Generator.unknown_action(profile, action).report(Test.app.root))]
       end
 
-      def syskit_check_each(actions, through, own_tags:, exclude:, together_with:)
+      def syskit_check_each(actions, assertion, through, exclude:, together_with:)
         profile = syskit_profile(actions)
         excluded = syskit_requirements(Array(exclude)) unless Array(exclude).empty?
         together = Array(together_with).empty? ? [] : syskit_requirements(Array(together_with))
-        syskit_requirements(actions).each do |req|
-          next if excluded&.any? { |e| syskit_same_action?(e, req) }
+        all = syskit_requirements(actions)
+        checked = all.reject { |req| excluded&.any? { |e| syskit_same_action?(e, req) } }
+        # A profile without actions yet (a new app's), or all actions
+        # excluded, has nothing wrong; actions given that stand for nothing
+        # are a mistake of the test.
+        flunk "#{assertion}: #{actions.flatten.join(', ')} stand for no action" if all.empty? && !actions.flatten.empty?
 
-          syskit_check_together([req, *together], through, own_tags: own_tags, profile: profile)
+        checked.each do |req|
+          syskit_check_together([req, *together], assertion, through, profile: profile, label: req.to_s)
         end
       end
 
-      def syskit_check_together(requirements, through, own_tags:, profile:)
+      # Generates the network of +requirements+ up to +through+; raises
+      # ProfileAssertionFailed with Syskit's words for what failed.
+      def syskit_check_together(requirements, assertion, through, profile:, label:)
         app = Test.app
-        Network::Generator.new(app, requirements, profile: profile,
-                                                  robot_config: app.robot_config(Test.robot)).generate(through: through)
+        Network::Generator.new(app, requirements, profile: profile, robot_config: syskit_robot_config)
+                          .generate(through: through)
         assert true
       rescue Syskit::Error => e
-        flunk e.report(app.root) unless own_tags && UnselectedTag.only_tags_of?(e, profile)
+        if syskit_fails?(e, assertion, profile)
+          raise ProfileAssertionFailed, syskit_failure(e, assertion, profile, label)
+        end
+
         assert true
+      end
+
+      # The robot configuration deployments come from: the test's own under
+      # Syskit's harness, else the app's robot's.
+      def syskit_robot_config
+        return syskit_test_robot_config if respond_to?(:syskit_test_robot_config)
+
+        Test.app.robot_config(Test.robot)
+      end
+
+      # As in Syskit, a profile may leave its own tags to the profiles that
+      # use it: is_self_contained accepts them, the other assertions do not.
+      def syskit_fails?(error, assertion, profile)
+        assertion != :is_self_contained || !UnselectedTag.only_tags_of?(error, profile)
+      end
+
+      def syskit_failure(error, assertion, profile, label)
+        errors = error.respond_to?(:errors) ? error.errors : [error]
+        report = error.report(Test.app.root)
+        abstract = errors.grep(TaskAllocationFailed)
+        "#{report}\n(#{syskit_summary(errors, abstract, assertion, profile, label)})"
+      end
+
+      # What failed, in Syskit's words (its tests match them).
+      def syskit_summary(errors, abstract, assertion, profile, label)
+        if assertion == :is_self_contained
+          others = abstract.grep(UnselectedTag).reject { |e| e.profile.equal?(profile) }
+          return "#{label} contains tags from another profile: #{syskit_abstract_names(others)}" if others.any?
+
+          return "#{label} is not self contained"
+        end
+        return "#{label}: cannot find a concrete implementation for #{syskit_abstract_names(abstract)}" if abstract.any?
+        return "#{label}: cannot deploy the following tasks" if errors.any?(DeploymentError)
+
+        "#{label} fails #{assertion}"
+      end
+
+      # What is abstract, as Syskit names it: +profile:Name.x_tag+ for a
+      # tag, +Syskit::Models::Placeholder<Srv>+ for services.
+      def syskit_abstract_names(errors)
+        errors.map do |e|
+          what = e.abstract
+          next "profile:#{e.profile&.name}.#{what.name}" if e.is_a?(UnselectedTag)
+
+          models = what.respond_to?(:models) ? what.models : [what]
+          next models.join(', ') unless models.all?(Models::DataServiceModel)
+
+          "Syskit::Models::Placeholder<#{models.map(&:name).join(',')}>"
+        end.uniq.join(', ')
       end
 
       # Whether two requirements are the same action: the same object, or

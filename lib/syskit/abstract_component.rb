@@ -89,16 +89,13 @@ module Syskit
       end
 
       # A plain component model has no ports (task contexts and
-      # compositions do), and drives no device.
+      # compositions do). (It drives no device: it has no driver service,
+      # see Models::DriverServices.)
       def ports
         {}
       end
 
       def find_port(_name); end
-
-      def driver_services
-        []
-      end
 
       private
 

@@ -100,7 +100,9 @@ module Syskit
       task.dynamic_service(srv, as: 'dyn') { provides srv, 'out' => "#{name}_out" }
       made = task.specialize
       made.require_dynamic_service('dyn', as: 'left')
-      assert_equal 'left_out', made.left_srv.out_port.name
+      port = made.left_srv.out_port
+      assert_equal 'out', port.name
+      assert_equal 'left_out', port.to_component_port.name
     end
   end
 end

@@ -53,11 +53,12 @@ module Syskit
       def instantiate_dynamic_service(dynamic, as, options, location)
         dynamic.evaluate(Context.new(self, as, options), as)
         service = find_service(as)
-        return service if service&.fullfills?(dynamic.model)
+        return service if service&.fullfills?(dynamic.service_model)
 
         raise DeclarationError.new(
-          "the block of dynamic service '#{dynamic.name}' of #{self} provides no #{dynamic.model} as '#{as}'",
-          location: dynamic.declared_at || location, hint: "call provides #{dynamic.model}, as: name in the block"
+          "the block of dynamic service '#{dynamic.name}' of #{self} provides no #{dynamic.service_model} as '#{as}'",
+          location: dynamic.declared_at || location,
+          hint: "call provides #{dynamic.service_model}, as: name in the block"
         )
       end
     end

@@ -82,7 +82,7 @@ module Syskit
         context.instance_exec(&@block)
       rescue ScriptError, StandardError => e
         raise UserCode.translate(e, error_class: DeclarationError,
-                                    context: "in dynamic service '#{name}' of #{task_model} for '#{as}'")
+                                    context: "in dynamic service '#{name}' of #{component_model.name} for '#{as}'")
       end
 
       def to_s

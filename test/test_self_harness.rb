@@ -267,7 +267,7 @@ module Syskit
       Dir.mktmpdir do |dir|
         write_self_test(dir, 'test_deploy.rb', DEPLOY_TEST)
         out, err, = ruby_process('test/test_deploy.rb', '-v', chdir: dir)
-        assert_match(/8 runs, \d+ assertions, 0 failures, 0 errors, 1 skips/, out, err)
+        assert_match(/9 runs, \d+ assertions, 0 failures, 0 errors, 1 skips/, out, err)
         assert_match(/a Roby planner's result\) needs Syskit's runtime/, out)
       end
     end

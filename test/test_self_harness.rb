@@ -261,6 +261,12 @@ module Syskit
           assert_nil task.orocos_name
         end
 
+        it('stubs a task model named in the call') do
+          task = syskit_stub_and_deploy('Probe') { output_port 'out', '/double' }
+          assert_equal 'Probe', task.model.name
+          assert_equal 'out', task.model.out_port.name
+        end
+
         it('skips the actions of Roby planners') do
           syskit_deploy(Roby::Actions::Interface.new_submodel.some_action)
         end
@@ -271,7 +277,7 @@ module Syskit
       Dir.mktmpdir do |dir|
         write_self_test(dir, 'test_deploy.rb', DEPLOY_TEST)
         out, err, = ruby_process('test/test_deploy.rb', '-v', chdir: dir)
-        assert_match(/8 runs, \d+ assertions, 0 failures, 0 errors, 1 skips/, out, err)
+        assert_match(/9 runs, \d+ assertions, 0 failures, 0 errors, 1 skips/, out, err)
         assert_match(/a Roby planner's result\) needs Syskit's runtime/, out)
       end
     end

@@ -37,14 +37,16 @@ module Syskit
     module Named; end
 
     def test_clearing_submodels_removes_their_constants_but_keeps_the_gems_own_models
-      model = TaskContext.new_submodel
+      root = TaskContext.new_submodel
+      model = root.new_submodel
       Named.const_set(:Task, model)
-      assert TaskContext.has_submodel?(model)
-      TaskContext.clear_submodels
+      assert root.has_submodel?(model)
+      root.clear_submodels
+      refute root.has_submodel?(model)
       refute TaskContext.has_submodel?(model)
       refute Named.const_defined?(:Task, false)
-      assert TaskContext.has_submodel?(RubyTaskContext)
-      assert TaskContext.has_submodel?(TaskContext.new_submodel)
+      assert Models::ComponentSubmodels.permanent?(RubyTaskContext)
+      refute Models::ComponentSubmodels.permanent?(root)
     end
 
     def test_a_service_bound_to_a_component_is_a_model

@@ -73,8 +73,9 @@ module Syskit
         @task = result.task_for(requirement.device)
       end
 
-      # Generates the network of +model+ (a composition or task model, or
-      # requirements such as +Cmp.use(...)+) as Syskit's tests do: what is
+      # Generates the network of +model+ (a composition or task model,
+      # requirements such as +Cmp.use(...)+, or the name of a task model
+      # its block declares) as Syskit's tests do: what is
       # still abstract is stubbed (a task providing the services, a device
       # and its driver), every task stub-deployed and configured. Returns
       # the root task (the composition), also available as +task+.
@@ -82,6 +83,11 @@ module Syskit
       # selects is always stubbed, at any depth, and there is no Roby plan
       # whose missions they would be.
       def syskit_stub_and_deploy(model = syskit_described_model, recursive: true, as_missions: false, &block) # rubocop:disable Lint/UnusedMethodArgument
+        # A name and a block: a task model of that name, the block its body.
+        if model.respond_to?(:to_str)
+          model = TaskContext.new_submodel(name: model.to_str, &block)
+          block = nil
+        end
         models = model.is_a?(Array) ? model : [model]
         requirements = models.map { |m| Test.requirements_of(m) }
         result = syskit_stub_generate(requirements, &block)

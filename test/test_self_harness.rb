@@ -121,6 +121,42 @@ module Syskit
       end
     end
 
+    # Runtime entry points of Syskit's tests, after model-level calls.
+    ENTRY_POINTS_TEST = <<~RUBY
+      require 'syskit/test/self'
+
+      describe 'entry points' do
+        let(:task_m) { Syskit::TaskContext.new_submodel { output_port 'out', '/double' } }
+
+        it('resolves types, then runs the plan') do
+          assert_equal '/double', app.default_loader.resolve_type('/double').name
+          plan.execution_engine
+        end
+        it('opens a transaction on the plan') { plan.in_transaction { flunk } }
+        it('configures a stub deployment') { syskit_stub_deploy_and_configure(task_m, remote_task: false) }
+        it('configures stubbed requirements') { syskit_stub_requirements_and_configure(task_m) }
+        it('binds ports dynamically') { Syskit::Models::DynamicPortBinding.create(task_m.out_port) }
+        it('reads a port') { flexmock(Syskit::DynamicPortBinding::BoundOutputReader).new }
+        it('deploys with a remote task') { syskit_stub_and_deploy(task_m, remote_task: false).out_port }
+      end
+    RUBY
+
+    def test_runtime_calls_of_syskit_tests_skip_where_they_are_made
+      Dir.mktmpdir do |dir|
+        write_self_test(dir, 'test_entry_points.rb', ENTRY_POINTS_TEST)
+        report = File.join(dir, 'report.jsonl')
+        out, err, = ruby_process('test/test_entry_points.rb', chdir: dir,
+                                                              env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
+        assert_match(/7 runs, \d+ assertions, 0 failures, 0 errors, 6 skips/, out, err)
+        messages = File.readlines(report).map { |l| JSON.parse(l)['message'] }.reject(&:empty?).sort
+        called = messages.map { |m| m.delete_suffix(" needs Syskit's runtime (Roby and Orocos)") }
+        assert_equal ['Syskit::DynamicPortBinding::BoundOutputReader', 'Syskit::Models::DynamicPortBinding',
+                      'plan.execution_engine', 'plan.in_transaction', 'syskit_stub_deploy_and_configure',
+                      'syskit_stub_requirements_and_configure'],
+                     called
+      end
+    end
+
     def test_syskit_test_can_be_required_after_the_harness
       Dir.mktmpdir do |dir|
         write_self_test(dir, 'test_both.rb', <<~RUBY)

@@ -217,6 +217,12 @@ module Syskit
       Types::Registry::BUILTIN_TYPEKITS.include?(name) || !@typekits.find(name).nil?
     end
 
+    # Syskit's +app.default_loader+: what resolves type names
+    # (+resolve_type '/int'+) and knows the typekits and task libraries.
+    def default_loader
+      Compat::Roby::Application.new(self)
+    end
+
     # Loads every task library on the search path (Rock's
     # Roby.app.auto_load_all_task_libraries); problems are collected.
     def load_all_task_libraries(location:)

@@ -60,6 +60,11 @@ module Syskit
           self
         end
 
+        # The type of that name (+/int+), resolved in the app's types.
+        def resolve_type(name)
+          @app.types.resolve(name, location: Location.of_caller)
+        end
+
         def has_typekit?(name) # rubocop:disable Naming/PredicatePrefix -- Rock's name
           @app.typekit?(name.to_s)
         end

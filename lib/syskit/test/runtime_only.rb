@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/test/plan'
+
 module Syskit
   module Test
     # What Syskit's tests do with a running system (Roby's plan and
@@ -19,11 +21,31 @@ module Syskit
         assert_fatal_exception assert_transitions_to_state execute_robot_controller
         expect_execution_default_timeout= use_deployment use_ruby_tasks use_unmanaged_task
         execution_engine capture_log droby_remote_marshaller droby_dump droby_marshalled_and_unmarshalled
-        assert_droby_compatible
+        assert_droby_compatible create_transaction
       ].freeze
 
       METHODS.each do |name|
         define_method(name) { |*_args, **_options, &_block| skip("#{name} #{REASON}") }
+      end
+
+      # Helpers that configure tasks: in an app's tests (syskit/test) they
+      # check the configuration of the models (see TaskAssertions); in
+      # Syskit's own tests (syskit/test/self) they configure Orocos
+      # components, and skip.
+      module OfSyskit
+        METHODS = %i[syskit_stub_deploy_and_configure syskit_stub_requirements_and_configure].freeze
+
+        METHODS.each do |name|
+          define_method(name) { |*_args, **_options, &_block| skip("#{name} #{REASON}") }
+        end
+      end
+
+      # Methods of Roby's plan that need it running (the plan of Syskit's
+      # harness holds tasks as data, see Test::Plan): each skips.
+      PLAN_METHODS = %i[execution_engine in_transaction].freeze
+
+      PLAN_METHODS.each do |name|
+        Plan.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "plan.#{name} #{REASON}" }
       end
 
       # Test helpers of Syskit about what this gem does not model (Roby's

@@ -38,6 +38,7 @@ module Syskit
       include ModelHelpers
       include RuntimeOnly
       include NetworkManipulation
+      include RuntimeOnly::OfSyskit
 
       # The robot of the test (Syskit::Robot::RobotDefinition), made anew
       # for each test.

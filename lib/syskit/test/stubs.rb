@@ -81,8 +81,10 @@ module Syskit
       # the root task (the composition), also available as +task+.
       # Syskit's +recursive:+ and +as_missions:+ are accepted: what nothing
       # selects is always stubbed, at any depth, and there is no Roby plan
-      # whose missions they would be.
-      def syskit_stub_and_deploy(model = syskit_described_model, recursive: true, as_missions: false, &block) # rubocop:disable Lint/UnusedMethodArgument
+      # whose missions they would be. So is +remote_task:+ (whether the
+      # stub deployments would run in a process of their own): nothing runs.
+      def syskit_stub_and_deploy(model = syskit_described_model, recursive: true, as_missions: false, # rubocop:disable Lint/UnusedMethodArgument
+                                 remote_task: false, &block) # rubocop:disable Lint/UnusedMethodArgument
         # A name and a block: a task model of that name, the block its body.
         if model.respond_to?(:to_str)
           model = TaskContext.new_submodel(name: model.to_str, &block)

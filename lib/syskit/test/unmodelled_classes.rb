@@ -31,6 +31,14 @@ module Syskit
         '::Concurrent::CyclicBarrier' => RUNTIME,
         '::Concurrent::IVar' => RUNTIME,
         '::Concurrent::Event' => RUNTIME,
+        'Compat::Roby::EventGenerator' => RUNTIME,
+        'DynamicPortBinding' => RUNTIME,
+        'DynamicPortBinding::Accessor' => RUNTIME,
+        'DynamicPortBinding::OutputReader' => RUNTIME,
+        'DynamicPortBinding::BoundOutputReader' => RUNTIME,
+        'DynamicPortBinding::InputWriter' => RUNTIME,
+        'DynamicPortBinding::BoundInputWriter' => RUNTIME,
+        'Property' => RUNTIME,
         'Models::DynamicPortBinding' => RUNTIME,
         'Models::DynamicPortBinding::ValueResolver' => RUNTIME,
         'Models::DeploymentGroup' => RUNTIME,
@@ -51,6 +59,10 @@ module Syskit
         'NetworkGeneration::DataFlowDynamics' => INTERNAL
       }.freeze
 
+      # How Syskit's tests make an instance of these classes: +.new+, and
+      # the factories of Models::DynamicPortBinding.
+      FACTORIES = %i[new create create_from_component_port].freeze
+
       # Defines the classes of CLASSES that Syskit does not have yet.
       def self.define_all
         CLASSES.each { |path, reason| define(path, reason) }
@@ -66,7 +78,9 @@ module Syskit
 
         full_name = path.start_with?('::') ? path.delete_prefix('::') : "Syskit::#{path}"
         namespace.const_set(name, Class.new do
-          define_singleton_method(:new) { |*, **| raise Minitest::Skip, "#{full_name} #{reason}" }
+          FACTORIES.each do |factory|
+            define_singleton_method(factory) { |*, **| raise Minitest::Skip, "#{full_name} #{reason}" }
+          end
         end)
       end
     end

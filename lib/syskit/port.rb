@@ -13,6 +13,14 @@ module Syskit
       !!multiplexes
     end
 
+    # oroGen's +static+: the port's connections are set before the task is
+    # configured, so changing them needs a reconfiguration.
+    attr_writer :static
+
+    def static?
+      !!@static
+    end
+
     # Whether a connection into this port must not lose samples.
     def reliable?
       !!reliable
@@ -28,6 +36,7 @@ module Syskit
 
     def copy_needs_from(other)
       SETTERS.each { |attr, setter| public_send(setter, other.public_send(attr)) }
+      self.static = other.static?
       self
     end
   end
@@ -196,6 +205,11 @@ module Syskit
 
     def multiplexes
       @port.multiplexes = true
+      self
+    end
+
+    def static
+      @port.static = true
       self
     end
 

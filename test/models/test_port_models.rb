@@ -68,6 +68,18 @@ module Syskit
       @sink.in_port.needs_reliable_connection
       assert @sink.in_port.reliable?
     end
+
+    def test_a_static_port_says_so
+      int = @int
+      task_m = TaskContext.new_submodel do
+        output_port('out', int).static
+        output_port 'plain', int
+        dynamic_input_port(/^in_/, int).static
+      end
+      assert task_m.out_port.static?
+      refute task_m.plain_port.static?
+      assert task_m.dynamic_ports.first.instantiate('in_a').static?
+    end
   end
 end
 

@@ -63,6 +63,10 @@ module Syskit
       # the factories of Models::DynamicPortBinding.
       FACTORIES = %i[new create create_from_component_port].freeze
 
+      # Those of CLASSES that are modules in Syskit (Roby's): an object is
+      # extended with one, which skips.
+      MODULES = %w[Compat::Roby::DRoby::Unmarshallable].freeze
+
       # Defines the classes of CLASSES that Syskit does not have yet.
       def self.define_all
         CLASSES.each { |path, reason| define(path, reason) }
@@ -77,11 +81,22 @@ module Syskit
         return if namespace.const_defined?(name, false)
 
         full_name = path.start_with?('::') ? path.delete_prefix('::') : "Syskit::#{path}"
-        namespace.const_set(name, Class.new do
+        stand_in = MODULES.include?(path) ? stand_in_module(full_name, reason) : stand_in(full_name, reason)
+        namespace.const_set(name, stand_in)
+      end
+
+      def self.stand_in(full_name, reason)
+        Class.new do
           FACTORIES.each do |factory|
             define_singleton_method(factory) { |*, **| raise Minitest::Skip, "#{full_name} #{reason}" }
           end
-        end)
+        end
+      end
+
+      def self.stand_in_module(full_name, reason)
+        Module.new do
+          define_singleton_method(:extended) { |_object| raise Minitest::Skip, "#{full_name} #{reason}" }
+        end
       end
     end
   end

@@ -73,6 +73,11 @@ module Syskit
         @abstract == true
       end
 
+      # A Queries::ComponentMatcher finding the tasks of this model.
+      def match
+        Queries::ComponentMatcher.new.with_model(self)
+      end
+
       # Whether it is a submodel made by +specialize+ for the use of one
       # requirement or test (Syskit's private specializations).
       def private_specialization?

@@ -3,6 +3,7 @@
 require 'syskit/version'
 require 'syskit/errors'
 require 'syskit/model_errors'
+require 'syskit/port_connection_check'
 require 'syskit/naming'
 require 'syskit/can'
 require 'syskit/user_file'

@@ -41,6 +41,15 @@ module Syskit
       assert task.fullfills?(MyApp::Cmd)
     end
 
+    def test_tasks_are_of_the_service_models_their_model_provides
+      task = @task_m.new
+      assert_kind_of MyApp::Odometry, task
+      assert_kind_of MyApp::Pose, task
+      assert_kind_of MyApp::Cmd, task
+      assert_operator @task_m, :<, MyApp::Pose
+      refute_kind_of MyApp::Odometry, TaskContext.new_submodel.new
+    end
+
     def test_a_task_service_finds_ports_by_the_service_port_names
       srv = @task_m.new.odo_srv
       port = srv.find_output_port('pose')

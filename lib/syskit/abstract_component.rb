@@ -2,6 +2,7 @@
 
 require 'syskit/models/component'
 require 'syskit/compat/roby_task_arguments'
+require 'syskit/compat/roby_plan_service'
 require 'syskit/models/component_submodels'
 
 module Syskit
@@ -51,6 +52,15 @@ module Syskit
         location: Location.of_caller, hint: 'choose one by its name (task.name_srv)'
       )
     end
+
+    # Roby's +task.as_service+: a handle on this task that follows its
+    # replacements (see Compat::Roby::PlanService).
+    def as_service
+      self.plan_service ||= Compat::Roby::PlanService.new(self)
+    end
+
+    # The plan service of this task, once #as_service made one.
+    attr_accessor :plan_service
 
     # The compositions this task is a child of (Roby's +each_parent_task+).
     def each_parent_task(&)
@@ -142,8 +152,14 @@ module Syskit
     # abstract task's), or was made for requirements marked abstract:
     # something must still be chosen in its place, a network cannot run it.
     def abstract?
+      return @abstract unless @abstract.nil?
+
       model.abstract? || requirements&.abstract? || false
     end
+
+    # Marks the task abstract (or not), whatever its model and
+    # requirements say, as Roby's +task.abstract = true+.
+    attr_writer :abstract
 
     # The services of this task, as Syskit::BoundDataService.
     def each_data_service(&block)

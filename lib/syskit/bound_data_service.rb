@@ -69,11 +69,24 @@ module Syskit
       raise ArgumentError, "#{self} does not provide #{other}"
     end
 
-    # The task's port behind the service port +name+, or nil.
+    # The service port +name+ (a Syskit::Port whose component is this
+    # service; +to_component_port+ is the task's port behind it), or nil.
     def find_port(name)
-      return unless service_model.find_port(name)
+      return unless (port_model = service_model.find_port(name))
 
-      component.find_bound_port(model.task_port_for(service_model, name.to_s).name)
+      Port.new(port_model, self)
+    end
+
+    # Its service ports (see #find_port).
+    def each_port
+      return enum_for(__method__) unless block_given?
+
+      service_model.each_port { |port_model| yield Port.new(port_model, self) }
+    end
+
+    # The task's port behind +port+, a port of this service.
+    def self_port_to_component_port(port)
+      component.find_bound_port(model.task_port_for(service_model, port.name).name)
     end
 
     # As #find_port, for an input (output) port of the service only.

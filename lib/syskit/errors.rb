@@ -69,7 +69,9 @@ module Syskit
   class Error < StandardError
     include Reported
 
-    def initialize(message, location: nil, hint: nil)
+    # Without a message (+raise Syskit::Ambiguous+), the class name is the
+    # message, as for Ruby's own exceptions.
+    def initialize(message = self.class.name, location: nil, hint: nil)
       super(message)
       locate(location, hint)
     end

@@ -134,15 +134,8 @@ module Syskit
     private
 
     def check_connection(source, sink, location)
-      error = if !source.output? then [WrongPortConnectionDirection, "#{source} is not an output port"]
-              elsif !sink.input? then [WrongPortConnectionDirection, "#{sink} is not an input port"]
-              elsif source.component.equal?(sink.component) then [SelfConnection, 'they are ports of the same task']
-              elsif source.type != sink.type then [WrongPortConnectionTypes, 'their types differ']
-              end
-      return unless error
-
-      raise error[0].new("cannot connect #{source} to #{sink}: #{error[1]}",
-                         location: location, hint: 'connect an output port to an input port of the same type')
+      same = sink.respond_to?(:component) && source.component.equal?(sink.component)
+      PortConnectionCheck.check!(source, sink, location, same_owner: same, owner: 'task')
     end
   end
 

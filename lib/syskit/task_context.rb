@@ -173,6 +173,13 @@ module Syskit
       Port.new(Models::Port.for(model, port), self) if port
     end
 
+    # Its ports (see #find_bound_port), static and created.
+    def each_port
+      return enum_for(__method__) unless block_given?
+
+      ports.each_key { |name| yield find_bound_port(name) }
+    end
+
     # A port of this task is its own component port (Syskit's name).
     def self_port_to_component_port(port)
       port

@@ -41,9 +41,21 @@ module Syskit
       assert task.fullfills?(MyApp::Cmd)
     end
 
+    def test_tasks_are_of_the_service_models_their_model_provides
+      task = @task_m.new
+      assert_kind_of MyApp::Odometry, task
+      assert_kind_of MyApp::Pose, task
+      assert_kind_of MyApp::Cmd, task
+      assert_operator @task_m, :<, MyApp::Pose
+      refute_kind_of MyApp::Odometry, TaskContext.new_submodel.new
+    end
+
     def test_a_task_service_finds_ports_by_the_service_port_names
       srv = @task_m.new.odo_srv
-      assert_equal 'out', srv.find_output_port('pose').name
+      port = srv.find_output_port('pose')
+      assert_equal 'pose', port.name
+      assert_equal srv, port.component
+      assert_equal 'out', port.to_component_port.name
       assert_nil srv.find_input_port('pose'), 'an output'
       assert_nil srv.find_output_port('out'), 'the task port name'
       assert_nil srv.find_output_port('other')

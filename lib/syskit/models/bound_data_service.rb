@@ -44,6 +44,12 @@ module Syskit
         task_model
       end
 
+      # A Queries::DataServiceMatcher finding this service on the tasks of
+      # its task model.
+      def match
+        Queries::DataServiceMatcher.new(task_model.match).with_name(full_name).with_model(model)
+      end
+
       # The models a task must fullfill to stand for the service, as
       # Syskit lists them: its service model.
       def fullfilled_model

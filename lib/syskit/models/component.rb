@@ -73,6 +73,11 @@ module Syskit
         @abstract == true
       end
 
+      # A Queries::ComponentMatcher finding the tasks of this model.
+      def match
+        Queries::ComponentMatcher.new.with_model(self)
+      end
+
       # Whether it is a submodel made by +specialize+ for the use of one
       # requirement or test (Syskit's private specializations).
       def private_specialization?
@@ -213,10 +218,17 @@ module Syskit
       # Makes +srv+ (a BoundDataService of this model) one of its services.
       def register_service(srv)
         (@services ||= {})[srv.full_name] = srv
+        include_service_models(srv)
         Component.declarations_changed
         define_service_reader(srv)
         srv.master&.define_slave_reader(srv)
         srv
+      end
+
+      # Its tasks are of the service models it provides, as in Syskit, where
+      # these are modules of the task model (+task.is_a?(Srv)+).
+      def include_service_models(srv)
+        srv.each_fullfilled_model.to_a.reverse_each { |m| include(m) if m.is_a?(DataServiceModel) }
       end
 
       # +name_srv+ on the model and its tasks, for a master service:

@@ -124,6 +124,12 @@ module Syskit
       # Checks run once the declaration block has been evaluated.
       def finalize_declaration; end
 
+      # A Queries::DataServiceMatcher finding the services of this model on
+      # the tasks that provide it.
+      def match
+        Queries::DataServiceMatcher.new(Queries::ComponentMatcher.new.with_model(self)).with_model(self)
+      end
+
       # The constant name, or the name given at creation for anonymous models.
       def name
         constant_name = super

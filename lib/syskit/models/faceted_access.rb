@@ -13,37 +13,6 @@ module Syskit
     class FacetedAccess
       include PortLookup
 
-      # A port of the facet: the port of a required model, standing for
-      # the port of the object it maps to (see #to_component_port).
-      class Port
-        attr_reader :component_model, :name, :direction, :type
-
-        def initialize(component_model, name, direction, type)
-          @component_model = component_model
-          @name = name
-          @direction = direction
-          @type = type
-        end
-
-        def input?
-          direction == :input
-        end
-
-        def output?
-          direction == :output
-        end
-
-        # The port of the object this one stands for.
-        def to_component_port
-          component_model.self_port_to_component_port(self)
-        end
-
-        def to_s
-          "#{component_model}.#{name}_port"
-        end
-        alias inspect to_s
-      end
-
       attr_reader :object, :required
 
       def initialize(object, required)
@@ -132,7 +101,9 @@ module Syskit
         end
 
         port = find_ports_on_required(name).first
-        Port.new(self, name, port.direction, port.type)
+        # A port of the facet stands for the port of the object it maps to
+        # (see #self_port_to_component_port).
+        port.attach(self)
       end
 
       # The port of the object that port +name+ of +model+ (a required

@@ -141,17 +141,8 @@ module Syskit
       private
 
       def check_connection(source, sink, location)
-        error = if !source.output? then [WrongPortConnectionDirection, "#{source} is not an output port"]
-                elsif !sink.respond_to?(:input?) || !sink.input?
-                  [WrongPortConnectionDirection, "#{sink} is not an input port"]
-                elsif source.component_model == sink.component_model
-                  [SelfConnection, 'they are both ports of the same component']
-                elsif source.type != sink.type then [WrongPortConnectionTypes, 'their types differ']
-                end
-        return unless error
-
-        raise error[0].new("cannot connect #{source} to #{sink}: #{error[1]}",
-                           location: location, hint: 'connect an output port to an input port of the same type')
+        same = sink.respond_to?(:component_model) && source.component_model == sink.component_model
+        PortConnectionCheck.check!(source, sink, location, same_owner: same, owner: 'component model')
       end
     end
 

@@ -59,6 +59,23 @@ module Syskit
         task
       end
 
+      # Puts +new_task+ in the place of +task+: its mission and permanent
+      # marks, and its plan service (see #replaced).
+      def replace_task(task, new_task)
+        add(new_task)
+        @mission_tasks << new_task if @mission_tasks.delete?(task)
+        @permanent_tasks << new_task if @permanent_tasks.delete?(task)
+        @tasks.delete(task)
+        replaced(task, new_task)
+      end
+
+      # Roby's +plan.replaced(task, new_task)+: the plan service of +task+
+      # (+task.as_service+) now stands for +new_task+.
+      def replaced(task, new_task)
+        task.plan_service&.replace(new_task)
+        new_task
+      end
+
       def include?(task)
         @tasks.include?(task)
       end

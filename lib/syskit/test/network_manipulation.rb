@@ -23,8 +23,10 @@ module Syskit
       # A configured deployment (Models::ConfiguredDeployment) of one task
       # of +task_model+ named +task_name+, on the process server +on+;
       # with +register:+ (the default) the test deploys with it.
+      # Syskit's +remote_task:+ (whether the process would be a remote
+      # one) is accepted: nothing runs.
       def syskit_stub_configured_deployment(task_model = nil, task_name = nil, process_server_name: 'stubs',
-                                            register: true, &block)
+                                            register: true, remote_task: false, &block) # rubocop:disable Lint/UnusedMethodArgument
         model = syskit_stub_deployment_model(task_model, task_name, &block)
         configured = Models::ConfiguredDeployment.new(process_server_name, model)
         use_deployment(configured) if register

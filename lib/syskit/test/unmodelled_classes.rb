@@ -61,7 +61,7 @@ module Syskit
 
       # How Syskit's tests make an instance of these classes: +.new+, and
       # the factories of Models::DynamicPortBinding.
-      FACTORIES = %i[new create create_from_component_port].freeze
+      FACTORIES = %i[new create create_from_component_port create_from_matcher].freeze
 
       # Those of CLASSES that are modules in Syskit (Roby's): an object is
       # extended with one, which skips.

@@ -23,8 +23,12 @@ module Syskit
         @model = model
       end
 
+      # The name of the oroGen model, when given apart from the model's
+      # (+new_submodel(orogen_model_name: 'lib::Task')+).
+      attr_writer :orogen_model_name
+
       def name
-        @model.name
+        @orogen_model_name || @model.name
       end
     end
 

@@ -34,6 +34,13 @@ module Syskit
       assert model.spec.dynamic_port_for(:input, 'wheel', Syskit.app.types.find('/double'))
     end
 
+    def test_the_orogen_model_may_be_named_apart_from_the_model
+      model = TaskContext.new_submodel(orogen_model_name: 'test::Task') { output_port 'out', '/double' }
+      assert_equal 'test::Task', model.orogen_model.name
+      assert_match(/anonymous ruby task/, model.name)
+      assert_equal 'Probe', TaskContext.new_submodel(name: 'Probe').orogen_model.name
+    end
+
     def test_ports_declared_through_the_orogen_model
       model = TaskContext.new_submodel
       model.orogen_model.input_port 'frames_in', '/double'

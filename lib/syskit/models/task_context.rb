@@ -21,6 +21,15 @@ module Syskit
 
       attr_reader :spec
 
+      # A submodel made in Ruby (see Component#new_submodel);
+      # +orogen_model_name:+ names its oroGen model ('lib::Task'), as
+      # Syskit's +TaskContext.new_submodel(orogen_model_name: ...)+ does.
+      def new_submodel(orogen_model_name: nil, **options, &block)
+        model = super(**options, &block)
+        model.spec.orogen_model_name = orogen_model_name if orogen_model_name
+        model
+      end
+
       # A new task model for +spec+, subclassing this one.
       def new_model(spec)
         model = Class.new(self)

@@ -34,6 +34,14 @@ module Syskit
       assert model.spec.dynamic_port_for(:input, 'wheel', Syskit.app.types.find('/double'))
     end
 
+    def test_dynamic_ports_declared_through_the_orogen_model
+      model = TaskContext.new_submodel
+      model.orogen_model.dynamic_input_port(/^in_/, '/double')
+      model.orogen_model.dynamic_output_port(/^out_/)
+      assert_equal %i[input output], model.orogen_model.dynamic_ports.map(&:direction)
+      assert model.spec.dynamic_port_for(:input, 'in_a', Syskit.app.types.find('/double'))
+    end
+
     def test_the_orogen_model_may_be_named_apart_from_the_model
       model = TaskContext.new_submodel(orogen_model_name: 'test::Task') { output_port 'out', '/double' }
       assert_equal 'test::Task', model.orogen_model.name

@@ -23,6 +23,21 @@ module Syskit
         declarations('output_port').output_port(name, type)
       end
 
+      # Declares a pattern of ports created at configure time (see
+      # RubyTaskContext::Declarations#dynamic_input_port).
+      def dynamic_input_port(pattern, type = nil)
+        declarations('dynamic_input_port').dynamic_input_port(pattern, type)
+      end
+
+      def dynamic_output_port(pattern, type = nil)
+        declarations('dynamic_output_port').dynamic_output_port(pattern, type)
+      end
+
+      # The patterns of ports created at configure time (Syskit::DynamicPort).
+      def dynamic_ports
+        @spec.all_dynamic_ports
+      end
+
       def name
         @spec.name
       end

@@ -61,6 +61,17 @@ module Syskit
         add_dynamic_port(pattern, :output, type)
       end
 
+      # The task's states, as an .orogen file declares them
+      # (+runtime_states :moving+; +reports+ is oroGen's other name for
+      # runtime_states).
+      %i[exception_states error_states runtime_states fatal_states].each do |kind|
+        define_method(kind) { |*names| spec.states[kind].concat(names.map(&:to_s)) }
+      end
+
+      def reports(*names)
+        runtime_states(*names)
+      end
+
       # What Syskit calls the oroGen model of a task model made in Ruby:
       # ports may be declared through it too
       # (+model.orogen_model.input_port 'in', '/double'+).

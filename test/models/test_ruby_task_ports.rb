@@ -42,6 +42,16 @@ module Syskit
       assert model.spec.dynamic_port_for(:input, 'in_a', Syskit.app.types.find('/double'))
     end
 
+    def test_states_are_declared_as_in_an_orogen_file
+      model = TaskContext.new_submodel do
+        runtime_states :moving
+        reports :blocked
+        error_states :stalled
+      end
+      assert_equal %w[moving blocked], model.spec.states[:runtime_states]
+      assert_equal %w[stalled], model.spec.states[:error_states]
+    end
+
     def test_the_orogen_model_may_be_named_apart_from_the_model
       model = TaskContext.new_submodel(orogen_model_name: 'test::Task') { output_port 'out', '/double' }
       assert_equal 'test::Task', model.orogen_model.name

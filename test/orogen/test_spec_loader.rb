@@ -46,6 +46,7 @@ module Syskit
           exception_states :SENSOR_TIMEOUT
           error_states "CHECKSUM_ERROR"
           runtime_states :CALIBRATING
+          reports :HOMING
           port_driven "io_raw_in"
           fd_driven
           worstcase_processing_time 0.01
@@ -105,6 +106,7 @@ module Syskit
       assert_includes task.property_declarations.keys, 'io_port'
       assert_equal 0.01, task.worstcase_processing_time
       assert_equal %w[SENSOR_TIMEOUT], task.spec.states[:exception_states]
+      assert_equal %w[CALIBRATING HOMING], task.spec.states[:runtime_states]
       assert_equal %w[hard], task.spec.operations['reset'].arguments.map(&:first)
     end
 

@@ -77,6 +77,11 @@ module Syskit
         define_method(kind) { |*names| @spec.states[kind].concat(names.map(&:to_s)) }
       end
 
+      # oroGen's other name for runtime_states.
+      def reports(*names)
+        runtime_states(*names)
+      end
+
       %i[port_driven fd_driven periodic default_activity required_activity].each do |kind|
         define_method(kind) do |*args|
           @spec.activity = [kind, *args]
@@ -97,7 +102,7 @@ module Syskit
       end
 
       # Code-generation statements: accepted, meaningless for planning.
-      %i[implements reports extended_state_support needs_global_initializer hidden_operations
+      %i[implements extended_state_support needs_global_initializer hidden_operations
          reconfigurable keep_last_written_value dynamic_property default_policy].each do |statement|
         define_method(statement) { |*_args, **_options, &_block| nil }
       end

@@ -32,6 +32,13 @@ module Syskit
       assert Syskit::Deployment.has_submodel?(parent)
     end
 
+    def test_the_namespace_of_registered_deployments_exists_before_any_is_registered
+      out, err, status = Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'), '-rsyskit',
+                                        '-e', 'p Deployments.constants', unsetenv_others: true)
+      assert status.success?, err
+      assert_equal "[]\n", out
+    end
+
     def test_a_named_spec_can_be_registered_as_a_constant
       spec = Models.create_orogen_deployment_model('camera_process')
       model = Syskit::Deployment.define_from_orogen(spec, register: true)

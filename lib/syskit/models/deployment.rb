@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/deployments_namespace'
+
 module Syskit
   # Models of the things a robot is made of; here, of deployments.
   module Models
@@ -52,8 +54,7 @@ module Syskit
         model = new_submodel(orogen_model: orogen_model)
         return model unless register && orogen_model.name
 
-        namespace = Object.const_defined?(:Deployments) ? ::Deployments : Object.const_set(:Deployments, Module.new)
-        namespace.const_set(Naming.camelize(orogen_model.name), model)
+        ::Deployments.const_set(Naming.camelize(orogen_model.name), model)
         model
       end
 

@@ -176,8 +176,6 @@ module Syskit
     Syskit.const_set(:NetworkGeneration, Module.new)
     Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
-    # Where Syskit names its deployment tasks (OroGen.deployments.name).
-    not_modelled_class(Syskit::OroGenNamespace, :DeploymentNamespace, 'namespace of deployment tasks')
     not_modelled_class(Roby, :Task, 'Roby task')
     # Roby's task library (Roby::Tasks::Simple, ...).
     Roby.const_set(:Tasks, Module.new)

@@ -4,6 +4,7 @@ require 'syskit/models/component'
 require 'syskit/compat/roby_task_arguments'
 require 'syskit/compat/roby_plan_service'
 require 'syskit/models/component_submodels'
+require 'syskit/models/task_specialization'
 
 module Syskit
   # The root of the components of a network, as in Syskit: task contexts
@@ -12,9 +13,47 @@ module Syskit
   class AbstractComponent
     extend Models::Component
     extend Models::ComponentSubmodels
+    extend Models::TaskSpecialization
 
+    # Its model: its class, or the private specialization #specialize
+    # made for this task alone.
     def model
-      self.class
+      @model || self.class
+    end
+
+    # Gives the task a model of its own (a specialization of its model),
+    # which can then provide services its model does not. True if it made
+    # one, false if the task's model already is private to it.
+    def specialize
+      return false if @model
+
+      @model = model.specialize
+      @bound_services = nil
+      true
+    end
+
+    # The model the task's model was specialized from (its model if it is
+    # no specialization): what deployments and users know it by.
+    def concrete_model
+      model.concrete_model
+    end
+
+    # Whether the task's model is a specialization (#specialize, on the
+    # task or on its model).
+    def specialized_model?
+      !concrete_model.equal?(model)
+    end
+
+    # The models the task stands for: its concrete model, never the
+    # specialization made for it.
+    def provided_models
+      [concrete_model]
+    end
+
+    # Roby's pair of the models and the arguments the task is known to
+    # fullfill: its provided models, no argument constraint.
+    def fullfilled_model
+      [provided_models, {}]
     end
 
     # Whether its model fullfills +models+ (a model or a list).

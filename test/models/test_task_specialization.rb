@@ -1,0 +1,63 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # Syskit's +task.specialize+: a task held in a plan gets a model of its
+  # own, to which services can be added without touching the model it was
+  # made from, and which it is still known by (concrete_model,
+  # provided_models, fullfilled_model).
+  class TestTaskSpecialization < Minitest::Test
+    def setup
+      double = Types::OpaqueType.new('/double')
+      @srv_m = DataService.new_submodel(name: 'Pose') { output_port 'pose', double }
+      @task_m = TaskContext.new_submodel(name: 'Odometry') { output_port 'pose', double }
+    end
+
+    def test_a_plain_task_is_of_its_class_and_not_specialized
+      task = @task_m.new
+      assert_same @task_m, task.model
+      assert_same @task_m, task.concrete_model
+      refute task.specialized_model?
+      assert_equal [@task_m], task.provided_models
+    end
+
+    def test_specialize_gives_the_task_a_model_of_its_own_once
+      task = @task_m.new
+      assert task.specialize
+      own = task.model
+      refute_same @task_m, own
+      assert own < @task_m
+      assert task.specialized_model?
+      refute task.specialize
+      assert_same own, task.model
+    end
+
+    def test_the_task_is_still_known_by_the_model_it_was_made_from
+      task = @task_m.new
+      task.specialize
+      assert_same @task_m, task.concrete_model
+      assert_equal [@task_m], task.provided_models
+      assert_equal [[@task_m], {}], task.fullfilled_model
+      other = @task_m.specialize.new
+      assert other.specialized_model?
+      assert_equal [@task_m], other.provided_models
+    end
+
+    def test_services_added_to_the_own_model_leave_the_task_model_alone
+      task = @task_m.new
+      task.specialize
+      task.model.provides @srv_m, as: 'pose'
+      assert task.fullfills?(@srv_m)
+      refute @task_m.fullfills?(@srv_m)
+      assert_same task.model, task.find_data_service('pose').model.component_model
+      assert_same task.model, task.pose_port.model.component_model
+    end
+
+    def test_plain_component_tasks_can_be_specialized_too
+      task = Component.new_submodel.new
+      assert task.specialize
+      assert task.specialized_model?
+    end
+  end
+end

@@ -101,6 +101,19 @@ module Syskit
       end
     end
 
+    # Syskit's +task.require_dynamic_service('dyn', as: 'name')+: the
+    # service +name+ of the task, made from its model's dynamic service
+    # +dyn+ on the task's own model (see AbstractComponent#specialize),
+    # so that other tasks of the model are left as they are. The service
+    # already there is returned if it is of the dynamic service's model.
+    def require_dynamic_service(dynamic_name, as:, **options)
+      specialize
+      model.require_dynamic_service(dynamic_name, as: as, **options)
+      # A lookup made before the service existed found none.
+      @bound_services.delete(as.to_s) if @bound_services && !@bound_services[as.to_s]
+      find_data_service(as)
+    end
+
     # The services made for this task from dynamic services, as Syskit's
     # required dynamic services (Syskit::BoundDataService, their options in
     # +srv.model.dynamic_service_options+): those its model requires (a

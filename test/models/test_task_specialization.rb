@@ -54,6 +54,25 @@ module Syskit
       assert_same task.model, task.pose_port.model.component_model
     end
 
+    def test_require_dynamic_service_on_a_task_adds_the_service_to_its_own_model_only
+      marker = DataService.new_submodel(name: 'Marker')
+      @task_m.dynamic_service(marker, as: 'dyn') { provides marker, as: name }
+      task = @task_m.new
+      srv = task.require_dynamic_service('dyn', as: 'left')
+      assert task.specialized_model?
+      assert_same srv, task.find_data_service('left')
+      assert_same task.model, srv.model.component_model
+      assert_same srv, task.require_dynamic_service('dyn', as: 'left')
+      assert_nil @task_m.find_data_service('left')
+      assert_nil @task_m.new.find_data_service('left')
+    end
+
+    def test_require_dynamic_service_on_a_task_raises_argument_errors
+      task = @task_m.new
+      assert_raises(ArgumentError) { task.require_dynamic_service('nothing', as: 'x') }
+      assert_raises(ArgumentError) { task.require_dynamic_service('nothing') }
+    end
+
     def test_plain_component_tasks_can_be_specialized_too
       task = Component.new_submodel.new
       assert task.specialize

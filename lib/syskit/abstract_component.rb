@@ -5,6 +5,7 @@ require 'syskit/compat/roby_task_arguments'
 require 'syskit/compat/roby_plan_service'
 require 'syskit/models/component_submodels'
 require 'syskit/models/task_specialization'
+require 'syskit/component_merging'
 
 module Syskit
   # The root of the components of a network, as in Syskit: task contexts
@@ -121,6 +122,8 @@ module Syskit
   # What task contexts and compositions are (Syskit::Component): the
   # class test files and custom models name.
   class Component < AbstractComponent
+    include ComponentMerging
+
     class << self
       # Where it was made (see Models::Component#new_submodel).
       attr_reader :declared_at

@@ -1,0 +1,71 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # Syskit's can_merge? and merge on tasks held in a plan as data: whether
+  # one task may stand for another, and what it takes from it.
+  class TestTaskMerging < Minitest::Test
+    def setup
+      marker = @marker = DataService.new_submodel(name: 'Marker')
+      @task_m = TaskContext.new_submodel(name: 'Camera') do
+        argument :exposure
+        dynamic_service(marker, as: 'dyn') { provides marker.new_submodel, as: name }
+      end
+    end
+
+    def test_tasks_of_one_model_merge_whatever_services_they_required
+      left = @task_m.new
+      right = @task_m.new
+      assert left.can_merge?(right)
+      right.require_dynamic_service('dyn', as: 'a')
+      assert left.can_merge?(right)
+      left.require_dynamic_service('dyn', as: 'b')
+      assert left.can_merge?(right)
+    end
+
+    def test_services_of_one_name_but_different_models_do_not_merge
+      left = @task_m.new
+      right = @task_m.new
+      left.require_dynamic_service('dyn', as: 'a')
+      right.require_dynamic_service('dyn', as: 'a')
+      refute left.can_merge?(right)
+    end
+
+    def test_an_abstract_task_does_not_stand_for_a_concrete_one
+      left = @task_m.new
+      right = @task_m.new
+      left.abstract = true
+      refute left.can_merge?(right)
+      assert right.can_merge?(left)
+    end
+
+    def test_arguments_set_on_both_must_be_equal
+      left = @task_m.new
+      right = @task_m.new(exposure: 10)
+      assert left.can_merge?(right)
+      left.exposure = 5
+      refute left.can_merge?(right)
+      left.exposure = 10
+      assert left.can_merge?(right)
+    end
+
+    def test_merge_takes_missing_arguments_and_services_on_its_own_model
+      left = @task_m.new
+      right = @task_m.new(exposure: 3)
+      right.require_dynamic_service('dyn', as: 'a')
+      assert_same left, left.merge(right)
+      assert_equal 3, left.arguments[:exposure]
+      assert left.specialized_model?
+      assert left.find_data_service('a')
+      assert_nil @task_m.find_data_service('a')
+    end
+
+    def test_merge_leaves_a_task_without_dynamic_services_unspecialized
+      left = @task_m.new(exposure: 1)
+      left.merge(@task_m.new(exposure: 2))
+      refute left.specialized_model?
+      assert_equal 1, left.arguments[:exposure]
+    end
+  end
+end

@@ -22,14 +22,23 @@ module Syskit
     # dynamic services that it lacks (on its own model, see #specialize, so
     # that its model is left as it is). Returns the task.
     def merge(other)
-      other.arguments.each do |key, value|
-        arguments[key] = value if other.arguments.set?(key) && !arguments.set?(key)
+      other.arguments.each_key do |key|
+        arguments[key] = other.arguments[key] if merged_argument?(other.arguments, key)
       end
       merge_required_dynamic_services(other)
       self
     end
 
     private
+
+    # Whether the argument +key+ of +given+ replaces the task's: a set one
+    # replaces what is not set, a default one only what is not there at
+    # all (Roby::DefaultArgument).
+    def merged_argument?(given, key)
+      return !arguments.set?(key) if given.set?(key)
+
+      given[key].is_a?(Compat::Roby::DefaultArgument) && !arguments.key?(key)
+    end
 
     def merge_required_dynamic_services(other)
       return unless other.respond_to?(:each_required_dynamic_service)

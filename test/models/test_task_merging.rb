@@ -61,6 +61,27 @@ module Syskit
       assert_nil @task_m.find_data_service('a')
     end
 
+    def test_default_arguments_are_not_set_and_go_only_where_nothing_is
+      default = Compat::Roby::DefaultArgument.new(7)
+      refute @task_m.new(exposure: default).arguments.set?(:exposure)
+      bare = @task_m.new
+      bare.merge(@task_m.new(exposure: default))
+      assert_equal default, bare.arguments.values[:exposure]
+    end
+
+    def test_a_default_argument_gives_way_to_what_the_task_has
+      default = Compat::Roby::DefaultArgument.new(7)
+      own_default = Compat::Roby::DefaultArgument.new(8)
+      defaulted = @task_m.new(exposure: own_default)
+      defaulted.merge(@task_m.new(exposure: default))
+      assert_equal own_default, defaulted.arguments[:exposure]
+      defaulted.merge(@task_m.new(exposure: 9))
+      assert_equal 9, defaulted.arguments[:exposure]
+      static = @task_m.new(exposure: 1)
+      static.merge(@task_m.new(exposure: default))
+      assert_equal 1, static.arguments[:exposure]
+    end
+
     def test_merge_leaves_a_task_without_dynamic_services_unspecialized
       left = @task_m.new(exposure: 1)
       left.merge(@task_m.new(exposure: 2))

@@ -185,6 +185,13 @@ module Syskit
       Models::Placeholder.for(models, component_model: component_model, as: as)
     end
 
+    # Requirements that would give a task like this one: its model, with
+    # the arguments it has set (not the delayed or default ones).
+    def to_instance_requirements
+      set = arguments.each_key.select { |key| arguments.set?(key) }
+      model.to_instance_requirements.with_arguments(**arguments.slice(*set))
+    end
+
     # Whether the task stands for a component (see Syskit::Placeholder).
     def placeholder?
       false

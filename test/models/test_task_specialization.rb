@@ -73,6 +73,18 @@ module Syskit
       assert_raises(ArgumentError) { task.require_dynamic_service('nothing') }
     end
 
+    def test_to_instance_requirements_keeps_the_set_arguments_only
+      model = Component.new_submodel do
+        argument :rate
+        argument :mode, default: nil
+        argument :offset
+      end
+      task = model.new(rate: 10, offset: Compat::Roby::DefaultArgument.new(2))
+      req = task.to_instance_requirements
+      assert_equal({ rate: 10 }, req.arguments.to_hash)
+      assert req.fullfills?(model)
+    end
+
     def test_plain_component_tasks_can_be_specialized_too
       task = Component.new_submodel.new
       assert task.specialize

@@ -1,0 +1,45 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # Finding the task model that stands for an oroGen model: model_for,
+  # find_model_by_orogen, has_model_for? and find_model_from_orogen_name.
+  class TestTaskContextOrogenLookup < Minitest::Test
+    def setup
+      super
+      load_app(my_app(nil), robots: [])
+      @mark = Models.defined_models.size
+    end
+
+    def teardown
+      Models.clear_defined_since(@mark)
+      super
+    end
+
+    def test_a_submodel_is_found_from_its_orogen_model
+      model = TaskContext.new_submodel(orogen_model_name: 'lookup_test::Task')
+      assert TaskContext.has_model_for?(model.orogen_model)
+      assert_same model, TaskContext.model_for(model.orogen_model)
+      assert_same model, TaskContext.find_model_by_orogen(model.spec)
+      assert_same model, TaskContext.find_model_from_orogen_name('lookup_test::Task')
+    end
+
+    def test_an_unknown_orogen_model_is_not_found
+      other = Orogen::ModelView.new(Orogen::TaskSpec.new('lookup_test::Other', nil))
+      refute TaskContext.has_model_for?(other)
+      assert_nil TaskContext.find_model_by_orogen(other)
+      assert_nil TaskContext.find_model_from_orogen_name('lookup_test::Missing')
+      error = assert_raises(ArgumentError) { TaskContext.model_for(other) }
+      assert_kind_of UnknownName, error
+    end
+
+    def test_a_forgotten_submodel_is_not_found
+      model = TaskContext.new_submodel
+      sub = model.new_submodel
+      model.clear_submodels
+      refute TaskContext.has_model_for?(sub.orogen_model)
+      assert TaskContext.has_model_for?(model.orogen_model)
+    end
+  end
+end

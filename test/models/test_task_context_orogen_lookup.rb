@@ -34,6 +34,18 @@ module Syskit
       assert_kind_of UnknownName, error
     end
 
+    def test_the_orogen_model_finds_ports_by_direction
+      model = TaskContext.new_submodel do
+        input_port 'cmd', '/double'
+        output_port 'state', '/double'
+      end
+      assert_equal 'cmd', model.orogen_model.find_input_port('cmd').name
+      assert_nil model.orogen_model.find_input_port('state')
+      assert_equal 'state', model.orogen_model.find_output_port(:state).name
+      assert_nil model.orogen_model.find_output_port('cmd')
+      assert_nil model.orogen_model.find_output_port('none')
+    end
+
     def test_a_forgotten_submodel_is_not_found
       model = TaskContext.new_submodel
       sub = model.new_submodel

@@ -49,6 +49,18 @@ module Syskit
         PortModifiers.new(port) if port
       end
 
+      # The input port called +name+ (with its modifiers), nil when there
+      # is none or it is an output.
+      def find_input_port(name)
+        find_port_of(:input, name)
+      end
+
+      # The output port called +name+, nil when there is none or it is an
+      # input.
+      def find_output_port(name)
+        find_port_of(:output, name)
+      end
+
       def each_port(&)
         @spec.all_ports.each_value(&)
       end
@@ -76,6 +88,11 @@ module Syskit
       attr_reader :spec
 
       private
+
+      def find_port_of(direction, name)
+        port = @spec.find_port(name)
+        PortModifiers.new(port) if port&.direction == direction
+      end
 
       def declarations(statement)
         return @declarations if @declarations

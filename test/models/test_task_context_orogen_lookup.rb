@@ -46,6 +46,12 @@ module Syskit
       assert_nil model.orogen_model.find_output_port('none')
     end
 
+    def test_rtt_task_context_is_the_root_task_model
+      assert_same TaskContext, OroGen::RTT::TaskContext
+      model = OroGen::RTT::TaskContext.new_submodel
+      assert TaskContext.has_submodel?(model)
+    end
+
     def test_a_forgotten_submodel_is_not_found
       model = TaskContext.new_submodel
       sub = model.new_submodel

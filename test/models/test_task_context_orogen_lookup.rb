@@ -52,6 +52,15 @@ module Syskit
       assert TaskContext.has_submodel?(model)
     end
 
+    def test_a_specialized_model_has_its_own_orogen_model
+      model = TaskContext.new_submodel
+      specialized = model.specialize
+      assert_same model.orogen_model, specialized.orogen_model.superclass
+      specialized.orogen_model.output_port 'extra', '/double'
+      assert specialized.orogen_model.has_port?('extra')
+      refute model.orogen_model.has_port?('extra')
+    end
+
     def test_a_forgotten_submodel_is_not_found
       model = TaskContext.new_submodel
       sub = model.new_submodel

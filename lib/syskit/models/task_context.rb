@@ -79,7 +79,7 @@ module Syskit
       # What the .orogen file says of this model, as Syskit's orogen_model:
       # +orogen_model.find_port('command').multiplexes+ changes a port.
       def orogen_model
-        Orogen::ModelView.new(spec)
+        @orogen_model ||= Orogen::ModelView.new(spec, model: self)
       end
 
       # Static ports by name (inherited ones included).

@@ -8,8 +8,10 @@ module Syskit
     class ModelView
       # +declarations+: the model made in Ruby the spec is of, whose ports
       # may be declared through the view (see #input_port).
-      def initialize(spec, declarations: nil)
+      # +model+: the task model whose oroGen model this is, if any.
+      def initialize(spec, model: nil, declarations: nil)
         @spec = spec
+        @model = model
         @declarations = declarations
       end
 
@@ -59,6 +61,24 @@ module Syskit
       # input.
       def find_output_port(name)
         find_port_of(:output, name)
+      end
+
+      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- oroGen's name
+        !@spec.find_port(name).nil?
+      end
+
+      # The oroGen model this one derives from (that of the parent task
+      # model when it stands for it), nil for a root.
+      def superclass
+        parent = @spec.superclass
+        return unless parent
+
+        parent_model = @model&.superclass
+        if parent_model.respond_to?(:spec) && parent_model.spec.equal?(parent)
+          parent_model.orogen_model
+        else
+          ModelView.new(parent)
+        end
       end
 
       def each_port(&)

@@ -76,7 +76,7 @@ module Syskit
       # ports may be declared through it too
       # (+model.orogen_model.input_port 'in', '/double'+).
       def orogen_model
-        Orogen::ModelView.new(spec, declarations: self)
+        @orogen_model ||= Orogen::ModelView.new(spec, model: self, declarations: self)
       end
 
       # Declares a property: +property 'period', '/double', 0.1+.

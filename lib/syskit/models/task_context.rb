@@ -79,7 +79,7 @@ module Syskit
       # What the .orogen file says of this model, as Syskit's orogen_model:
       # +orogen_model.find_port('command').multiplexes+ changes a port.
       def orogen_model
-        Orogen::ModelView.new(spec)
+        @orogen_model ||= Orogen::ModelView.new(spec, model: self)
       end
 
       # Static ports by name (inherited ones included).
@@ -160,6 +160,62 @@ module Syskit
         spec ? spec.all_operations : {}
       end
 
+      # The task model, among this model's submodels, standing for the oroGen
+      # model +orogen_model+ (a model's +orogen_model+, or its spec); nil
+      # when there is none. Forgotten submodels (#clear_submodels) are gone.
+      def find_model_by_orogen(orogen_model)
+        each_submodel.find do |model|
+          model.spec && (model.spec.equal?(orogen_model) || model.orogen_model == orogen_model)
+        end
+      end
+
+      def has_model_for?(orogen_model) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
+        !find_model_by_orogen(orogen_model).nil?
+      end
+
+      # As #find_model_by_orogen, raising UnknownName (an ArgumentError)
+      # when no model stands for +orogen_model+.
+      def model_for(orogen_model)
+        find_model_by_orogen(orogen_model) ||
+          raise(UnknownName.new("no task model of #{self} stands for the oroGen model #{orogen_model}",
+                                location: Location.of_caller,
+                                hint: 'define one with new_submodel, or load the .orogen file that declares it'))
+      end
+
+      # The submodel whose oroGen model is called +name+ ('lib::Task'), nil
+      # when there is none.
+      def find_model_from_orogen_name(name)
+        each_submodel.find { |model| model.spec && model.spec.name == name }
+      end
+
+      # The states every task context has (RTT's), which have an event;
+      # PRE_OPERATIONAL has none.
+      RTT_STATES_WITH_EVENTS = %w[STOPPED RUNNING RUNTIME_ERROR EXCEPTION FATAL_ERROR].freeze
+
+      # The event emitted when a task enters each of its model's states, by
+      # state name (+:CUSTOM => :custom+): RTT's, then those of its spec and
+      # of the specs it inherits (+runtime_states+, +error_states+...).
+      def state_events
+        names = RTT_STATES_WITH_EVENTS + orogen_state_names(spec)
+        names.to_h { |name| [name.to_sym, Naming.underscore(name).downcase.to_sym] }
+      end
+
+      # The event of the state +name+ (+:EXCEPTION+), nil when it has none.
+      def find_state_event(name)
+        state_events[name.to_sym]
+      end
+
+      # Whether the task is configured through +update_properties+ (Syskit's
+      # newer hook) rather than +configure+: true unless a model class below
+      # Syskit::TaskContext defines +configure+ and none defines
+      # +update_properties+. Methods of modules mixed in are not counted.
+      def use_update_properties?
+        classes = ancestors.take_while { |a| !a.equal?(Syskit::TaskContext) }.grep(Class)
+        return true if classes.any? { |c| defines_own?(c, :update_properties) }
+
+        classes.none? { |c| defines_own?(c, :configure) }
+      end
+
       # The class of the task's component (+orocos_task+, and what +stub+
       # blocks are evaluated on).
       def component_class
@@ -167,6 +223,16 @@ module Syskit
       end
 
       private
+
+      def orogen_state_names(spec)
+        return [] unless spec
+
+        orogen_state_names(spec.superclass) + spec.states.values.flatten
+      end
+
+      def defines_own?(klass, name)
+        klass.method_defined?(name, false) || klass.private_method_defined?(name, false)
+      end
 
       def setup_model(spec)
         @spec = spec

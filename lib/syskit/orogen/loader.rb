@@ -21,6 +21,11 @@ module Syskit
         @namespace = Namespace.new('OroGen').extend(OroGenNamespace)
         @namespace.loader = self
         @namespace.const_set(:Spec, Compat::OrogenSpec)
+        # RTT's TaskContext, the root of every oroGen task model, is
+        # Syskit::TaskContext (OroGen::RTT::TaskContext, as in Syskit).
+        rtt = Namespace.new('OroGen', ['RTT'])
+        rtt.add(['TaskContext'], Syskit::TaskContext)
+        @namespace.const_set(:RTT, rtt)
         available_library_names.each { |name| @namespace.add_unloaded(name) }
       end
 

@@ -8,8 +8,10 @@ module Syskit
     class ModelView
       # +declarations+: the model made in Ruby the spec is of, whose ports
       # may be declared through the view (see #input_port).
-      def initialize(spec, declarations: nil)
+      # +model+: the task model whose oroGen model this is, if any.
+      def initialize(spec, model: nil, declarations: nil)
         @spec = spec
+        @model = model
         @declarations = declarations
       end
 
@@ -49,6 +51,36 @@ module Syskit
         PortModifiers.new(port) if port
       end
 
+      # The input port called +name+ (with its modifiers), nil when there
+      # is none or it is an output.
+      def find_input_port(name)
+        find_port_of(:input, name)
+      end
+
+      # The output port called +name+, nil when there is none or it is an
+      # input.
+      def find_output_port(name)
+        find_port_of(:output, name)
+      end
+
+      def has_port?(name) # rubocop:disable Naming/PredicatePrefix -- oroGen's name
+        !@spec.find_port(name).nil?
+      end
+
+      # The oroGen model this one derives from (that of the parent task
+      # model when it stands for it), nil for a root.
+      def superclass
+        parent = @spec.superclass
+        return unless parent
+
+        parent_model = @model&.superclass
+        if parent_model.respond_to?(:spec) && parent_model.spec.equal?(parent)
+          parent_model.orogen_model
+        else
+          ModelView.new(parent)
+        end
+      end
+
       def each_port(&)
         @spec.all_ports.each_value(&)
       end
@@ -76,6 +108,11 @@ module Syskit
       attr_reader :spec
 
       private
+
+      def find_port_of(direction, name)
+        port = @spec.find_port(name)
+        PortModifiers.new(port) if port&.direction == direction
+      end
 
       def declarations(statement)
         return @declarations if @declarations

@@ -1,0 +1,44 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # TaskContext.use_update_properties?: which configuration hook a task
+  # model relies on, from the methods its own classes define.
+  class TestTaskContextUpdateProperties < Minitest::Test
+    def setup
+      super
+      load_app(my_app(nil), robots: [])
+      @mark = Models.defined_models.size
+    end
+
+    def teardown
+      Models.clear_defined_since(@mark)
+      super
+    end
+
+    def test_a_model_without_hooks_uses_update_properties
+      assert TaskContext.new_submodel.use_update_properties?
+    end
+
+    def test_a_model_defining_configure_does_not
+      model = TaskContext.new_submodel
+      model.class_eval { def configure; end }
+      refute model.use_update_properties?
+      refute model.new_submodel.use_update_properties?
+    end
+
+    def test_update_properties_wins_over_configure
+      model = TaskContext.new_submodel
+      model.class_eval { def configure; end }
+      assert model.new_submodel.tap { |m| m.class_eval { def update_properties; end } }.use_update_properties?
+    end
+
+    def test_a_prepended_module_does_not_count
+      model = TaskContext.new_submodel
+      model.class_eval { def configure; end }
+      model.prepend(Module.new { def update_properties; end })
+      refute model.use_update_properties?
+    end
+  end
+end

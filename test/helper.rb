@@ -21,6 +21,21 @@ module Syskit
     FIXTURES = File.expand_path('fixtures', __dir__)
     GEM_ROOT = File.expand_path('..', __dir__)
 
+    # For tests of models made in Ruby (+TaskContext.new_submodel+): the
+    # base app is loaded, and the models a test made are removed after it.
+    module ModelsMadeInRuby
+      def setup
+        super
+        load_app(my_app(nil), robots: [])
+        @models_mark = Models.defined_models.size
+      end
+
+      def teardown
+        Models.clear_defined_since(@models_mark)
+        super
+      end
+    end
+
     def fixture(*path)
       File.join(FIXTURES, *path)
     end

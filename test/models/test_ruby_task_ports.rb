@@ -7,16 +7,7 @@ module Syskit
   # dynamic ports, and ports declared through orogen_model as Syskit's
   # tests do.
   class TestRubyTaskPorts < Minitest::Test
-    def setup
-      super
-      load_app(my_app(nil), robots: [])
-      @mark = Models.defined_models.size
-    end
-
-    def teardown
-      Models.clear_defined_since(@mark)
-      super
-    end
+    include SelfTest::ModelsMadeInRuby
 
     def test_dynamic_ports_match_names_and_types
       model = TaskContext.new_submodel do

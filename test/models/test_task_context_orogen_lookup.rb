@@ -6,16 +6,7 @@ module Syskit
   # Finding the task model that stands for an oroGen model: model_for,
   # find_model_by_orogen, has_model_for? and find_model_from_orogen_name.
   class TestTaskContextOrogenLookup < Minitest::Test
-    def setup
-      super
-      load_app(my_app(nil), robots: [])
-      @mark = Models.defined_models.size
-    end
-
-    def teardown
-      Models.clear_defined_since(@mark)
-      super
-    end
+    include SelfTest::ModelsMadeInRuby
 
     def test_a_submodel_is_found_from_its_orogen_model
       model = TaskContext.new_submodel(orogen_model_name: 'lookup_test::Task')

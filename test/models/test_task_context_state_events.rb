@@ -6,16 +6,7 @@ module Syskit
   # The events task models have for their states (state_events,
   # find_state_event), from RTT's states and those their specs declare.
   class TestTaskContextStateEvents < Minitest::Test
-    def setup
-      super
-      load_app(my_app(nil), robots: [])
-      @mark = Models.defined_models.size
-    end
-
-    def teardown
-      Models.clear_defined_since(@mark)
-      super
-    end
+    include SelfTest::ModelsMadeInRuby
 
     def test_rtt_states_have_events_but_pre_operational
       assert_equal :fatal_error, TaskContext.find_state_event(:FATAL_ERROR)

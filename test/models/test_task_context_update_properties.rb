@@ -6,16 +6,7 @@ module Syskit
   # TaskContext.use_update_properties?: which configuration hook a task
   # model relies on, from the methods its own classes define.
   class TestTaskContextUpdateProperties < Minitest::Test
-    def setup
-      super
-      load_app(my_app(nil), robots: [])
-      @mark = Models.defined_models.size
-    end
-
-    def teardown
-      Models.clear_defined_since(@mark)
-      super
-    end
+    include SelfTest::ModelsMadeInRuby
 
     def test_a_model_without_hooks_uses_update_properties
       assert TaskContext.new_submodel.use_update_properties?

@@ -7,6 +7,7 @@ module Syskit
     # (+Task.match.gps_srv+, +Task.match.out_port+). A component must
     # fullfill all the models given (+with_model([Task, Srv])+).
     class ComponentMatcher
+      include PlanResults
       include Accessors
 
       def initialize
@@ -57,14 +58,6 @@ module Syskit
         return enum_for(__method__, plan) unless block
 
         plan.each { |task| yield(task) if self === task } # rubocop:disable Style/CaseEquality
-      end
-
-      def to_a(plan)
-        each_in_plan(plan).to_a
-      end
-
-      def to_set(plan)
-        each_in_plan(plan).to_set
       end
     end
   end

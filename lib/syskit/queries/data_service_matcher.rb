@@ -6,6 +6,7 @@ module Syskit
     # ComponentMatcher finds, by name and service model, each seen as the
     # matched model (+Task.gps_srv.match.as(Srv)+).
     class DataServiceMatcher
+      include PlanResults
       include Accessors
 
       def initialize(component_matcher)
@@ -71,14 +72,6 @@ module Syskit
             yield(srv.as(data_service_model)) if self === srv # rubocop:disable Style/CaseEquality
           end
         end
-      end
-
-      def to_a(plan)
-        each_in_plan(plan).to_a
-      end
-
-      def to_set(plan)
-        each_in_plan(plan).to_set
       end
     end
   end

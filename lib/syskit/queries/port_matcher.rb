@@ -5,6 +5,8 @@ module Syskit
     # Finds the ports of what a component or service matcher finds, by
     # name (a string or a pattern) and type.
     class PortMatcher
+      include PlanResults
+
       # +component_matcher+ is a matcher, or a model (its +match+ is used).
       def initialize(component_matcher)
         @component_matcher = component_matcher.match
@@ -55,14 +57,6 @@ module Syskit
         @component_matcher.each_in_plan(plan) do |component|
           component.each_port { |port| yield(port) if self === port } # rubocop:disable Style/CaseEquality
         end
-      end
-
-      def to_a(plan)
-        each_in_plan(plan).to_a
-      end
-
-      def to_set(plan)
-        each_in_plan(plan).to_set
       end
 
       private

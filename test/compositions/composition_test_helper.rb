@@ -172,6 +172,21 @@ module Syskit
     end
 
     # Loads the app and returns it.
+    # For tests of composition models made in Ruby on the loaded rig.
+    module OnRig
+      include CompositionTestHelper
+
+      def setup
+        super
+        load_rig
+      end
+
+      # A composition model made in Ruby: +new_cmp { add ..., as: 'x' }+.
+      def new_cmp(name = nil, &)
+        Composition.new_submodel(name: name, &)
+      end
+    end
+
     def load_rig(files = {}, **options)
       load_app(rig_app(files, **options))
     end

@@ -7,16 +7,7 @@ module Syskit
   # does to the declarations written against it: they follow the child,
   # its ports mapped through the services that replaced what it required.
   class TestChildOverloads < Minitest::Test
-    include CompositionTestHelper
-
-    def setup
-      super
-      load_rig
-    end
-
-    def new_cmp(name = nil, &)
-      Composition.new_submodel(name: name, &)
-    end
+    include CompositionTestHelper::OnRig
 
     # A pose following composition, and a submodel of it in which the
     # pose child is overloaded with odometry.

@@ -6,16 +6,7 @@ module Syskit
   # A composition child seen through its services, as generators in real
   # bundles walk them (rock_auv's control cascades).
   class TestChildServices < Minitest::Test
-    include CompositionTestHelper
-
-    def setup
-      super
-      load_rig
-    end
-
-    def new_cmp(name = nil, &)
-      Composition.new_submodel(name: name, &)
-    end
+    include CompositionTestHelper::OnRig
 
     # The services of a child, as generators in real bundles walk them:
     # each a view of the child through one service of its model, whose

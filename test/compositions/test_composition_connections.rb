@@ -6,16 +6,7 @@ module Syskit
   # A composition model's connections as Syskit's tests read them: by
   # pair of child names, the connected port names and their policy.
   class TestCompositionConnections < Minitest::Test
-    include CompositionTestHelper
-
-    def setup
-      super
-      load_rig
-    end
-
-    def new_cmp(name = nil, &)
-      Composition.new_submodel(name: name, &)
-    end
+    include CompositionTestHelper::OnRig
 
     def test_connections_by_child_pair_as_syskit_lists_them
       model = new_cmp do

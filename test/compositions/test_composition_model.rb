@@ -6,16 +6,7 @@ module Syskit
   # Composition models as Syskit defines them: children, ports, exports,
   # connections, services and named configurations.
   class TestCompositionModel < Minitest::Test
-    include CompositionTestHelper
-
-    def setup
-      super
-      load_rig
-    end
-
-    def new_cmp(name = nil, &)
-      Composition.new_submodel(name: name, &)
-    end
+    include CompositionTestHelper::OnRig
 
     def test_a_composition_model_takes_the_name_of_its_constant
       model = new_cmp

@@ -50,7 +50,6 @@ module Syskit
         'ConnectionGraph' => INTERNAL,
         'DataFlow' => INTERNAL,
         'DataFlow::ConcreteConnectionGraph' => INTERNAL,
-        'InstanceSelection' => INTERNAL,
         'NetworkGeneration::MergeSolver' => INTERNAL,
         'NetworkGeneration::SystemNetworkDeployer' => INTERNAL,
         'NetworkGeneration::SystemNetworkGenerator' => INTERNAL,

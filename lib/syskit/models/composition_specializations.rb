@@ -62,12 +62,15 @@ module Syskit
         inherited + (@specialization_constraints || [])
       end
 
-      # For a specialized model, the specializations applied to make it.
+      # For a specialized model, the specializations applied to make it
+      # (a Set, as Syskit's).
       def applied_specializations
         return @applied_specializations if @applied_specializations
 
-        superclass.respond_to?(:applied_specializations) ? superclass.applied_specializations : []
+        superclass.respond_to?(:applied_specializations) ? superclass.applied_specializations : NO_SPECIALIZATIONS
       end
+
+      NO_SPECIALIZATIONS = Set.new.freeze
 
       # The model a specialized model was made from (itself otherwise).
       def specialization_root
@@ -251,7 +254,7 @@ module Syskit
 
       def become_specialization(specs, children, root)
         @specialization_root = root
-        @applied_specializations = specs.freeze
+        @applied_specializations = specs.to_set.freeze
         @specialized_children = children.freeze
         @declared_at = root.declared_at
         @given_name = "#{root.short_name}/" + children.map do |name, models|

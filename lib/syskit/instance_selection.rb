@@ -31,12 +31,13 @@ module Syskit
     end
 
     # The service of +selected+ that provides +service_model+: the
-    # selected one, else the one service of the component model that does
-    # (none when several do).
+    # selected one, else the one service of the component model (or of
+    # the placeholder standing for the required models) that does (none
+    # when several do).
     def self.service_of(selected, service_model)
       return selected.service if selected.service&.fullfills?(service_model)
 
-      model = selected.component_model
+      model = selected.respond_to?(:proxy_model) ? selected.proxy_model : selected.component_model
       return unless model.respond_to?(:find_all_data_services_from_type)
 
       found = model.find_all_data_services_from_type(service_model)

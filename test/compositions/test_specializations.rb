@@ -188,6 +188,17 @@ module Syskit
       assert_empty @model.specializations
     end
 
+    # As Syskit's specialization manager: a submodel has its parent's
+    # specializations, found by what they specialize.
+    def test_a_submodel_has_the_specializations_of_its_parent
+      odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      submodel = @model.new_submodel
+      assert_equal [{ 'pose' => [Rig::Services::Odometry] }], submodel.specializations.specializations.keys
+      assert_equal @model.specializations.specializations.keys, submodel.specializations.specializations.keys
+      refute_same odometry, submodel.specializations.first
+      assert submodel.specializations.first.composition_model < submodel
+    end
+
     # The block runs when the specialization is declared, so that a
     # mistake is reported at its line even if no network selects it.
     def test_a_specialization_block_is_checked_where_it_is_written

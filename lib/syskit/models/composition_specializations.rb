@@ -2,6 +2,7 @@
 
 require 'syskit/models/specialization_mappings'
 require 'syskit/models/composition_specialization'
+require 'syskit/models/specialization_manager'
 
 module Syskit
   module Models
@@ -43,11 +44,12 @@ module Syskit
         spec
       end
 
-      # The specializations of this model, its parents' included.
+      # The specializations of this model, its parents' included (a
+      # SpecializationManager, as Syskit's).
       def specializations
-        inherited = superclass.respond_to?(:specializations) ? superclass.specializations : []
+        inherited = superclass.respond_to?(:specializations) ? superclass.specializations.to_a : []
         promoted = inherited.map { |spec| (@promoted_specs ||= {}.compare_by_identity)[spec] ||= spec.promote(self) }
-        promoted + own_specializations
+        SpecializationManager.new(self, promoted + own_specializations)
       end
 
       # Adds a constraint on which specializations may be combined: the

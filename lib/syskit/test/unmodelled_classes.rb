@@ -46,7 +46,6 @@ module Syskit
         'InputWriter' => RUNTIME,
         'OutputReader' => RUNTIME,
         'Component::DataAccessorInterface' => RUNTIME,
-        'Models::SpecializationManager' => INTERNAL,
         'ConnectionGraph' => INTERNAL,
         'DataFlow' => INTERNAL,
         'DataFlow::ConcreteConnectionGraph' => INTERNAL,

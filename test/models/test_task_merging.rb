@@ -69,6 +69,16 @@ module Syskit
       assert_equal default, bare.arguments.values[:exposure]
     end
 
+    def test_each_assigned_argument_lists_only_the_arguments_that_are_set
+      default = Compat::Roby::DefaultArgument.new(7)
+      task_m = TaskContext.new_submodel(name: 'Lidar') do
+        argument :range
+        argument :rate
+      end
+      task = task_m.new(range: default, rate: 10)
+      assert_equal [[:rate, 10]], task.arguments.each_assigned_argument.to_a
+    end
+
     def test_a_default_argument_gives_way_to_what_the_task_has
       default = Compat::Roby::DefaultArgument.new(7)
       own_default = Compat::Roby::DefaultArgument.new(8)

@@ -106,5 +106,39 @@ module Syskit
       assert_equal 'out', port.name
       assert_equal 'left_out', port.to_component_port.name
     end
+
+    def test_a_proxy_task_is_an_abstract_task_of_the_model
+      model = Component.new_submodel
+      task = model.create_proxy_task
+      assert_kind_of model, task
+      assert task.abstract?
+      refute model.new.abstract?
+    end
+
+    def test_any_component_model_may_drive_a_device_held_in_its_dev_argument
+      device = Device.new_submodel(name: 'Imu')
+      model = Component.new_submodel { driver_for device, as: 'imu' }
+      assert_same model.imu_srv, model.find_data_service_from_type(device)
+      assert model.has_argument?(:imu_dev)
+      refute model.has_argument?(:other_dev)
+      refute Component.new_submodel.has_argument?(:imu_dev)
+    end
+
+    def test_a_private_specialization_is_not_among_the_models_it_fullfills
+      model = Component.new_submodel
+      specialized = model.specialize
+      assert_includes specialized.fullfilled_model, model
+      refute_includes specialized.fullfilled_model, specialized
+      assert_includes model.fullfilled_model, model
+    end
+
+    def test_a_component_model_may_provide_a_roby_task_service
+      service = Compat::Roby::TaskService.new_submodel(name: 'Logger')
+      model = Component.new_submodel { provides service }
+      assert model.fullfills?(service)
+      assert_includes model.fullfilled_model, service
+      assert_kind_of service, model.new
+      refute Component.new_submodel.fullfills?(service)
+    end
   end
 end

@@ -102,6 +102,15 @@ module Syskit
     # The plan service of this task, once #as_service made one.
     attr_accessor :plan_service
 
+    # The services its model requires of dynamic services, bound to this
+    # task (see Models::DynamicServices#require_dynamic_service). Without
+    # a block, the list (Syskit's tests ask it +empty?+).
+    def each_required_dynamic_service(&block)
+      return enum_for(__method__).to_a unless block
+
+      model.required_dynamic_services.each { |srv| yield srv.bind(self) }
+    end
+
     # The compositions this task is a child of (Roby's +each_parent_task+).
     def each_parent_task(&)
       return enum_for(__method__) unless block_given?

@@ -120,9 +120,9 @@ module Syskit
     # specialization's, see Models::DynamicServices#require_dynamic_service)
     # and its devices' slaves declared from one.
     def each_required_dynamic_service(&block)
-      return enum_for(__method__) unless block
+      return enum_for(__method__).to_a unless block
 
-      model.required_dynamic_services.each { |srv| yield srv.bind(self) }
+      super
       devices.each do |device|
         device.each_slave { |slave| yield slave.service.bind(self) if slave.dynamic_service_name && slave.service }
       end

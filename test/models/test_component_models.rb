@@ -140,5 +140,46 @@ module Syskit
       assert_kind_of service, model.new
       refute Component.new_submodel.fullfills?(service)
     end
+
+    def dynamic_task_model
+      srv = DataService.new_submodel
+      TaskContext.new_submodel { dynamic_service(srv, as: 'dyn') { provides srv } }
+    end
+
+    def test_two_specializations_merge_into_a_new_one_with_the_services_of_both
+      base = dynamic_task_model
+      left = base.specialize
+      left.require_dynamic_service('dyn', as: 'left')
+      right = base.specialize
+      right.require_dynamic_service('dyn', as: 'right')
+      merged = left.merge(right)
+      assert merged.private_specialization?
+      assert_same base, merged.superclass
+      assert merged.left_srv
+      assert merged.right_srv
+      assert_nil left.find_data_service('right')
+      assert_nil right.find_data_service('left')
+    end
+
+    def test_a_specialization_merged_with_a_submodel_specializes_the_submodel
+      base = dynamic_task_model
+      left = base.specialize
+      left.require_dynamic_service('dyn', as: 'left')
+      sub = base.new_submodel
+      merged = left.merge(sub.specialize)
+      assert_same sub, merged.superclass
+      assert merged.left_srv
+      assert_raises(IncompatibleComponentModels) { left.merge(dynamic_task_model.specialize) }
+    end
+
+    def test_required_dynamic_services_are_a_list_for_any_component
+      assert_empty Component.new_submodel.each_required_dynamic_service
+      assert_empty Component.new_submodel.new.each_required_dynamic_service
+      model = dynamic_task_model.new_submodel
+      srv = model.require_dynamic_service('dyn', as: 'one')
+      assert_equal [srv], model.each_required_dynamic_service
+      task = model.new
+      assert_equal [srv.bind(task)], task.each_required_dynamic_service
+    end
   end
 end

@@ -98,6 +98,24 @@ module Syskit
         false
       end
 
+      # The services required from dynamic services (see
+      # DynamicServices#require_dynamic_service), inherited ones included,
+      # in the order they were required: none for a model without dynamic
+      # services.
+      def required_dynamic_services
+        inherited = superclass.respond_to?(:required_dynamic_services) ? superclass.required_dynamic_services : []
+        inherited + (@required_dynamic_services || [])
+      end
+
+      # Enumerates them, as Syskit's model-level method: each a service of
+      # this model (+srv.model+, +srv.dynamic_service_options+). Without a
+      # block, the list (Syskit's tests ask it +empty?+).
+      def each_required_dynamic_service(&)
+        return required_dynamic_services unless block_given?
+
+        required_dynamic_services.each(&)
+      end
+
       # Whether this model is +model+ (or a submodel of it) or provides it;
       # given a list, whether it fullfills each of them. A placeholder is
       # fullfilled by what provides all it stands for, a specialization by

@@ -2,6 +2,7 @@
 
 require 'syskit/models/task_context'
 require 'syskit/properties'
+require 'syskit/task_connections'
 
 module Syskit
   # A task of a network: an instance of a task model (a subclass of this
@@ -12,6 +13,7 @@ module Syskit
   # users override in extension files (calling +super+ first).
   class TaskContext < Component
     extend Models::TaskContext
+    include TaskConnections
 
     # A task model made in Ruby, as Syskit's tests make them (see
     # Models::Component#new_submodel):

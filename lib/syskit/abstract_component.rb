@@ -6,6 +6,7 @@ require 'syskit/compat/roby_plan_service'
 require 'syskit/models/component_submodels'
 require 'syskit/models/task_specialization'
 require 'syskit/component_merging'
+require 'syskit/dynamic_port_binding'
 
 module Syskit
   # The root of the components of a network, as in Syskit: task contexts
@@ -132,6 +133,7 @@ module Syskit
   # class test files and custom models name.
   class Component < AbstractComponent
     include ComponentMerging
+    include DynamicPortBinding::ComponentAccessors
 
     class << self
       # Where it was made (see Models::Component#new_submodel).

@@ -3,6 +3,7 @@
 require 'syskit/models/not_a_model'
 
 require 'syskit/models/component_merging'
+require 'syskit/models/data_accessors'
 require 'syskit/models/service_declarations'
 require 'syskit/models/service_lookups'
 require 'syskit/models/driver_services'
@@ -22,6 +23,7 @@ module Syskit
       include ServiceLookups
       include DriverServices
       include ComponentMerging
+      include DataAccessors
 
       class << self
         # Bumped whenever a component model gains a service or a stub: the

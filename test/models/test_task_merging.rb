@@ -112,5 +112,17 @@ module Syskit
       refute short.can_merge?(long)
       assert long.can_merge?(other)
     end
+
+    def test_tasks_bound_to_different_hosts_do_not_merge
+      left = @task_m.new
+      right = @task_m.new
+      left.required_host = 'host'
+      assert left.can_merge?(right)
+      assert right.can_merge?(left)
+      right.required_host = 'other'
+      refute left.can_merge?(right)
+      right.required_host = 'host'
+      assert left.can_merge?(right)
+    end
   end
 end

@@ -16,7 +16,9 @@ module Syskit
 
     # Rock's configuration files write .nan for an unknown value; a
     # configure method may compute an infinity: both are values of a
-    # double, written as JavaScript writes them in the JSON.
+    # double, written in the JSON as typelib's to_simple_value writes
+    # them ("NaN", "Infinity", "-Infinity"), so that strict parsers read
+    # the plan.
     NAN_SPEC = <<~RUBY
       name 'imu'
       import_types_from 'base'
@@ -24,6 +26,7 @@ module Syskit
         property 'rate', 'int', 100
         property 'bias', 'double', 0.0
         property 'limit', 'double', 0.0
+        property 'lowest', 'double', 0.0
         output_port 'samples', '/base/samples/IMUSensors'
       end
     RUBY
@@ -34,22 +37,51 @@ module Syskit
         def configure
           super
           properties.limit = 1.0 / 0
+          properties.lowest = -1.0 / 0
         end
       end
     RUBY
 
+    def nan_app
+      my_app("device(Devices::IMU, as: 'imu')\n",
+             'config/orogen/imu::Task.yml' => "--- name:default\nrate: 50\nbias: .nan\n",
+             'models/orogen/imu.orogen' => NAN_SPEC, 'models/orogen/imu.rb' => NAN_EXTENSION)
+    end
+
     def test_nan_and_infinity_are_values_of_doubles
-      root = my_app("device(Devices::IMU, as: 'imu')\n",
-                    'config/orogen/imu::Task.yml' => "--- name:default\nrate: 50\nbias: .nan\n",
-                    'models/orogen/imu.orogen' => NAN_SPEC, 'models/orogen/imu.rb' => NAN_EXTENSION)
+      root = nan_app
       out, err, status = run_cli('plan', '--app', root, '--format', 'json')
       assert_equal 0, status, err
-      assert_match(/"bias": NaN,\n\s*"limit": Infinity,/, out)
-      properties = JSON.parse(out, allow_nan: true)['tasks'].first['properties']
-      assert properties['bias'].nan?
-      assert_equal Float::INFINITY, properties['limit']
+      properties = JSON.parse(out)['tasks'].first['properties']
+      assert_equal({ 'bias' => 'NaN', 'limit' => 'Infinity', 'lowest' => '-Infinity' },
+                   properties.slice('bias', 'limit', 'lowest'))
       text, = run_cli('plan', '--app', root)
-      assert_match(/bias: NaN\n\s+limit: Infinity\n/, text)
+      assert_match(/bias: NaN\n\s+limit: Infinity\n\s+lowest: -Infinity\n/, text)
+    end
+
+    # A plan file of an older version wrote NaN bare: it is still read, and
+    # its NaN is the same value as the string "NaN". The diff in JSON is
+    # strict JSON too.
+    def test_diff_of_plans_holding_nan
+      root = nan_app
+      out, = run_cli('plan', '--app', root, '--format', 'json')
+      old = File.join(root, 'old.json')
+      File.write(old, out.sub('"NaN"', 'NaN').sub('"-Infinity"', '-Infinity'))
+      diff, err, status = run_cli('plan', '--app', root, '--diff', old)
+      assert_equal [0, "the plans are the same\n"], [status, diff.lines.last], err
+      File.write(File.join(root, 'config/orogen/imu::Task.yml'), "--- name:default\nrate: 50\nbias: 0.5\n")
+      diff, err, status = run_cli('plan', '--app', root, '--diff', old, '--format', 'json')
+      assert_equal 0, status, err
+      change = JSON.parse(diff)['lists']['tasks']['changed'].first['changes'].first
+      assert_equal({ 'path' => %w[properties bias], 'old' => 'NaN', 'new' => 0.5 }, change)
+    end
+
+    # Every JSON output of the gem goes through Render::JSON.pretty.
+    def test_json_documents_are_strict_json_with_special_floats
+      data = { 'a' => [1.5, Float::NAN, { 'b' => -Float::INFINITY }], 'c' => Float::INFINITY, 'd' => 'NaN' }
+      text = Render::JSON.pretty(data)
+      assert_equal({ 'a' => [1.5, 'NaN', { 'b' => '-Infinity' }], 'c' => 'Infinity', 'd' => 'NaN' }, JSON.parse(text))
+      assert_equal "#{JSON.pretty_generate('a' => [1, 2])}\n", Render::JSON.pretty('a' => [1, 2])
     end
 
     def test_json_has_the_keys_of_the_spec

@@ -151,8 +151,8 @@ module Syskit
 
       def print_report(report)
         if options[:format] == 'json'
-          require_once 'json'
-          puts ::JSON.pretty_generate(report.to_h)
+          require_once 'syskit/render/json'
+          $stdout.write(::Syskit::Render::JSON.pretty(report.to_h))
         else
           require_once 'syskit/bus/report_text'
           $stdout.write(::Syskit::Bus::ReportText.render(report))

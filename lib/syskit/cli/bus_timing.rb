@@ -26,8 +26,8 @@ module Syskit
       # The result as the JSON document or the table.
       def render(result, bus, profile, format)
         if format == 'json'
-          require 'json'
-          ::JSON.pretty_generate(result.to_h(bus.name))
+          require 'syskit/render/json'
+          ::Syskit::Render::JSON.pretty(result.to_h(bus.name))
         else
           CAN::Timing::Table.render(result, "Bus #{bus.name} of #{profile.name}")
         end

@@ -52,10 +52,10 @@ module Syskit
     end
 
     def print_check_json(app, report)
-      require_once 'json'
-      puts ::JSON.pretty_generate('app' => app.name, 'errors' => report.errors.size,
-                                  'warnings' => report.warnings.size,
-                                  'problems' => report.problems.map { |p| p.to_h(app.root) })
+      require_once 'syskit/render/json'
+      $stdout.write(Render::JSON.pretty('app' => app.name, 'errors' => report.errors.size,
+                                        'warnings' => report.warnings.size,
+                                        'problems' => report.problems.map { |p| p.to_h(app.root) }))
     end
   end
 end

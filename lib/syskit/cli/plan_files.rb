@@ -40,14 +40,14 @@ module Syskit
 
       # The plain data of a generated plan, as a plan file holds it.
       def plain(plan)
-        ::JSON.parse(Render::JSON.render(plan), allow_nan: true)
+        ::JSON.parse(Render::JSON.render(plan))
       end
 
       # The diff of +old+ and +new+ (plan documents) in +format+.
       def render(old, new, format, old_name:, new_name:)
         diff = Network::PlanDiff.new(old, new)
         text = if format == 'json'
-                 "#{::JSON.pretty_generate(diff.to_h, allow_nan: true)}\n"
+                 Render::JSON.pretty(diff.to_h)
                else
                  Render::DiffText.render(diff, old_name: old_name, new_name: new_name)
                end

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/render/json'
+
 module Syskit
   module Network
     # What changed between two plans, given as the plain data of their JSON
@@ -116,12 +118,19 @@ module Syskit
       end
 
       # Equal as plan values: NaN (an unknown value, as Rock writes it) is
-      # the same as NaN, where Ruby's == says no.
+      # the same as NaN, where Ruby's == says no, and the same as the
+      # string "NaN" that plan files write for it (older files wrote a
+      # bare NaN); likewise the infinities.
       def same?(old, new)
         return true if old == new
-        return old.nan? && new.nan? if old.is_a?(Float) && new.is_a?(Float)
+        return plan_float(old) == plan_float(new) if old.is_a?(Float) || new.is_a?(Float)
 
         same_items?(old, new)
+      end
+
+      # A special float as a plan file writes it, anything else as is.
+      def plan_float(value)
+        value.is_a?(Float) && !value.finite? ? Render::JSON.special_float(value) : value
       end
 
       # Lists and hashes holding NaN, item by item.

@@ -42,6 +42,23 @@ module Syskit
         assert_equal 1, out.scan("has no property 'rat'").size, out
       end
 
+      # Past the first SHOWN unknown properties of a file, one line says
+      # how many more there are, at the line of the first of them: the
+      # report stays readable, and the check linear (rake bench measures
+      # its growth).
+      def test_many_unknown_properties_are_counted_past_the_first
+        keys = 8.times.map { |i| "a#{i}: 1\n" }.join
+        more = 7.times.map { |i| "b#{i}: 1\n" }.join
+        out, _, status = check("--- name:default\n#{keys}rate: 5\n--- name:spare\n#{more}")
+        assert_equal 1, status
+        assert_equal 10, out.scan('has no property').size, out
+        assert_includes out, "imu::Task.yml:13: imu::Task has no property 'b1' (section 'spare' of imu::Task.yml)\n"
+        assert_includes out, 'config/orogen/imu::Task.yml:14: 5 more properties that imu::Task does not have in ' \
+                             "imu::Task.yml ('b2', 'b3', 'b4', ...; the first 10 are listed one by one)\n  " \
+                             "hint: its properties are device, rate\n"
+        assert_match(/^MyApp: 11 error\(s\)/, out)
+      end
+
       def test_a_file_whose_sections_all_fit_passes
         out, _, status = check("--- name:default\nrate: 50\n--- name:spare\ndevice: /dev/ttyS1\n")
         assert_equal 0, status, out

@@ -32,7 +32,13 @@ module Syskit
 
       # One section: its values, the file and line of its header (0 for a
       # 'default' section without one: its text starts at line 1), its text.
-      Section = Struct.new(:name, :settings, :line, :text, :path)
+      Section = Struct.new(:name, :settings, :line, :text, :path) do
+        # The offset in the text of the line setting +key+, when it is
+        # found by ConfFile.key_lines (made once, when first asked).
+        def key_line(key)
+          (@key_lines ||= ConfFile.key_lines(text))[key]
+        end
+      end
 
       attr_reader :path, :sections
 
@@ -92,8 +98,23 @@ module Syskit
         section = section_of(key, names)
         return Location.new(path, 1) unless section
 
-        offset = section.text.lines.index { |l| l.match?(/^#{Regexp.escape(key.to_s)}\s*:/) }
+        offset = section.key_line(key.to_s) ||
+                 section.text.lines.index { |l| l.match?(/^#{Regexp.escape(key.to_s)}\s*:/) }
         Location.new(section.path, section.line + 1 + offset.to_i)
+      end
+
+      # The offset of the first line of +text+ that sets each top-level key
+      # ("key: value", the key up to its first colon): a section with N
+      # problems is then located in one pass over its lines, where looking
+      # for each key in turn made `syskit check` quadratic. A key with a
+      # colon in it is looked for in the text (#location_of).
+      def self.key_lines(text)
+        keys = {}
+        text.each_line.with_index do |line, offset|
+          key = line[/\A([^\s#:][^:]*?)\s*:/, 1]
+          keys[key] ||= offset if key
+        end
+        keys
       end
 
       # The section among +names+ whose value of +key+ is the one applied.

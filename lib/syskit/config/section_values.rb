@@ -36,18 +36,55 @@ module Syskit
         end
       end
 
+      # Unknown properties of one file reported in full; the others are
+      # counted in one more error (see #more_unknown).
+      SHOWN = 10
+
       # The problems of each section of +file+ set alone on a fresh
-      # +properties+ of +task_model+, in the order of the file.
+      # +properties+ of +task_model+: the values of known properties in the
+      # order of the file, then its unknown properties, the first SHOWN of
+      # them each in full. Unknown keys are found by a lookup, not by
+      # raising: a file with 200,000 of them is checked in linear time.
       def problems(file, task_model)
-        file.sections.each_value.flat_map do |section|
+        unknown = []
+        found = file.sections.each_value.flat_map do |section|
           properties = task_model.properties_class.initial
           section.settings.filter_map do |key, value|
-            apply(properties, file, [section.name], key, value)
+            if properties.include?(key)
+              apply(properties, file, [section.name], key, value)
+            else
+              unknown << [section.name, key]
+            end
             nil
           rescue ConfigurationError => e
             e
           end
         end
+        found + unknown_properties(file, task_model, unknown)
+      end
+
+      # The errors of +unknown+ ([section name, key] pairs, in the order of
+      # the file).
+      def unknown_properties(file, task_model, unknown)
+        properties = task_model.properties_class.initial
+        shown = unknown.first(SHOWN).map do |name, key|
+          unknown_property(properties, file, [name], key).at(file.location_of(key, [name]))
+        end
+        rest = unknown.drop(SHOWN)
+        rest.empty? ? shown : shown << more_unknown(properties, file, rest)
+      end
+
+      # One error for the unknown properties of a file past the first
+      # SHOWN, at the line of the first of them, saying how many there are.
+      def more_unknown(properties, file, rest)
+        name, key = rest.first
+        keys = rest.first(3).map { |_, k| "'#{k}'" }.join(', ')
+        ConfigurationError.new(
+          "#{rest.size} more #{rest.size == 1 ? 'property' : 'properties'} that " \
+          "#{properties.class.task_model.name} does not have in #{File.basename(file.path)} " \
+          "(#{keys}#{', ...' if rest.size > 3}; the first #{SHOWN} are listed one by one)",
+          location: file.location_of(key, [name]), hint: unknown_hint(properties.names)
+        )
       end
 
       def unknown_property(properties, file, names, key)
@@ -56,8 +93,12 @@ module Syskit
         ConfigurationError.new(
           "#{properties.class.task_model.name} has no property '#{key}'#{Naming.did_you_mean(key, known)} " \
           "(section '#{section}' of #{File.basename(file.path)})",
-          location: nil, hint: "its properties are #{known.sort.join(', ').then { |s| s.empty? ? '(none)' : s }}"
+          location: nil, hint: unknown_hint(known)
         )
+      end
+
+      def unknown_hint(known)
+        "its properties are #{known.sort.join(', ').then { |s| s.empty? ? '(none)' : s }}"
       end
 
       # A symbol in a configuration file (deviceType: :SOCKET) is an enum

@@ -224,5 +224,24 @@ module Syskit
       load_spec("name 'broken'\nfoo\n", name: 'broken')
       assert_raises(SpecError) { Syskit.app.using_task_library('broken') }
     end
+
+    # One cause, one error: a file that fails after a valid deployment is
+    # loaded again when something asks for it, and its deployment was
+    # "already declared" at its own line.
+    def test_a_failed_spec_does_not_keep_its_deployments
+      spec = "name 'cams'\ntask_context 'Task' do\nend\ndeployment 'cams' do\n  task 'cam', 'cams::Task'\nend\n" \
+             "simple_deployment 'cam_simple', 'cams::Nope'\n"
+      root = my_app("device(Devices::IMU, as: 'imu')\n", 'models/orogen/cams.orogen' => spec,
+                    'config/robots/default.rb' => "using_task_library 'cams'\nSyskit.conf.use_deployment 'cams'\n")
+      out, _, status = run_cli('check', '--app', root)
+      assert_equal 1, status
+      assert_equal "models/orogen/cams.orogen:7: unknown task model 'cams::Nope' (did you mean 'cams::Task'?)",
+                   out.lines.first.chomp
+      assert_match(/\A  hint: the task models known here are cams::Task, /, out.lines[1])
+      refute_includes out, 'already declared'
+      out, err, status = run_cli('plan', '--app', root, '--format', 'json')
+      assert_equal [1, ''], [status, out]
+      refute_includes err, 'already declared'
+    end
   end
 end

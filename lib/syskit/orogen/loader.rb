@@ -62,6 +62,7 @@ module Syskit
         @loading.push(name)
         begin
           SpecLoader.new(@app, library).load
+          publish_deployments(library)
         rescue Exception # rubocop:disable Lint/RescueException -- undo, then re-raise as is
           @libraries.delete(name)
           raise
@@ -103,14 +104,30 @@ module Syskit
         @driver_index = Robot::DriverIndex.new(self)
       end
 
+      # A deployment of +library+, which is still loading: kept with the
+      # library, and in the app's table only once the whole file has loaded
+      # (#publish_deployments). A file that fails is loaded again when
+      # something asks for it: a deployment recorded before that failure
+      # made it "already declared" at its own line.
       def register_deployment(library, deployment)
-        if (existing = @deployments[deployment.name])
-          raise SpecError.new("deployment '#{deployment.name}' is already declared at #{existing.declared_at}",
-                              location: deployment.declared_at, hint: 'deployment names are unique in an app')
-        end
+        existing = @deployments[deployment.name] || library.deployments[deployment.name]
+        raise duplicate_deployment(deployment, existing) if existing
 
         library.deployments[deployment.name] = deployment
-        @deployments[deployment.name] = deployment
+      end
+
+      # The deployments of +library+, loaded, into the app's table.
+      def publish_deployments(library)
+        library.deployments.each_value do |deployment|
+          existing = @deployments[deployment.name]
+          raise duplicate_deployment(deployment, existing) if existing
+        end
+        @deployments.update(library.deployments)
+      end
+
+      def duplicate_deployment(deployment, existing)
+        SpecError.new("deployment '#{deployment.name}' is already declared at #{existing.declared_at}",
+                      location: deployment.declared_at, hint: 'deployment names are unique in an app')
       end
 
       def find_deployment(name)

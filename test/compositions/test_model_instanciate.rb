@@ -107,6 +107,22 @@ module Syskit
       assert_equal({ 'pose' => ['pose'], 'follower' => [] }, used.transform_values(&:to_a))
     end
 
+    def test_a_composition_has_readers_of_its_exported_ports
+      model = watch_model
+      model.export model.follower_child.command_port
+      cmp = model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
+      assert_equal cmp.follower_child.command_port, cmp.command_port
+    end
+
+    # Roby's +Model.as_plan+: a task to be planned, holding the model's
+    # requirements.
+    def test_a_component_model_as_plan_is_a_task_to_be_planned
+      task = OroGen.rig.Follower.as_plan(speed: 2)
+      assert_kind_of OroGen.rig.Follower, task
+      assert_equal({ speed: 2 }, task.arguments)
+      assert_equal OroGen.rig.Follower.with_arguments(speed: 2), task.planning_task.requirements
+    end
+
     def test_a_child_removed_from_the_task_is_no_required_child
       cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
       cmp.remove_dependency(cmp.pose_child)

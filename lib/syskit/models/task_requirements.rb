@@ -20,6 +20,12 @@ module Syskit
         to_instance_requirements.instanciate(plan, context, **options)
       end
 
+      # A task of the model standing for it in a plan, to be planned
+      # (Roby's +Model.as_plan+): see InstanceRequirements#as_plan.
+      def as_plan(**arguments)
+        to_instance_requirements.as_plan(**arguments)
+      end
+
       # The model (a component or service model, or a component model's
       # service) as requirements (see InstanceRequirements).
       def to_instance_requirements

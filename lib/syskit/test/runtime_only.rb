@@ -41,11 +41,20 @@ module Syskit
       end
 
       # Methods of Roby's plan that need it running (the plan of Syskit's
-      # harness holds tasks as data, see Test::Plan): each skips.
-      PLAN_METHODS = %i[execution_engine in_transaction].freeze
+      # harness holds tasks as data, see Test::Plan), or its relation
+      # graphs, which Roby's engine keeps: each skips.
+      PLAN_METHODS = %i[execution_engine in_transaction task_relation_graph_for].freeze
 
       PLAN_METHODS.each do |name|
         Plan.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "plan.#{name} #{REASON}" }
+      end
+
+      # Methods of a task's port that read or write its data on a running
+      # component (Syskit's OutputReader and InputWriter): each skips.
+      PORT_METHODS = %i[reader writer].freeze
+
+      PORT_METHODS.each do |name|
+        Syskit::Port.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "port.#{name} #{REASON}" }
       end
 
       # Test helpers of Syskit about what this gem does not model (Roby's

@@ -123,6 +123,29 @@ module Syskit
       assert_equal OroGen.rig.Follower.with_arguments(speed: 2), task.planning_task.requirements
     end
 
+    # As Roby's plan.replace: the new task takes the child's roles, and
+    # the composition's connections map onto its ports.
+    def test_a_child_replaced_in_the_plan_takes_its_connections
+      model = watch_model
+      model.pose_child.pose_port.connect_to model.follower_child.pose_port
+      cmp = model.instanciate(@plan)
+      placeholder = cmp.pose_child
+      sink = cmp.follower_child.pose_port
+      assert placeholder.pose_port.connected_to?(sink)
+      gps = @plan.replace(placeholder, OroGen.rig.GPSDriver.new)
+      assert_equal [gps, true, false], [cmp.pose_child, sink.connected_to?(gps.position_port),
+                                        placeholder.pose_port.connected_to?(sink)]
+      assert @plan.include?(placeholder)
+    end
+
+    def test_a_task_replaced_leaves_the_plan
+      cmp = watch_model.instanciate(@plan)
+      placeholder = cmp.pose_child
+      gps = @plan.replace_task(placeholder, OroGen.rig.GPSDriver.new)
+      assert_same gps, cmp.pose_child
+      refute @plan.include?(placeholder)
+    end
+
     def test_a_child_removed_from_the_task_is_no_required_child
       cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
       cmp.remove_dependency(cmp.pose_child)

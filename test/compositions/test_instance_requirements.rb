@@ -146,6 +146,7 @@ module Syskit
       on_service = InstanceRequirements.new([task.fix_srv])
       assert_same on_service, on_service.pose_port.component_model
       assert_equal Models::OutputPort.new(on_service, task.out_port.orogen_model, 'pose'), on_service.pose_port
+      assert_equal on_service.to_component_model.out_port, on_service.pose_port.to_component_port
     end
 
     # Merging two requirements, binding a task to requirements.
@@ -244,7 +245,8 @@ module Syskit
       assert_equal ['nav'], cmp.to_instance_requirements.each_child.map(&:first)
       assert_raises(ArgumentError) { task.to_instance_requirements.find_child('nav') }
       assert_nil InstanceRequirements.new([task.fix_srv]).to_component_model.service
-      assert_same task.find_port('out'), task.to_instance_requirements.out_port.to_component_port
+      requirements = task.to_instance_requirements
+      assert_equal requirements.out_port, requirements.out_port.to_component_port
       refute_nil pose
     end
 

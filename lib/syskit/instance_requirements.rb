@@ -237,16 +237,18 @@ module Syskit
 
     # Syskit's +instanciate+: the task these requirements stand for, its
     # children selected in +context+ (a DependencyInjectionContext), added
-    # to +plan+ with them (see Network::Instantiate.into_plan).
-    # +task_arguments+ are the root task's arguments (+conf:+ its
-    # sections); +specialization_hints+ the specializations to prefer.
+    # to +plan+ with them (see Network::Instantiate.into_plan); with a
+    # service selected, that service of the task (a Syskit::BoundDataService,
+    # as Syskit's). +task_arguments+ are the root task's arguments (+conf:+
+    # its sections); +specialization_hints+ the specializations to prefer.
     def instanciate(plan, context = DependencyInjectionContext::EMPTY, task_arguments: {}, specialization_hints: [])
       arguments = task_arguments.dup
       conf = Array(arguments.delete(:conf))
       requirements = dup.with_arguments(**arguments)
       requirements = requirements.with_conf(*conf) unless conf.empty?
       requirements = requirements.prefer_specializations(specialization_hints) unless specialization_hints.empty?
-      Network::Instantiate.into_plan(plan, requirements, context)
+      task = Network::Instantiate.into_plan(plan, requirements, context)
+      service ? service.bind(task) : task
     end
 
     # An action by its name (+Base.drive_def+, +gps_dev+), else the model

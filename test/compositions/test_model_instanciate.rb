@@ -146,6 +146,18 @@ module Syskit
       refute @plan.include?(placeholder)
     end
 
+    # As Syskit's: requirements with a service selected instanciate into
+    # that service of the task; a placeholder's service may be selected
+    # on requirements of its service models.
+    def test_requirements_on_a_service_instanciate_into_the_service_of_the_task
+      bound = OroGen.rig.Tracker.rear_pose_srv.to_instance_requirements.instanciate(@plan)
+      assert_equal [OroGen.rig.Tracker.rear_pose_srv, OroGen.rig.Tracker], [bound.model, bound.component.model]
+      placeholder_srv = Rig::Services::Pose.placeholder_model.find_data_service_from_type(Rig::Services::Pose)
+      requirements = InstanceRequirements.new([Rig::Services::Pose]).select_service(placeholder_srv)
+      assert_equal placeholder_srv, requirements.service
+      assert_equal placeholder_srv, requirements.instanciate(@plan).model
+    end
+
     def test_a_child_removed_from_the_task_is_no_required_child
       cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
       cmp.remove_dependency(cmp.pose_child)

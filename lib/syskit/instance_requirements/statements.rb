@@ -122,7 +122,8 @@ module Syskit
         with_conf(*names, location: Location.of_caller)
       end
 
-      # These requirements with +srv+, a service of their component model,
+      # These requirements with +srv+, a service of their component model
+      # (of the placeholder standing for their models when they have none),
       # selected (as +x_srv+ does).
       def select_service(srv)
         if srv.is_a?(InstanceRequirements)
@@ -130,7 +131,7 @@ module Syskit
           arguments = srv.arguments
           srv = srv.service
         end
-        model = component_model
+        model = component_model || proxy_model
         unless srv.is_a?(Models::BoundDataService) && model.is_a?(Class) && model <= srv.task_model
           shown = srv.respond_to?(:task_model) ? srv : Arguments.shown(srv)
           raise DeclarationError.new("#{shown} is not a service of #{self}",

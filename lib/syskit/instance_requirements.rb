@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/fullfillment'
+require 'syskit/network_generation/port_dynamics'
 require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
 require 'syskit/instance_requirements/combination'
@@ -31,15 +32,17 @@ module Syskit
 
     NO_ARGUMENTS = {}.freeze
     NO_HINTS = [].freeze
+    NO_PORT_DYNAMICS = {}.freeze
     DEFAULT_CONF = ['default'].freeze
     FIELDS = %i[models device service profile name arguments conf conf_location deployment_hints deployment
-                selections specialization_hints declared_at instance abstract doc].freeze
+                selections specialization_hints declared_at instance abstract doc port_dynamics].freeze
 
     # +instance+: a task of the network being generated, when these
     # requirements select it (a composition's child given to another);
-    # +conf_location+: where the sections were chosen (with_conf).
+    # +conf_location+: where the sections were chosen (with_conf);
+    # +port_dynamics+: what add_port_period said, by port name.
     attr_reader :device, :service, :profile, :name, :arguments, :deployment, :selections,
-                :specialization_hints, :declared_at, :instance, :conf_location, :doc
+                :specialization_hints, :declared_at, :instance, :conf_location, :doc, :port_dynamics
 
     # What stands for requirements besides models and lists of them (see
     # .from): requirements, a model's service, a device, a tag, a
@@ -92,7 +95,7 @@ module Syskit
     def initialize(models = nil, device: nil, service: nil, profile: nil, name: nil, arguments: NO_ARGUMENTS,
                    conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil,
                    selections: DependencyInjection::EMPTY, specialization_hints: NO_HINTS, declared_at: nil,
-                   instance: nil, abstract: false, doc: nil, open: false)
+                   instance: nil, abstract: false, doc: nil, open: false, port_dynamics: NO_PORT_DYNAMICS)
       bound = models&.grep(Models::BoundDataService)&.first
       @models = InstanceRequirements.without_service(models, bound)
       @device = device
@@ -110,6 +113,7 @@ module Syskit
       @instance = instance
       @abstract = abstract
       @doc = doc
+      @port_dynamics = port_dynamics
       @open = open
       extend_readers
     end
@@ -279,7 +283,8 @@ module Syskit
         deployment_hints: other.raw_hints || @deployment_hints,
         deployment: other.deployment || deployment, selections: merged_selections(other),
         specialization_hints: specialization_hints + other.specialization_hints,
-        declared_at: other.declared_at || declared_at, instance: other.instance
+        declared_at: other.declared_at || declared_at, instance: other.instance,
+        port_dynamics: port_dynamics.merge(other.port_dynamics)
       )
     end
 

@@ -149,6 +149,20 @@ module Syskit
       assert_equal on_service.to_component_model.out_port, on_service.pose_port.to_component_port
     end
 
+    # Syskit's add_port_period: how often a port gets data, kept with the
+    # requirements (and what they are merged with).
+    def test_port_periods_are_kept_with_the_requirements
+      _, task = pose_and_task
+      requirements = task.to_instance_requirements.add_port_period('out', 0.1).add_port_period(:out, 0.5, 2)
+      trigger = NetworkGeneration::PortDynamics::Trigger
+      assert_equal [trigger.new('period', 0.1, 1), trigger.new('period', 0.5, 2)],
+                   requirements.find_port_dynamics('out').triggers.to_a
+      assert_nil task.to_instance_requirements.find_port_dynamics('out')
+      assert_equal requirements.find_port_dynamics('out'),
+                   task.to_instance_requirements.merge(requirements).find_port_dynamics('out')
+      refute_equal requirements, task.to_instance_requirements
+    end
+
     # Merging two requirements, binding a task to requirements.
     def test_merge_and_bind
       pose, task = pose_and_task

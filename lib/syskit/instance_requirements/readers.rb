@@ -82,6 +82,12 @@ module Syskit
         mapped.class.new(to_component_model, mapped.orogen_port, mapped.name)
       end
 
+      # What add_port_period said of the port +name+ (a
+      # NetworkGeneration::PortDynamics), nil when nothing was.
+      def find_port_dynamics(name)
+        port_dynamics[name.to_s]
+      end
+
       # These requirements with the service +name+ of the component model
       # selected (nil when it has none).
       def find_data_service(name)

@@ -106,6 +106,16 @@ module Syskit
         end
       end
 
+      # Says that the port +port_name+ gets +sample_count+ samples every
+      # +period+ seconds (Syskit's +add_port_period+; see
+      # #find_port_dynamics).
+      def add_port_period(port_name, period, sample_count = 1)
+        port_name = port_name.to_s
+        dynamics = port_dynamics[port_name]&.dup || NetworkGeneration::PortDynamics.new(port_name)
+        dynamics.add_trigger('period', period, sample_count)
+        change(port_dynamics: port_dynamics.merge(port_name => dynamics.freeze))
+      end
+
       # The same requirements, marked abstract: what fills them must still
       # be chosen (Syskit's +abstract+).
       def abstract

@@ -53,8 +53,6 @@ module Syskit
         'NetworkGeneration::MergeSolver' => INTERNAL,
         'NetworkGeneration::SystemNetworkDeployer' => INTERNAL,
         'NetworkGeneration::SystemNetworkGenerator' => INTERNAL,
-        'NetworkGeneration::PortDynamics' => INTERNAL,
-        'NetworkGeneration::PortDynamics::Trigger' => INTERNAL,
         'NetworkGeneration::DataFlowDynamics' => INTERNAL
       }.freeze
 

@@ -233,7 +233,7 @@ module Syskit
     def as(models)
       if service
         service.as(models)
-        return copy(service: component_model.find_service(service.full_name) || service)
+        return copy(service: component_model&.find_service(service.full_name) || service)
       end
 
       Models::FacetedAccess.new(self, Models::Placeholder.for(Array(models)))

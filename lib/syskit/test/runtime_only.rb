@@ -48,6 +48,17 @@ module Syskit
         Plan.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "plan.#{name} #{REASON}" }
       end
 
+      # Methods of Syskit's components that need them running (setting up,
+      # Roby's explicit fullfilled model of a task being planned): each
+      # skips.
+      COMPONENT_METHODS = %i[ready_for_setup? setup fullfilled_model=].freeze
+
+      COMPONENT_METHODS.each do |name|
+        next if Component.method_defined?(name)
+
+        Component.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "task.#{name} #{REASON}" }
+      end
+
       # Test helpers of Syskit about what this gem does not model (Roby's
       # plans): the test is skipped, saying so.
       NOT_MODELLED_HELPERS = %i[syskit_stub_requirements syskit_generate_network].freeze

@@ -43,6 +43,12 @@ module Syskit
       # syskit_stub_and_deploy). Not in Syskit's own harness, whose tests
       # name their tasks with +let(:task)+.
       attr_reader :task
+
+      # What Ruby shows of a test in a NameError's message: its name, not
+      # every stub and plan it holds.
+      def inspect
+        "#<#{self.class.name} #{name}>"
+      end
     end
 
     # Syskit's test base classes, for tests written as classes

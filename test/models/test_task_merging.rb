@@ -70,6 +70,16 @@ module Syskit
       assert_equal default, bare.arguments.values[:exposure]
     end
 
+    def test_each_assigned_argument_lists_only_the_arguments_that_are_set
+      default = Compat::Roby::DefaultArgument.new(7)
+      task_m = TaskContext.new_submodel(name: 'Lidar') do
+        argument :range
+        argument :rate
+      end
+      task = task_m.new(range: default, rate: 10)
+      assert_equal [[:rate, 10]], task.arguments.each_assigned_argument.to_a
+    end
+
     def test_a_default_argument_gives_way_to_what_the_task_has
       default = Compat::Roby::DefaultArgument.new(7)
       own_default = Compat::Roby::DefaultArgument.new(8)
@@ -101,6 +111,18 @@ module Syskit
       assert_equal [1, 5], [short.exposure, long.exposure]
       refute short.can_merge?(long)
       assert long.can_merge?(other)
+    end
+
+    def test_tasks_bound_to_different_hosts_do_not_merge
+      left = @task_m.new
+      right = @task_m.new
+      left.required_host = 'host'
+      assert left.can_merge?(right)
+      assert right.can_merge?(left)
+      right.required_host = 'other'
+      refute left.can_merge?(right)
+      right.required_host = 'host'
+      assert left.can_merge?(right)
     end
   end
 end

@@ -181,5 +181,14 @@ module Syskit
       task = model.new
       assert_equal [srv.bind(task)], task.each_required_dynamic_service
     end
+
+    def test_a_model_as_plan_is_a_task_standing_for_its_requirements
+      model = Component.new_submodel { argument :speed }
+      task = model.as_plan(speed: 2)
+      assert_kind_of model, task
+      assert_equal 2, task.speed
+      assert_equal model.to_instance_requirements.with_arguments(speed: 2), task.requirements
+      assert task.planning_task
+    end
   end
 end

@@ -59,6 +59,15 @@ module Syskit
         Component.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "task.#{name} #{REASON}" }
       end
 
+      # Methods of a task's ports that read or write its data: each skips.
+      PORT_METHODS = %i[reader writer].freeze
+
+      PORT_METHODS.each do |name|
+        next if Port.method_defined?(name)
+
+        Port.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "port.#{name} #{REASON}" }
+      end
+
       # Test helpers of Syskit about what this gem does not model (Roby's
       # plans): the test is skipped, saying so.
       NOT_MODELLED_HELPERS = %i[syskit_stub_requirements syskit_generate_network].freeze

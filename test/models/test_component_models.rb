@@ -95,6 +95,18 @@ module Syskit
       refute task.dynamic_service(srv, as: 'live', dynamic: true) { provides srv }.addition_requires_reconfiguration?
     end
 
+    def test_the_dynamic_option_of_a_dynamic_service_is_deprecated
+      srv = DataService.new_submodel
+      task = TaskContext.new_submodel
+      level = ENV.fetch('SYSKIT_LOG', nil)
+      ENV['SYSKIT_LOG'] = 'debug'
+      _, err = capture_io { task.dynamic_service(srv, as: 'live', dynamic: true) { provides srv } }
+      assert_match(/dynamic: of dynamic_service is deprecated, write addition_requires_reconfiguration: false/, err)
+      assert_empty capture_io { task.dynamic_service(srv, as: 'plain') { provides srv } }[1]
+    ensure
+      ENV['SYSKIT_LOG'] = level
+    end
+
     def test_a_ruby_task_model_declares_dynamic_ports_its_dynamic_services_create
       double = Types::OpaqueType.new('/double')
       srv = DataService.new_submodel { output_port 'out', double }

@@ -202,5 +202,15 @@ module Syskit
       assert_equal model.to_instance_requirements.with_arguments(speed: 2), task.requirements
       assert task.planning_task
     end
+
+    def test_a_dynamic_service_block_that_provides_nothing_is_an_invalid_block
+      srv = DataService.new_submodel
+      task = TaskContext.new_submodel
+      dynamic = task.dynamic_service(srv, as: 'dyn') { nil }
+      error = assert_raises(InvalidDynamicServiceBlock) { dynamic.instanciate('one') }
+      assert_match(/the block of dynamic service 'dyn' of .* provides nothing for 'one'/, error.message)
+      assert_equal [File.expand_path(__FILE__), __LINE__ - 3], [error.location.path, error.location.lineno]
+      assert_match(/call provides/, error.hint)
+    end
   end
 end

@@ -212,5 +212,18 @@ module Syskit
       assert_equal [File.expand_path(__FILE__), __LINE__ - 3], [error.location.path, error.location.lineno]
       assert_match(/call provides/, error.hint)
     end
+
+    def test_compute_port_mappings_binds_a_service_as_provides_would
+      double = Types::OpaqueType.new('/double')
+      srv = DataService.new_submodel { output_port 'pose', double }
+      task = TaskContext.new_submodel do
+        output_port 'a', double
+        output_port 'b', double
+      end
+      assert_equal({ 'pose' => 'b' }, task.compute_port_mappings(srv, 'pose' => 'b'))
+      error = assert_raises(InvalidPortMapping) { task.compute_port_mappings(srv) }
+      assert_equal File.expand_path(__FILE__), error.location.path
+      assert_nil task.find_data_service('pose'), 'nothing declared'
+    end
   end
 end

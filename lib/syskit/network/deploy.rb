@@ -22,6 +22,10 @@ module Syskit
         used = {}.compare_by_identity
         stub = @context.stub_deployments
         @context.tasks.each do |task|
+          # Only task contexts run in a deployment (a plain
+          # Syskit::Component has none, as in Syskit).
+          next unless task.is_a?(TaskContext)
+
           requirement = task.requirements
           declared = declared(task, requirement.declared_deployment) unless stub
           deployed = declared || (stub ? stub_deployment(task) : choose(task, requirement))

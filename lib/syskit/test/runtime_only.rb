@@ -49,12 +49,24 @@ module Syskit
         Plan.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "plan.#{name} #{REASON}" }
       end
 
-      # Methods of a task's port that read or write its data on a running
-      # component (Syskit's OutputReader and InputWriter): each skips.
+      # Methods of Syskit's components that need them running (setting up,
+      # Roby's explicit fullfilled model of a task being planned): each
+      # skips.
+      COMPONENT_METHODS = %i[ready_for_setup? setup fullfilled_model=].freeze
+
+      COMPONENT_METHODS.each do |name|
+        next if Component.method_defined?(name)
+
+        Component.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "task.#{name} #{REASON}" }
+      end
+
+      # Methods of a task's ports that read or write its data: each skips.
       PORT_METHODS = %i[reader writer].freeze
 
       PORT_METHODS.each do |name|
-        Syskit::Port.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "port.#{name} #{REASON}" }
+        next if Port.method_defined?(name)
+
+        Port.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "port.#{name} #{REASON}" }
       end
 
       # Test helpers of Syskit about what this gem does not model (Roby's

@@ -159,6 +159,13 @@ module Syskit
         @worstcase_processing_time = seconds
       end
 
+      # The sections of configuration of the model, from the app's
+      # configuration files (App#configuration_manager): those of the
+      # concrete model for a specialization.
+      def configuration_manager
+        Syskit.app.configuration_manager(concrete_model)
+      end
+
       # The class of this model's +properties+ objects.
       def properties_class
         @properties_class ||= Properties.for(self)

@@ -48,6 +48,16 @@ module Syskit
         Plan.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "plan.#{name} #{REASON}" }
       end
 
+      # Methods of Syskit's tasks about a running component (whether it is
+      # configured, must be reconfigured, may be reused, the property
+      # values written to it): each skips.
+      TASK_METHODS = %i[can_be_deployed_by? reusable? needs_reconfiguration? property_overrides
+                        clear_property_overrides].freeze
+
+      TASK_METHODS.each do |name|
+        TaskContext.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "task.#{name} #{REASON}" }
+      end
+
       # Test helpers of Syskit about what this gem does not model (Roby's
       # plans): the test is skipped, saying so.
       NOT_MODELLED_HELPERS = %i[syskit_stub_requirements syskit_generate_network].freeze

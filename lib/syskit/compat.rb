@@ -180,6 +180,10 @@ module Syskit
     Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
     not_modelled_class(Roby, :Task, 'Roby task')
+    # +Roby::Task.from(:parent_task).x+, a child's argument taken from its
+    # composition, is modelled as the composition's own +from+ is (see
+    # TaskStatements#from).
+    Roby::Task.define_singleton_method(:from) { |object| DelayedArgument.new(object) }
     # Roby's task library (Roby::Tasks::Simple, ...).
     Roby.const_set(:Tasks, Module.new)
     %i[Simple Timeout Virtual Group Parallel Sequence ExternalProcess Thread].each do |name|

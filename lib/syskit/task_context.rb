@@ -2,6 +2,7 @@
 
 require 'syskit/models/task_context'
 require 'syskit/properties'
+require 'syskit/task_connections'
 require 'syskit/task_properties'
 
 module Syskit
@@ -13,6 +14,7 @@ module Syskit
   # users override in extension files (calling +super+ first).
   class TaskContext < Component
     extend Models::TaskContext
+    include TaskConnections
     include TaskProperties
 
     # A task model made in Ruby, as Syskit's tests make them (see
@@ -141,9 +143,9 @@ module Syskit
     # specialization's, see Models::DynamicServices#require_dynamic_service)
     # and its devices' slaves declared from one.
     def each_required_dynamic_service(&block)
-      return enum_for(__method__) unless block
+      return enum_for(__method__).to_a unless block
 
-      model.required_dynamic_services.each { |srv| yield srv.bind(self) }
+      super
       devices.each do |device|
         device.each_slave { |slave| yield slave.service.bind(self) if slave.dynamic_service_name && slave.service }
       end

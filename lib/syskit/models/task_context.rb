@@ -117,25 +117,6 @@ module Syskit
         spec ? spec.all_properties : {}
       end
 
-      # Declares that this task drives devices of +model+; the device is given
-      # to the task as its +<as>_dev+ argument. Ports of the device model are
-      # bound by name and type, or by +'device_port' => 'task_port'+ mappings
-      # (keywords or a hash). +slave_of: 'master'+ makes it a slave device
-      # of the master service's device (see Robot::SlaveDeviceInstance).
-      def driver_for(model, mappings = {}, as: nil, slave_of: nil, **more)
-        location = Location.of_caller
-        unless model.is_a?(DeviceModel)
-          hint = if model.is_a?(DataServiceModel) then "#{model} is a data service: use provides #{model}, as: 'name'"
-                 else NotAModel.hint('driver_for', model, location)
-                 end
-          raise DeclarationError.new("driver_for expects a device or bus model, got #{model.inspect}",
-                                     location: location, hint: hint)
-        end
-
-        as ||= Naming.underscore(model.name.to_s.split('::').last)
-        add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
-      end
-
       # Stands for what the real component does at configure time, when
       # the network is generated without it (e.g. creating per-device ports
       # from the property the configure method just set).

@@ -90,6 +90,15 @@ module Syskit
       super
     end
 
+    # The hints choosing its deployed task (see prefer_deployed_tasks): its
+    # requirements', else those of the devices it drives.
+    def deployment_hints
+      own = requirements&.deployment_hints
+      return own if own && !own.empty?
+
+      devices.flat_map(&:deployment_hints).uniq
+    end
+
     # The event emitted when the task enters the state +name+ (see
     # Models::TaskContext#state_events), nil when it has none.
     def state_event(name)

@@ -4,6 +4,7 @@ require 'syskit/models/task_context'
 require 'syskit/properties'
 require 'syskit/task_connections'
 require 'syskit/task_properties'
+require 'syskit/task_event_generator'
 
 module Syskit
   # A task of a network: an instance of a task model (a subclass of this
@@ -263,6 +264,9 @@ module Syskit
     def inspect
       "#<#{self}>"
     end
+
+    # The events of RTT's states, which every task has.
+    define_event_readers
 
     private
 

@@ -25,12 +25,13 @@ module Syskit
         change(arguments: self.arguments.merge(arguments).freeze)
       end
 
-      # Deployed tasks to prefer (names or regexps).
+      # Deployed tasks to prefer (names, regexps, or objects matching names
+      # with ===, see Arguments.deployment_hint?).
       def prefer_deployed_tasks(*hints)
         hints = hints.flatten
-        bad = hints.find { |h| !h.is_a?(String) && !h.is_a?(Regexp) }
-        if bad
-          raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{bad.inspect}",
+        bad = hints.reject { |h| Arguments.deployment_hint?(h) }
+        unless bad.empty?
+          raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{bad.first.inspect}",
                                      location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
         end
 

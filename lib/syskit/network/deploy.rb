@@ -89,7 +89,9 @@ module Syskit
       # are matched against every candidate of the model.
       def preferred(index, hints)
         found = hints.flat_map do |hint|
-          hint.is_a?(Regexp) ? index.list.select { |c| hint.match?(c.name) } : [index.by_name[hint]].compact
+          next [index.by_name[hint]].compact if hint.is_a?(String)
+
+          index.list.select { |c| hint === c.name } # rubocop:disable Style/CaseEquality -- Syskit's matching
         end
         found.size > 1 ? found.uniq.sort_by(&:name) : found
       end

@@ -39,7 +39,6 @@ module Syskit
         'DynamicPortBinding::BoundOutputReader' => RUNTIME,
         'DynamicPortBinding::InputWriter' => RUNTIME,
         'DynamicPortBinding::BoundInputWriter' => RUNTIME,
-        'Property' => RUNTIME,
         'Models::DynamicPortBinding' => RUNTIME,
         'Models::DynamicPortBinding::ValueResolver' => RUNTIME,
         'Models::DeploymentGroup' => RUNTIME,

@@ -32,6 +32,7 @@ module Syskit
         '::Concurrent::IVar' => RUNTIME,
         '::Concurrent::Event' => RUNTIME,
         'Compat::Roby::EventGenerator' => RUNTIME,
+        'Compat::Roby::StateSpace' => RUNTIME,
         'DynamicPortBinding' => RUNTIME,
         'DynamicPortBinding::Accessor' => RUNTIME,
         'DynamicPortBinding::OutputReader' => RUNTIME,

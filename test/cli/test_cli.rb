@@ -70,6 +70,27 @@ module Syskit
                    "MyApp::Profiles::Base (e.g. syskit plan MyApp::Profiles::Base)\n", err
     end
 
+    # The bus tools pick the first profile as plan does: their hint runs
+    # them, not plan.
+    def test_bus_timing_without_a_profile_when_the_first_has_no_device
+      arm = "module MyApp\n  module Profiles\n    profile('Arm') { robot {} }\n  end\nend\n"
+      root = my_app("device MyApp::Devices::IMU, as: 'imu'", 'models/profiles/arm.rb' => arm)
+      _, err, status = run_cli('bus', 'timing', '--app', root)
+      assert_equal 1, status
+      assert_includes err, '(e.g. syskit bus timing MyApp::Profiles::Base)'
+    end
+
+    # A profile with nothing to plan plans, and says so at its declaration.
+    def test_the_plan_of_an_empty_profile_says_it_is_empty
+      root = my_app('', 'models/profiles/base.rb' => "module MyApp\n  module Profiles\n    " \
+                                                     "profile('Base') { robot {} }\n  end\nend\n")
+      out, err, status = run_cli('plan', 'Base', '--app', root)
+      assert_equal 0, status, err
+      assert_match(/^Tasks \(0\)$/, out)
+      assert_equal 'models/profiles/base.rb:3: warning: MyApp::Profiles::Base has no device and no definition: its ' \
+                   "plan is empty\n  hint: declare the robot's devices in its robot block\n", err
+    end
+
     def test_unknown_profile
       _, err, status = run_cli('plan', 'Bsae', '--app', EXAMPLE)
       assert_equal 1, status

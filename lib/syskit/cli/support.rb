@@ -91,10 +91,10 @@ module Syskit
       # The profile called +name+: its full name or the end of it, in
       # constant form (Live::Base) or in the path form of `gen profile`
       # (live/base). Without +name+, the app's first profile, unless it has
-      # no device while others do.
-      def find_profile(app, name)
+      # no device while others do (the error's example runs +command+).
+      def find_profile(app, name, command:)
         profiles = app.profiles.values.sort_by(&:name)
-        return default_profile(app, profiles) if name.nil?
+        return default_profile(app, profiles, command) if name.nil?
 
         matches = profiles_ending_with(name, profiles)
         return matches.first if matches.size == 1
@@ -146,7 +146,7 @@ module Syskit
         (after ? segments.drop(after + 1) : segments).join('/')
       end
 
-      def default_profile(app, profiles)
+      def default_profile(app, profiles, command)
         if profiles.empty?
           raise UnknownName.new("#{app} has no profile",
                                 hint: 'declare one in models/profiles/ (syskit gen profile NAME)')
@@ -160,7 +160,7 @@ module Syskit
 
         raise UnknownName.new("#{first.name}, the app's first profile, has no device",
                               hint: "name the profile to plan: #{with_devices.map(&:name).join(', ')} " \
-                                    "(e.g. syskit plan #{with_devices.first.name})")
+                                    "(e.g. syskit #{command} #{with_devices.first.name})")
       end
 
       def report_error(error, root)

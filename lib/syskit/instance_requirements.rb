@@ -33,7 +33,7 @@ module Syskit
     NO_HINTS = [].freeze
     DEFAULT_CONF = ['default'].freeze
     FIELDS = %i[models device service profile name arguments conf conf_location deployment_hints deployment
-                selections specialization_hints declared_at instance abstract doc].freeze
+                deployment_group selections specialization_hints declared_at instance abstract doc].freeze
 
     # +instance+: a task of the network being generated, when these
     # requirements select it (a composition's child given to another);
@@ -90,7 +90,7 @@ module Syskit
     end
 
     def initialize(models = nil, device: nil, service: nil, profile: nil, name: nil, arguments: NO_ARGUMENTS,
-                   conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil,
+                   conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil, deployment_group: nil,
                    selections: DependencyInjection::EMPTY, specialization_hints: NO_HINTS, declared_at: nil,
                    instance: nil, abstract: false, doc: nil, open: false)
       bound = models&.grep(Models::BoundDataService)&.first
@@ -104,6 +104,7 @@ module Syskit
       @conf_location = conf_location
       @deployment_hints = deployment_hints&.freeze
       @deployment = deployment
+      @deployment_group = deployment_group
       @selections = selections
       @specialization_hints = specialization_hints
       @declared_at = declared_at
@@ -191,6 +192,12 @@ module Syskit
       deployment || device&.declared_deployment
     end
 
+    # The deployed tasks these requirements' network may use before the
+    # robot's (Syskit's deployment group, see #use_deployment).
+    def deployment_group
+      @deployment_group || Models::DeploymentGroup.empty
+    end
+
     # Each required model, then what they provide.
     def fullfilled_models
       list = []
@@ -276,6 +283,7 @@ module Syskit
         conf_location: other.conf_given? ? other.conf_location : conf_location,
         deployment_hints: other.raw_hints || @deployment_hints,
         deployment: other.deployment || deployment, selections: merged_selections(other),
+        deployment_group: merged_deployment_group(other),
         specialization_hints: specialization_hints + other.specialization_hints,
         declared_at: other.declared_at || declared_at, instance: other.instance
       )
@@ -306,7 +314,18 @@ module Syskit
       @models
     end
 
+    def raw_deployment_group
+      @deployment_group
+    end
+
     private
+
+    def merged_deployment_group(other)
+      return @deployment_group unless other.raw_deployment_group
+      return other.raw_deployment_group unless @deployment_group
+
+      @deployment_group.dup.use_group(other.raw_deployment_group)
+    end
 
     def merged_selections(other)
       return selections if other.selections.empty?

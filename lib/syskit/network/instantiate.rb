@@ -207,7 +207,9 @@ module Syskit
         model = requirements.models.find { |m| m.is_a?(Models::DeviceModel) }
         return stub_device_task(model, requirements, path) if model
 
-        stub = Test::StubModels.service_provider(requirements.models)
+        # A tag's placeholder stands for its services.
+        services = requirements.models.flat_map { |m| m.is_a?(Models::Placeholder) ? m.proxied_data_service_models : m }
+        stub = Test::StubModels.service_provider(services)
         component_task(stub, requirements.merge_selection(InstanceRequirements.new([stub])), @base, path, parent)
       end
 

@@ -76,8 +76,9 @@ module Syskit
       return unless name.match?(/\A[a-z_]\w*\z/) && !respond_to?(name)
 
       define_singleton_method(name) do
-        raise FileLoadError.new(
-          "task library '#{name}' is not loaded (loaded: #{loaded_list})",
+        cause = loader&.failed_user_of(name)
+        raise (cause ? FollowOnError : FileLoadError).new(
+          "task library '#{name}' is not loaded (loaded: #{loaded_list})#{", as #{cause} failed" if cause}",
           location: Location.of_caller, hint: "add using_task_library '#{name}' before using OroGen.#{name}"
         )
       end

@@ -20,10 +20,18 @@ module Syskit
       assert_match(/Example: syskit plan Live::Base temperature_sensor_dev --format json/, out)
     end
 
-    def test_plan_defaults_to_the_example_app_outside_an_app
-      out, err, status = run_cli('plan', chdir: Dir.tmpdir)
-      assert_equal 0, status, err
-      assert_match(/^Plan of AwesomeRobot::Profiles::Live::Base/, out)
+    # Outside an app, every command says so, as gen does, rather than
+    # working on the gem's example app.
+    def test_commands_outside_an_app_say_so
+      outside = Dir.mktmpdir('syskit-outside')
+      [%w[plan], %w[check], %w[doc], %w[bus timing], %w[test]].each do |command|
+        out, err, status = run_cli(*command, chdir: outside)
+        assert_equal [1, ''], [status, out], command.join(' ')
+        assert_match(/\A#{Regexp.escape(outside)} is not in a Syskit app\n  hint: pass --app DIR, or cd into an app/,
+                     err, command.join(' '))
+      end
+    ensure
+      FileUtils.rm_rf(outside)
     end
 
     def test_plan_uses_the_app_of_the_current_directory

@@ -136,6 +136,13 @@ module Syskit
       assert_equal before, files_of(app)
     end
 
+    def test_gen_orogen_of_a_library_with_no_spec_says_how_to_start_one
+      app, = new_app
+      error = refused('orogen', 'dvl_teledyne', chdir: app)
+      assert_match(/\Ano task library 'dvl_teledyne'\n  hint: there is no dvl_teledyne\.orogen in /, error)
+      assert error.end_with?("; to start a new task library: syskit gen tasklib dvl_teledyne\n"), error
+    end
+
     def test_errors_of_a_task_library_point_at_its_file
       app, = new_app
       File.write(File.join(app, 'models', 'orogen', 'broken.orogen'), "name 'broken'\ntask_contxt 'Task' do\nend\n")

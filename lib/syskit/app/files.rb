@@ -172,6 +172,13 @@ module Syskit
         @load_failures&.[](File.realpath(path)) if File.file?(path)
       end
 
+      # Where an app file failed that declares using_task_library +name+
+      # (so that the library is missing because of it), nil when none did.
+      def failed_user_of_library(name)
+        pattern = /using_task_library[\s(]*['"]#{Regexp.escape(name)}['"]/
+        @load_failures&.find { |file, _| File.file?(file) && UserFile.read(file).match?(pattern) }&.last
+      end
+
       # Whether the file +require_path+ of the app or a bundle is loaded.
       def loaded_file?(require_path)
         bundle_files(require_path).any? { |file| names_of(file).any? { |name| $LOADED_FEATURES.include?(name) } }

@@ -25,10 +25,11 @@ module Syskit
       class_option :robot, type: :string, default: 'default', desc: 'the robot configuration (config/robots/NAME.rb)'
       class_option :bus, type: :string, desc: 'the bus of the plan (default: its only bus with devices)'
 
-      desc 'replay PROFILE LOGFILE', 'what each device of a bus receives from a candump log'
+      desc 'replay [PROFILE] LOGFILE', 'what each device of a bus receives from a candump log'
       long_desc <<~TEXT
         Reads a candump log (candump -l or -L) and reports, per device attached
-        to the bus in PROFILE's plan: the frames it receives by its can_id filter,
+        to the bus in PROFILE's plan (without PROFILE, the app's first profile,
+        as for plan): the frames it receives by its can_id filter,
         the distinct ids, the first and last time and the mean rate; then the
         frames no device receives and those several devices receive.
 
@@ -43,7 +44,11 @@ module Syskit
                                 desc: 'the interface of the log to read (default: the first one in the log)'
       method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
       method_option :strict, type: :boolean, default: false, desc: 'fail on malformed lines'
-      def replay(profile_name, log_path)
+      def replay(profile_name, log_path = nil)
+        unless log_path
+          log_path = profile_name
+          profile_name = nil
+        end
         require_once 'syskit/bus/replay'
         with_plan(profile_name, __method__) do |dispatcher, source, declared_bus|
           replay = ::Syskit::Bus::Replay.new(dispatcher, log_path, interface: options[:interface], source: source,

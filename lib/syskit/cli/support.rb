@@ -6,7 +6,6 @@ require 'syskit/errors'
 module Syskit
   class CLI < Thor
     GEM_ROOT = File.expand_path('../../..', __dir__)
-    EXAMPLE_APP = File.join(GEM_ROOT, 'examples', 'awesome_robot')
 
     # What the command classes (syskit, syskit gen, syskit bus) share:
     # finding the app and the profile, and printing errors as
@@ -76,14 +75,13 @@ module Syskit
       end
 
       # --app (which must be an app), else the app containing the current
-      # directory, else the example app of a checkout of the gem (an
-      # installed gem has none).
+      # directory. Outside an app every command says so (as gen does)
+      # rather than quietly working on another app.
       def app_root
         return App.check_root(options[:app]) if options[:app]
 
         found = App.find_root(Dir.pwd)
         return found if found && !found.start_with?("#{GEM_ROOT}/bundles/")
-        return EXAMPLE_APP if File.directory?(EXAMPLE_APP)
 
         raise Error.new("#{Dir.pwd} is not in a Syskit app", hint: "pass --app DIR, or cd into an app; #{App::APP_HINT}")
       end

@@ -48,6 +48,17 @@ module Syskit
           assert_equal 'inner', cmp.probe_child.deployed_task.name
         end
 
+        it('gives the deployments of the test as its default deployment group') do
+          use_deployment @task_m => 'test_probe'
+          assert_equal %w[test_probe], default_deployment_group.deployed_tasks.map(&:name)
+        end
+
+        it('skips deploying the plan of a running system') do
+          assert_raises(Roby::Test::ExecutionExpectations::UnexpectedErrors) { deploy_current_plan }
+        end
+
+        it('skips running planners') { syskit_run_planner_with_full_deployment { flunk } }
+
         it('stubs tags') do
           srv_m = Syskit::DataService.new_submodel(name: 'Ranging')
           @profile.tag 'range', srv_m
@@ -65,7 +76,7 @@ module Syskit
         File.write(path, DEPLOY_TEST)
         out, err, = Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'),
                                    'test/test_deploy.rb', chdir: dir, unsetenv_others: true)
-        assert_match(/5 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out, err)
+        assert_match(/8 runs, \d+ assertions, 0 failures, 0 errors, 2 skips/, out, err)
       end
     end
   end

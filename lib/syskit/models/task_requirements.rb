@@ -20,6 +20,12 @@ module Syskit
         to_instance_requirements.instanciate(plan, context, **options)
       end
 
+      # Syskit's +Model.as_plan+: a task standing for the model in a plan,
+      # to be planned (see InstanceRequirements#as_plan).
+      def as_plan(**arguments)
+        to_instance_requirements.as_plan(**arguments)
+      end
+
       # The model (a component or service model, or a component model's
       # service) as requirements (see InstanceRequirements).
       def to_instance_requirements

@@ -121,7 +121,9 @@ module Syskit
         device = selected_device(model, context)
         return device_task(requirements, device, model: model) if device
 
-        unless model.driver_services.empty?
+        # Syskit's instanciate leaves a driver without its device (to be
+        # given, or stubbed): only a network refuses it.
+        unless model.driver_services.empty? || @placeholders
           return stub_driver(model, requirements) if @stub_abstract
 
           raise no_device(model, requirements, path, parent)

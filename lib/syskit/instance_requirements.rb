@@ -35,7 +35,7 @@ module Syskit
     NO_PORT_DYNAMICS = {}.freeze
     DEFAULT_CONF = ['default'].freeze
     FIELDS = %i[models device service profile name arguments conf conf_location deployment_hints deployment
-                selections specialization_hints declared_at instance abstract doc port_dynamics].freeze
+                deployment_group selections specialization_hints declared_at instance abstract doc port_dynamics].freeze
 
     # +instance+: a task of the network being generated, when these
     # requirements select it (a composition's child given to another);
@@ -93,7 +93,7 @@ module Syskit
     end
 
     def initialize(models = nil, device: nil, service: nil, profile: nil, name: nil, arguments: NO_ARGUMENTS,
-                   conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil,
+                   conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil, deployment_group: nil,
                    selections: DependencyInjection::EMPTY, specialization_hints: NO_HINTS, declared_at: nil,
                    instance: nil, abstract: false, doc: nil, open: false, port_dynamics: NO_PORT_DYNAMICS)
       bound = models&.grep(Models::BoundDataService)&.first
@@ -107,6 +107,7 @@ module Syskit
       @conf_location = conf_location
       @deployment_hints = deployment_hints&.freeze
       @deployment = deployment
+      @deployment_group = deployment_group
       @selections = selections
       @specialization_hints = specialization_hints
       @declared_at = declared_at
@@ -193,6 +194,12 @@ module Syskit
     # The deployment given with deployed_as (a device's own when it has one).
     def declared_deployment
       deployment || device&.declared_deployment
+    end
+
+    # The deployed tasks these requirements' network may use before the
+    # robot's (Syskit's deployment group, see #use_deployment).
+    def deployment_group
+      @deployment_group || Models::DeploymentGroup.empty
     end
 
     # Each required model, then what they provide.
@@ -282,6 +289,7 @@ module Syskit
         conf_location: other.conf_given? ? other.conf_location : conf_location,
         deployment_hints: other.raw_hints || @deployment_hints,
         deployment: other.deployment || deployment, selections: merged_selections(other),
+        deployment_group: merged_deployment_group(other),
         specialization_hints: specialization_hints + other.specialization_hints,
         declared_at: other.declared_at || declared_at, instance: other.instance,
         port_dynamics: port_dynamics.merge(other.port_dynamics)
@@ -313,7 +321,18 @@ module Syskit
       @models
     end
 
+    def raw_deployment_group
+      @deployment_group
+    end
+
     private
+
+    def merged_deployment_group(other)
+      return @deployment_group unless other.raw_deployment_group
+      return other.raw_deployment_group unless @deployment_group
+
+      @deployment_group.dup.use_group(other.raw_deployment_group)
+    end
 
     def merged_selections(other)
       return selections if other.selections.empty?

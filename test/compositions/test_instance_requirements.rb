@@ -76,27 +76,22 @@ module Syskit
       end
     end
 
-    # Syskit's deployment groups choose deployments at runtime, for a
-    # profile or requirements: a located warning each, the deployments
-    # come from config/robots.
-    def test_deployment_groups_are_not_modelled
+    # Syskit's deployment groups: a definition's tasks are deployed from
+    # its requirements' deployments (or a named group's) before the robot's.
+    def test_definitions_are_deployed_from_their_deployment_groups
       app = load_rig({ 'models/compositions/watch.rb' => WATCH },
                      profile: <<~RUBY, requires: ['models/compositions/watch'])
                        profile 'Base' do
-                         use_deployment OroGen.rig.Tracker => 'other_tracker'
                          define_deployment_group 'trackers' do
-                           use_deployment OroGen.rig.Tracker => 'other_tracker'
+                           use_deployment OroGen.rig.Tracker => 'group_tracker'
                          end
-                         use_group trackers_deployment_group
-                         define 'tracker', OroGen.rig.Tracker.use_deployment(OroGen.rig.Tracker => 'other_tracker')
+                         define 'tracker', OroGen.rig.Tracker.use_deployment(OroGen.rig.Tracker => 'own_tracker')
+                         define 'grouped', OroGen.rig.Tracker.use_deployment_group(trackers_deployment_group)
                        end
                      RUBY
-      warnings = app.problems.map { |p| "#{p.location.to_s(app.root)}: #{p.message.sub(/: not modelled.*/, '')}" }
-      assert_equal ['models/profiles/base.rb:7: use_deployment in profile Rig::Profiles::Base',
-                    'models/profiles/base.rb:8: define_deployment_group in profile Rig::Profiles::Base',
-                    'models/profiles/base.rb:11: use_group in profile Rig::Profiles::Base',
-                    'models/profiles/base.rb:12: use_deployment on rig::Tracker (deployment groups)'], warnings
-      assert_equal %w[tracker], plan_of(app, 'tracker_def').tasks.map(&:name)
+      assert_empty app.problems
+      assert_equal %w[own_tracker], plan_of(app, 'tracker_def').tasks.map(&:name)
+      assert_equal %w[group_tracker], plan_of(app, 'grouped_def').tasks.map(&:name)
     end
 
     # As Syskit's requirements: marked abstract on request, equal when they

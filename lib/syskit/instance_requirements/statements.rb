@@ -97,13 +97,17 @@ module Syskit
         self
       end
 
-      # Deployments for these requirements alone (Syskit's deployment
-      # groups): not modelled, this gem deploys from the robot
-      # configuration; one located warning each.
-      %i[use_deployment use_unmanaged_task use_deployment_group use_configured_deployment].each do |statement|
-        define_method(statement) do |*_args, **_options|
-          Syskit.app&.not_modelled("#{statement} on #{self} (deployment groups)", Location.of_caller)
-          self
+      # Deployments for the network of these requirements (Syskit's
+      # deployment group): its tasks are deployed from them before the
+      # robot's, as with the same statements in config/robots (see
+      # Models::DeploymentGroup).
+      #
+      #   OroGen.rig.Tracker.use_deployment(OroGen.rig.Tracker => 'rear_tracker')
+      %i[use_deployment use_unmanaged_task use_ruby_tasks use_deployments_from].each do |statement|
+        define_method(statement) do |*args, **options|
+          group = deployment_group.dup
+          group.public_send(statement, *args, **options)
+          change(deployment_group: group)
         end
       end
 
@@ -115,6 +119,17 @@ module Syskit
         dynamics = port_dynamics[port_name]&.dup || NetworkGeneration::PortDynamics.new(port_name)
         dynamics.add_trigger('period', period, sample_count)
         change(port_dynamics: port_dynamics.merge(port_name => dynamics.freeze))
+      end
+
+      # Syskit's +use_configured_deployment+: one configured deployment
+      # (Models::ConfiguredDeployment) for the network of these requirements.
+      def use_configured_deployment(configured)
+        use_deployment(configured)
+      end
+
+      # Adds the deployed tasks of +group+ (a Models::DeploymentGroup).
+      def use_deployment_group(group)
+        change(deployment_group: deployment_group.dup.use_group(group))
       end
 
       # The same requirements, marked abstract: what fills them must still

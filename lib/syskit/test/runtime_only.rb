@@ -22,6 +22,7 @@ module Syskit
         expect_execution_default_timeout= use_deployment use_ruby_tasks use_unmanaged_task
         execution_engine droby_remote_marshaller droby_dump droby_marshalled_and_unmarshalled
         assert_droby_compatible create_transaction
+        syskit_run_planner_with_full_deployment run_planners deploy_current_plan
       ].freeze
 
       METHODS.each do |name|

@@ -117,6 +117,17 @@ module Syskit
       assert_reported error, /syntax error/, at: 'models/devices/bad.rb:4', hint: /fix the Ruby syntax/, root: root
     end
 
+    # The robot configuration deploys a task of the library the broken
+    # profile loads: one error, the syntax error, not a second one saying
+    # the library is not loaded.
+    def test_a_syntax_error_in_a_profile_is_the_only_error_it_causes
+      profile = "using_task_library 'imu'\nmodule MyApp\n  module Profiles\n    profile('Base') do do\n  end\nend\n"
+      root = my_app(nil, 'models/profiles/base.rb' => profile,
+                         'config/robots/default.rb' => "Syskit.conf.use_deployment OroGen.imu.Task => 'imu'\n")
+      error = load_problem(root, robots: ['default'])
+      assert_reported error, /syntax error/, at: 'models/profiles/base.rb:4', root: root
+    end
+
     # A location of a whole file (no line, or line 0 when Ruby gives none)
     # is the file's path alone, never path:0.
     def test_a_location_without_a_line_is_the_path

@@ -113,6 +113,55 @@ module Syskit
       assert_match(/profile assertions need `describe SomeProfile do ... end`, not Base: the profile may not be/, out)
     end
 
+    # A profile whose file stops at a typo after its device: its tests
+    # selected by -n, and the run, never pass on the half that loaded.
+    DEPLOYED_PROFILE = BROKEN_PROFILE.merge(
+      'config/robots/default.rb' => "Syskit.conf.use_deployment OroGen.imu.Task => 'imu'\n"
+    ).freeze
+
+    def with_line_after_device(files, path, line)
+      device = "        device(Devices::IMU, as: 'imu')\n"
+      source = files.fetch(path).sub(device, "#{device}        #{line}\n")
+      files.merge(path => source)
+    end
+
+    def test_a_test_of_a_profile_that_did_not_load_errors_at_the_load_error
+      files = with_line_after_device(DEPLOYED_PROFILE, 'models/profiles/base.rb', 'Devices::Nope')
+      app = write_app(files, name: 'my_app')
+      out, err, status = syskit_test(app, '-n', '/deployed/')
+      refute status.success?, out
+      assert_match(%r{^models/profiles/base\.rb:8: uninitialized constant}, err)
+      assert_match(/^1 runs, 0 assertions, 0 failures, 1 errors/, out)
+      assert_match(/MyApp::Profiles::Base did not load completely, so this test cannot check it:\n.*base\.rb:8/, out)
+      assert_match(/1 problem\(s\) loading the app or its test files .* the run fails whatever its tests say/, out)
+    end
+
+    def test_a_profile_that_requires_a_broken_file_cannot_pass_its_tests
+      files = DEPLOYED_PROFILE.merge(
+        'models/compositions/pair.rb' => "module MyApp\n  module Compositions\n    Nope.new\n  end\nend\n"
+      )
+      files['models/profiles/base.rb'] = "require 'models/compositions/pair'\n#{files['models/profiles/base.rb']}"
+      out, _err, status = syskit_test(write_app(files, name: 'my_app'), '-n', '/self contained/')
+      refute status.success?, out
+      assert_match(/^1 runs, 0 assertions, 0 failures, 1 errors/, out)
+      assert_match(%r{did not load completely, so this test cannot check it:\n.*models/compositions/pair\.rb:3}, out)
+    end
+
+    def test_a_load_error_fails_the_run_even_when_no_selected_test_uses_it
+      files = DEPLOYED_PROFILE.merge('models/devices/other.rb' => "device_type 'other'\n")
+      out, _err, status = syskit_test(write_app(files, name: 'my_app'), '-n', '/deployed/')
+      refute status.success?, out
+      assert_match(/^1 runs, \d+ assertions, 0 failures, 0 errors/, out)
+      assert_match(/1 problem\(s\) loading the app or its test files/, out)
+    end
+
+    def test_a_test_file_that_does_not_load_fails_the_run
+      files = DEPLOYED_PROFILE.merge('test/test_typo.rb' => "require 'syskit/test'\nMyApp::Nope\n")
+      out, _err, status = syskit_test(write_app(files, name: 'my_app'), '-n', '/deployed/')
+      refute status.success?, out
+      assert_match(/^1 runs, \d+ assertions, 0 failures, 0 errors/, out)
+    end
+
     def test_an_app_with_problems_runs_the_tests_that_do_not_depend_on_them
       deploy = "Syskit.conf.use_deployment OroGen.imu.Task => 'imu'\n"
       files = BROKEN_PROFILE.merge('models/devices/other.rb' => "device_type 'other'\n",

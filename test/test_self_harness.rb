@@ -136,7 +136,7 @@ module Syskit
         it('configures a stub deployment') { syskit_stub_deploy_and_configure(task_m, remote_task: false) }
         it('configures stubbed requirements') { syskit_stub_requirements_and_configure(task_m) }
         it('binds ports dynamically') { Syskit::Models::DynamicPortBinding.create(task_m.out_port) }
-        it('reads a port') { flexmock(Syskit::DynamicPortBinding::BoundOutputReader).new }
+        it('reads a port') { flexmock(Syskit::DynamicPortBinding::OutputReader).new }
         it('deploys with a remote task') { syskit_stub_and_deploy(task_m, remote_task: false).out_port }
         it('marks an object as not marshallable') { Object.new.extend(Roby::DRoby::Unmarshallable) }
         it('binds ports of a matcher') { Syskit::Models::DynamicPortBinding.create_from_matcher(task_m.out_port) }
@@ -154,8 +154,8 @@ module Syskit
         messages = File.readlines(report).map { |l| JSON.parse(l)['message'] }.reject(&:empty?).sort
         called = messages.map { |m| m.delete_suffix(" needs Syskit's runtime (Roby and Orocos)") }
         assert_equal ['Syskit::Compat::Roby::DRoby::Unmarshallable',
-                      'Syskit::DynamicPortBinding::BoundOutputReader', 'Syskit::Models::DynamicPortBinding',
-                      'Syskit::Models::DynamicPortBinding',
+                      'Syskit::DynamicPortBinding::OutputReader', 'Syskit::Models::DynamicPortBinding.create',
+                      'Syskit::Models::DynamicPortBinding.create_from_matcher',
                       'plan.execution_engine', 'plan.in_transaction', 'syskit_stub_deploy_and_configure',
                       'syskit_stub_requirements_and_configure'],
                      called

@@ -6,6 +6,7 @@ require 'syskit/compat/roby_plan_service'
 require 'syskit/models/component_submodels'
 require 'syskit/models/task_specialization'
 require 'syskit/component_merging'
+require 'syskit/dynamic_port_binding'
 
 module Syskit
   # The root of the components of a network, as in Syskit: task contexts
@@ -102,6 +103,15 @@ module Syskit
     # The plan service of this task, once #as_service made one.
     attr_accessor :plan_service
 
+    # The services its model requires of dynamic services, bound to this
+    # task (see Models::DynamicServices#require_dynamic_service). Without
+    # a block, the list (Syskit's tests ask it +empty?+).
+    def each_required_dynamic_service(&block)
+      return enum_for(__method__).to_a unless block
+
+      model.required_dynamic_services.each { |srv| yield srv.bind(self) }
+    end
+
     # The compositions this task is a child of (Roby's +each_parent_task+).
     def each_parent_task(&)
       return enum_for(__method__) unless block_given?
@@ -123,6 +133,7 @@ module Syskit
   # class test files and custom models name.
   class Component < AbstractComponent
     include ComponentMerging
+    include DynamicPortBinding::ComponentAccessors
 
     class << self
       # Where it was made (see Models::Component#new_submodel).

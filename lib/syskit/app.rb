@@ -295,6 +295,8 @@ module Syskit
     end
 
     def add_problem(problem)
+      return if problem.is_a?(FollowOnError)
+
       @problem_keys ||= @problems.to_h { |p| [p.identity, true] }
       @problems << problem unless @problem_keys.key?(problem.identity)
       @problem_keys[problem.identity] = true

@@ -71,17 +71,22 @@ module Syskit
 
     # The service port +name+ (a Syskit::Port whose component is this
     # service; +to_component_port+ is the task's port behind it), or nil.
+    # Its model is the port of the task model's service (+model+, seen as
+    # +service_model+), as in Syskit: +port.model.component_model+ is the
+    # service of the task's model, a specialization's once the task is
+    # specialized.
     def find_port(name)
-      return unless (port_model = service_model.find_port(name))
+      return unless service_model.find_port(name)
 
-      Port.new(port_model, self)
+      seen = model.as(service_model)
+      Port.new(seen.find_output_port(name) || seen.find_input_port(name), self)
     end
 
     # Its service ports (see #find_port).
     def each_port
       return enum_for(__method__) unless block_given?
 
-      service_model.each_port { |port_model| yield Port.new(port_model, self) }
+      service_model.each_port { |port_model| yield find_port(port_model.name) }
     end
 
     # The task's port behind +port+, a port of this service.

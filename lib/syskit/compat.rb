@@ -145,7 +145,8 @@ module Syskit
     # only to build the component).
     Utilrb = not_modelled_namespace('Utilrb', %i[PkgConfig])
     # +OroGen::Spec+: the namespace of oroGen's specification classes.
-    OrogenSpec = not_modelled_namespace('OroGen::Spec', %i[Project TaskContext Deployment Typekit Port Operation])
+    # Its Project and TaskContext are modelled (see compat/orogen_spec.rb).
+    OrogenSpec = not_modelled_namespace('OroGen::Spec', %i[Deployment Typekit Port Operation])
 
     # Declares a class of a model kind this gem does not model.
     def self.not_modelled_class(namespace, name, kind)
@@ -177,6 +178,10 @@ module Syskit
     Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
     not_modelled_class(Roby, :Task, 'Roby task')
+    # +Roby::Task.from(:parent_task).x+, a child's argument taken from its
+    # composition, is modelled as the composition's own +from+ is (see
+    # TaskStatements#from).
+    Roby::Task.define_singleton_method(:from) { |object| DelayedArgument.new(object) }
     # Roby's task library (Roby::Tasks::Simple, ...).
     Roby.const_set(:Tasks, Module.new)
     %i[Simple Timeout Virtual Group Parallel Sequence ExternalProcess Thread].each do |name|
@@ -205,6 +210,7 @@ end
 
 # Uses NotModelledCalls and IgnoredNamespace above.
 require 'syskit/compat/orocos'
+require 'syskit/compat/orogen_spec'
 
 Syskit::TaskContext.extend(Syskit::Compat::TaskStatements)
 Syskit::Composition.extend(Syskit::Compat::TaskStatements)

@@ -24,15 +24,14 @@ module Syskit
     def initialize(arguments = {})
       super()
       @children = {}
-      @child_selections = {}
+      @child_selection = {}
       @conf = InstanceRequirements::DEFAULT_CONF
       assign_arguments(arguments)
     end
 
-    # The requirements selected for each child, by role (what the child
-    # task was made from).
-    attr_reader :child_selections
-    alias child_selection child_selections
+    # What was selected for each child, by role: an InstanceSelection (its
+    # +selected+ requirements are what the child task was made from).
+    attr_reader :child_selection
 
     # The child task of role +role+ (a task or a composition).
     def child_task(role)
@@ -140,7 +139,8 @@ module Syskit
       task = @children[port.child_name]
       return unless task
 
-      name = Composition.port_name_in(@child_selections[port.child_name], task.model, port.owner, port.owner_port)
+      selected = @child_selection[port.child_name]&.selected
+      name = Composition.port_name_in(selected, task.model, port.owner, port.owner_port)
       name ||= port.owner_port
       return task.resolve_export(name) if task.is_a?(Composition) && task.model.exports.key?(name)
 
@@ -185,7 +185,7 @@ module Syskit
     # The service of +task+ selected for the child +role+, else the one
     # service of +task+ that provides +required+.
     def selected_service(role, task, required)
-      selected = @child_selections[role.to_s]&.service
+      selected = @child_selection[role.to_s]&.selected&.service
       return task.find_data_service(selected.full_name) if selected
 
       candidates = task.each_data_service.select { |srv| srv.fullfills?(required) }

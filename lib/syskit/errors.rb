@@ -110,6 +110,11 @@ module Syskit
   # while it is evaluated, unknown task libraries or typekits.
   class FileLoadError < Error; end
 
+  # An error that follows from another one already reported (a task
+  # library missing because the file that loads it failed): the app keeps
+  # the cause only, one error per cause.
+  class FollowOnError < FileLoadError; end
+
   # A type that does not exist or a value that does not fit its type.
   class TypeError < Error; end
 

@@ -222,10 +222,15 @@ module Syskit
       self
     end
 
-    # These requirements seen through +models+ (models they fullfill): the
-    # selected service seen as them, else a Models::FacetedAccess.
+    # These requirements seen through +models+ (models they fullfill), a
+    # Models::FacetedAccess. With a service selected, Syskit selects the
+    # component model's service of that name: the same requirements, once
+    # the service is checked to provide +models+.
     def as(models)
-      return copy(service: service.as(models)) if service
+      if service
+        service.as(models)
+        return copy(service: component_model.find_service(service.full_name) || service)
+      end
 
       Models::FacetedAccess.new(self, Models::Placeholder.for(Array(models)))
     end

@@ -28,6 +28,20 @@ module Syskit
       child.add(rest, value)
     end
 
+    # Makes the entry at +path+ unreachable (and the namespaces that lead
+    # to it once they are empty).
+    def remove(path)
+      head, *rest = path
+      entry = @entries[head]
+      if rest.empty? || (entry.is_a?(Namespace) && entry.remove(rest).names.empty?)
+        @entries.delete(head)
+        singleton_class.send(:remove_method, head) if singleton_class.method_defined?(head, false)
+        constant = Namespace.constant_for(head)
+        remove_const(constant) if constant && const_defined?(constant, false)
+      end
+      self
+    end
+
     # Names reachable from here, sorted.
     def names
       @entries.keys.sort

@@ -37,8 +37,8 @@ module Syskit
       task_model.property_declarations.each_key do |name|
         next if method_defined?(name) || private_method_defined?(name)
 
-        klass.define_method(name) { @task.properties[name] }
-        klass.define_method("#{name}=") { |value| @task.properties[name] = value }
+        klass.define_method(name) { @task.property(name).read }
+        klass.define_method("#{name}=") { |value| @task.property(name).write(value) }
       end
       task_model.operations.each_key do |name|
         next if klass.method_defined?(name) || private_method_defined?(name)

@@ -28,14 +28,24 @@ module Syskit
     # Makes +model+ reachable by its oroGen name (+model.orogen_model.name+,
     # 'project::Task' or 'project::ns::Task') as +namespace.project.Task+,
     # and returns that call chain.
+    # The project is the first part of the name, as in Syskit.
     def register_syskit_model(model)
-      orogen = model.orogen_model
-      project = orogen.project.name
-      path = orogen.name.split('::')
-      path.shift if path.first == project
+      project, *path = model.orogen_model.name.split('::')
       project_namespace(project).add(path, model)
-      (@syskit_models_by_orogen_name ||= {})[orogen.name] = model
+      (@syskit_models_by_orogen_name ||= {})[model.orogen_model.name] = model
       [name || to_s, project, *path].join('.')
+    end
+
+    # Undoes #register_syskit_model: the model is no longer reachable, nor
+    # its project once it has no model left.
+    def deregister_syskit_model(model)
+      project, *path = model.orogen_model.name.split('::')
+      @syskit_models_by_orogen_name&.delete(model.orogen_model.name)
+      namespace = @syskit_projects&.fetch(project, nil)
+      return unless namespace
+
+      namespace.remove(path)
+      forget_project(project, namespace) if namespace.names.empty?
     end
 
     # Whether a model of the project +name+ was registered.
@@ -66,8 +76,9 @@ module Syskit
       return unless name.match?(/\A[a-z_]\w*\z/) && !respond_to?(name)
 
       define_singleton_method(name) do
-        raise FileLoadError.new(
-          "task library '#{name}' is not loaded (loaded: #{loaded_list})",
+        cause = loader&.failed_user_of(name)
+        raise (cause ? FollowOnError : FileLoadError).new(
+          "task library '#{name}' is not loaded (loaded: #{loaded_list})#{", as #{cause} failed" if cause}",
           location: Location.of_caller, hint: "add using_task_library '#{name}' before using OroGen.#{name}"
         )
       end
@@ -107,14 +118,30 @@ module Syskit
         namespace = Namespace.new(name || to_s, [project])
         @syskit_projects[project] = namespace
         define_singleton_method(project) { namespace } if project.match?(/\A[a-z_]\w*\z/)
-        register_project_constant(project, namespace) if syskit_model_constant_registration?
+        if syskit_model_constant_registration?
+          register_project_constant(self, project, namespace)
+          register_project_constant(Object, project, namespace) if syskit_model_toplevel_constant_registration?
+        end
         namespace
       end
     end
 
-    def register_project_constant(project, namespace)
+    # +OroGen::Project+ (and +::Project+ with the toplevel registration)
+    # is the project's namespace, unless the constant exists already.
+    def register_project_constant(owner, project, namespace)
       constant = Namespace.constant_for(project)
-      const_set(constant, namespace) if constant && !const_defined?(constant, false)
+      owner.const_set(constant, namespace) if constant && !owner.const_defined?(constant, false)
+    end
+
+    def forget_project(project, namespace)
+      @syskit_projects.delete(project)
+      singleton_class.send(:remove_method, project) if singleton_class.method_defined?(project, false)
+      constant = Namespace.constant_for(project)
+      [self, Object].each do |owner|
+        next unless constant && owner.const_defined?(constant, false) && owner.const_get(constant).equal?(namespace)
+
+        owner.send(:remove_const, constant)
+      end
     end
 
     def unknown_model(name)

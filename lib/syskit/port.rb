@@ -189,6 +189,11 @@ module Syskit
 
     public
 
+    # The port this is a view of (see Models::Port#orogen_port).
+    def orogen_port
+      @port
+    end
+
     # The port's own readers, for code that looked the port up.
     def name
       @port.respond_to?(:name) ? @port.name : @port.pattern

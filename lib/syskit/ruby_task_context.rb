@@ -85,6 +85,7 @@ module Syskit
         property = Orogen::Property.new(name, Models.resolve_type(type, Location.of_caller), default)
         spec.properties[name] = property
         @properties_class = nil
+        define_property_reader(name)
         Orogen::PropertyModifiers.new(property)
       end
 

@@ -2,6 +2,8 @@
 
 require 'syskit/models/task_context'
 require 'syskit/properties'
+require 'syskit/task_connections'
+require 'syskit/task_properties'
 
 module Syskit
   # A task of a network: an instance of a task model (a subclass of this
@@ -12,6 +14,8 @@ module Syskit
   # users override in extension files (calling +super+ first).
   class TaskContext < Component
     extend Models::TaskContext
+    include TaskConnections
+    include TaskProperties
 
     # A task model made in Ruby, as Syskit's tests make them (see
     # Models::Component#new_submodel):
@@ -31,7 +35,7 @@ module Syskit
     NO_CONNECTIONS = [].freeze
     private_constant :NO_PORTS, :NO_CALLS, :NO_CONNECTIONS
 
-    attr_reader :properties, :deployed_task
+    attr_reader :deployed_task
 
     # The name the task goes by before it is deployed: its device's, or
     # its place in a composition (+arm_control_position2twist+).
@@ -41,7 +45,7 @@ module Syskit
 
     def initialize(arguments = {})
       super()
-      @properties = model.properties_class.new
+      @properties = model.properties_class.initial(self)
       @created_ports = NO_PORTS
       @children = []
       @child_tasks = []
@@ -72,6 +76,25 @@ module Syskit
 
     # Configuration hook: user extension files override it and call super.
     def configure; end
+
+    # The host the task must run on (Syskit's +required_host+), nil when
+    # any will do: two tasks bound to different hosts are not merged.
+    attr_accessor :required_host
+
+    def can_merge?(other)
+      if required_host && other.respond_to?(:required_host) && other.required_host &&
+         required_host != other.required_host
+        return false
+      end
+
+      super
+    end
+
+    # The event emitted when the task enters the state +name+ (see
+    # Models::TaskContext#state_events), nil when it has none.
+    def state_event(name)
+      model.find_state_event(name)
+    end
 
     # +abort 'message'+ in configure stops the plan with a located error
     # saying so (Kernel#abort would also print the message on its own).
@@ -120,9 +143,9 @@ module Syskit
     # specialization's, see Models::DynamicServices#require_dynamic_service)
     # and its devices' slaves declared from one.
     def each_required_dynamic_service(&block)
-      return enum_for(__method__) unless block
+      return enum_for(__method__).to_a unless block
 
-      model.required_dynamic_services.each { |srv| yield srv.bind(self) }
+      super
       devices.each do |device|
         device.each_slave { |slave| yield slave.service.bind(self) if slave.dynamic_service_name && slave.service }
       end

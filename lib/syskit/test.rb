@@ -10,6 +10,7 @@ require 'syskit/test/runtime_only'
 require 'syskit/test/model_helpers'
 require 'syskit/test/subject_model'
 require 'syskit/test/app_under_test'
+require 'syskit/test/load_problems'
 
 module Syskit
   # Test support for apps: `require 'syskit/test'` at the top of a test
@@ -34,6 +35,7 @@ module Syskit
       include RuntimeOnly
       include RuntimeOnly::Mocks
       include SubjectModel
+      include LoadProblems::Guard
       extend RuntimeOnly::ClassMethods
       extend SubjectModel::ClassMethods
 
@@ -41,6 +43,12 @@ module Syskit
       # syskit_stub_and_deploy). Not in Syskit's own harness, whose tests
       # name their tasks with +let(:task)+.
       attr_reader :task
+
+      # What Ruby shows of a test in a NameError's message: its name, not
+      # every stub and plan it holds.
+      def inspect
+        "#<#{self.class.name} #{name}>"
+      end
     end
 
     # Syskit's test base classes, for tests written as classes

@@ -158,6 +158,14 @@ module Syskit
       assert_match(/^  200 +2 +0\.000 +1\.000  filter of write-only writer$/, out)
     end
 
+    # Without PROFILE, as plan and bus timing: the app's first profile.
+    def test_replay_without_a_profile_replays_the_first_one
+      File.write(@log, "(1.000000) can0 200#01\n")
+      with_profile, = run_cli('bus', 'replay', 'Base', @log, '--app', @app)
+      out, err, status = run_cli('bus', 'replay', @log, '--app', @app)
+      assert_equal [0, with_profile], [status, out], err
+    end
+
     # A frame a device declares and no filter receives: the host sends it
     # to the device (a command); the report says who declared it.
     def test_unclaimed_ids_name_the_devices_that_declare_them

@@ -20,10 +20,18 @@ module Syskit
       assert_match(/Example: syskit plan Live::Base temperature_sensor_dev --format json/, out)
     end
 
-    def test_plan_defaults_to_the_example_app_outside_an_app
-      out, err, status = run_cli('plan', chdir: Dir.tmpdir)
-      assert_equal 0, status, err
-      assert_match(/^Plan of AwesomeRobot::Profiles::Live::Base/, out)
+    # Outside an app, every command says so, as gen does, rather than
+    # working on the gem's example app.
+    def test_commands_outside_an_app_say_so
+      outside = Dir.mktmpdir('syskit-outside')
+      [%w[plan], %w[check], %w[doc], %w[bus timing], %w[test]].each do |command|
+        out, err, status = run_cli(*command, chdir: outside)
+        assert_equal [1, ''], [status, out], command.join(' ')
+        assert_match(/\A#{Regexp.escape(outside)} is not in a Syskit app\n  hint: pass --app DIR, or cd into an app/,
+                     err, command.join(' '))
+      end
+    ensure
+      FileUtils.rm_rf(outside)
     end
 
     def test_plan_uses_the_app_of_the_current_directory
@@ -68,6 +76,27 @@ module Syskit
       assert_equal [1, ''], [status, out]
       assert_equal "MyApp::Profiles::Arm, the app's first profile, has no device\n  hint: name the profile to plan: " \
                    "MyApp::Profiles::Base (e.g. syskit plan MyApp::Profiles::Base)\n", err
+    end
+
+    # The bus tools pick the first profile as plan does: their hint runs
+    # them, not plan.
+    def test_bus_timing_without_a_profile_when_the_first_has_no_device
+      arm = "module MyApp\n  module Profiles\n    profile('Arm') { robot {} }\n  end\nend\n"
+      root = my_app("device MyApp::Devices::IMU, as: 'imu'", 'models/profiles/arm.rb' => arm)
+      _, err, status = run_cli('bus', 'timing', '--app', root)
+      assert_equal 1, status
+      assert_includes err, '(e.g. syskit bus timing MyApp::Profiles::Base)'
+    end
+
+    # A profile with nothing to plan plans, and says so at its declaration.
+    def test_the_plan_of_an_empty_profile_says_it_is_empty
+      root = my_app('', 'models/profiles/base.rb' => "module MyApp\n  module Profiles\n    " \
+                                                     "profile('Base') { robot {} }\n  end\nend\n")
+      out, err, status = run_cli('plan', 'Base', '--app', root)
+      assert_equal 0, status, err
+      assert_match(/^Tasks \(0\)$/, out)
+      assert_equal 'models/profiles/base.rb:3: warning: MyApp::Profiles::Base has no device and no definition: its ' \
+                   "plan is empty\n  hint: declare the robot's devices in its robot block\n", err
     end
 
     def test_unknown_profile

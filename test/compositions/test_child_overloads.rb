@@ -38,6 +38,19 @@ module Syskit
       assert_same parent.pose_child, parent.port_connections.first.from.child
     end
 
+    # As Syskit's overload_info: the overloaded child, and which ports of
+    # the new requirements stand for its ports.
+    def test_an_overloaded_child_knows_the_child_it_overloads
+      parent, model = overloaded_pose_child
+      assert_same parent.pose_child, model.pose_child.overload_info.required
+      assert_equal({ 'pose' => 'odometry' }, model.pose_child.port_mappings)
+      tracked = parent.new_submodel
+      tracked.overload 'pose', OroGen.rig.GPSDriver
+      assert_same parent.pose_child, tracked.pose_child.overload_info.required
+      assert_equal OroGen.rig.GPSDriver.gps_srv, tracked.pose_child.overload_info.selected.service
+      assert_nil parent.pose_child.parent_model
+    end
+
     # The child keeps the ports of what it was required as, mapped onto
     # the model that replaced it.
     def test_an_overloaded_child_keeps_the_ports_of_the_services_it_was

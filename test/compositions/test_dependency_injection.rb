@@ -70,6 +70,15 @@ module Syskit
       assert_nil inner.selected_value_for('pose', [Rig::Services::Pose]).first
     end
 
+    def test_an_instance_selection_says_what_fills_a_requirement
+      rear = OroGen.rig.Tracker.rear_pose_srv
+      selection, used = DependencyInjection.new({ 'pose' => rear }).instance_selection_for('pose', Rig::Services::Pose)
+      assert_equal ['pose'], used.to_a
+      assert_equal({ Rig::Services::Pose => rear }, selection.service_selection)
+      abstract = DependencyInjection.new({ 'pose' => OroGen.rig.Tracker.to_instance_requirements.abstract })
+      assert abstract.instance_selection_for('pose', OroGen.rig.Tracker).first.selected.abstract?
+    end
+
     def test_grandchildren_are_selected_by_dotted_names
       injection = DependencyInjection.new({ 'watch.pose' => OroGen.rig.Tracker, 'other' => @watch })
       assert_equal({ 'pose' => OroGen.rig.Tracker }, injection.grandchild_selections('watch'))

@@ -126,17 +126,26 @@ module Syskit
     end
 
     # Syskit's requirements made on a service (+new([Task.x_srv])+) and
-    # their ports (x_port, of the selected service when there is one).
+    # their ports (x_port, of the selected service when there is one):
+    # ports of the requirements, named as the service names them, standing
+    # for the task's ports.
     def test_requirements_on_a_service_and_their_ports
       pose, task = pose_and_task
       on_service = InstanceRequirements.new([task.fix_srv])
       assert_equal [[task], task.fix_srv], [on_service.models, on_service.service]
-      assert_equal 'out', on_service.pose_port.name
+      assert_equal %w[pose out], [on_service.pose_port.name, on_service.pose_port.to_component_port.name]
       assert_equal 'out', task.to_instance_requirements.out_port.name
       assert_nil on_service.find_port('nothing')
       summary = task.with_arguments(a: 1).fullfilled_model
       assert_equal [task, [pose, AbstractComponent, DataService], { a: 1 }],
                    [summary[0], summary[1].sort_by(&:to_s), summary[2]]
+    end
+
+    def test_the_ports_of_requirements_are_theirs
+      _, task = pose_and_task
+      on_service = InstanceRequirements.new([task.fix_srv])
+      assert_same on_service, on_service.pose_port.component_model
+      assert_equal Models::OutputPort.new(on_service, task.out_port.orogen_model, 'pose'), on_service.pose_port
     end
 
     # Merging two requirements, binding a task to requirements.
@@ -237,6 +246,17 @@ module Syskit
       assert_nil InstanceRequirements.new([task.fix_srv]).to_component_model.service
       assert_same task.find_port('out'), task.to_instance_requirements.out_port.to_component_port
       refute_nil pose
+    end
+
+    # A composition child's port is the port of that child, however it was
+    # made (Syskit's tests make one with Models::OutputPort.new(child, ...)).
+    def test_a_child_port_is_a_port_of_the_child
+      pose, task = pose_and_task
+      cmp = Composition.new_submodel(name: 'Cmp') { add pose, as: 'nav' }
+      port = cmp.nav_child.pose_port
+      assert_equal Models::OutputPort.new(cmp.nav_child, pose.pose_port.orogen_model), port
+      assert_equal port, Models::OutputPort.new(cmp.nav_child, pose.pose_port.orogen_model)
+      refute_equal Models::OutputPort.new(task, pose.pose_port.orogen_model), port
     end
 
     def pose_and_task

@@ -87,6 +87,26 @@ module Syskit
       assert_same cmp.follower_child, cmp.required_composition_child_from_role('follower')
     end
 
+    def test_a_composition_keeps_what_was_selected_for_each_child
+      rear = OroGen.rig.Tracker.rear_pose_srv
+      cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => rear))
+      selection = cmp.child_selection['pose']
+      assert_same cmp.pose_child, selection.component
+      assert_equal({ Rig::Services::Pose => rear }, selection.service_selection)
+      assert_equal({ 'pose' => 'rear' }, selection.port_mappings)
+      assert_equal [Rig::Services::Pose], selection.required.models
+    end
+
+    def test_children_selections_from_a_context_by_child_name
+      model = watch_model
+      explicit, all, used = model.find_children_models_and_tasks('pose' => OroGen.rig.Tracker.front_pose_srv)
+      assert_equal %w[pose], explicit.keys
+      assert_equal %w[follower pose], all.keys.sort
+      assert_equal({ 'pose' => 'front' }, explicit['pose'].port_mappings)
+      assert_equal [OroGen.rig.Follower], all['follower'].selected.models
+      assert_equal({ 'pose' => ['pose'], 'follower' => [] }, used.transform_values(&:to_a))
+    end
+
     def test_a_child_removed_from_the_task_is_no_required_child
       cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
       cmp.remove_dependency(cmp.pose_child)

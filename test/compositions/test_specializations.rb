@@ -32,6 +32,26 @@ module Syskit
       assert_same @model, @model.narrow('pose' => OroGen.rig.Tracker.front_pose_srv)
     end
 
+    # As Syskit's: a component selected through one of its services
+    # matches the specializations on that service only, whether the
+    # service is selected for the child or for the model it requires.
+    def test_a_selected_service_says_which_specialization_applies
+      heading = DataService.new_submodel(name: 'Heading') { output_port 'heading', RBS }
+      heading.provides Rig::Services::Pose, 'pose' => 'heading'
+      task_m = TaskContext.new_submodel(name: 'Imu') do
+        output_port 'odom', RBS
+        output_port 'yaw', RBS
+      end
+      task_m.provides Rig::Services::Odometry, as: 'odometry', 'odometry' => 'odom'
+      task_m.provides heading, as: 'heading', 'heading' => 'yaw'
+      @model.add_specialization_constraint { |_, _| false }
+      odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      @model.specialize(@model.pose_child => heading)
+      assert_equal Set[odometry], @model.narrow('pose' => task_m.odometry_srv).applied_specializations
+      by_model = DependencyInjection.new('pose' => task_m, Rig::Services::Pose => task_m.odometry_srv)
+      assert_equal Set[odometry], @model.narrow(by_model).applied_specializations
+    end
+
     def test_a_specialization_applies_when_the_selection_fullfills_it
       spec = @model.specialize @model.pose_child => Rig::Services::Odometry do
         pose_child.odometry_port.connect_to follow_child.pose_port
@@ -39,7 +59,7 @@ module Syskit
       odometry = odometry_source
       narrowed = @model.narrow('pose' => odometry)
       assert narrowed < @model
-      assert_equal [spec], narrowed.applied_specializations
+      assert_equal Set[spec], narrowed.applied_specializations
       assert_equal 'Drive/pose.is_a?(Rig::Services::Odometry)', narrowed.name
       assert narrowed.pose_child.odometry_port.connected_to?(narrowed.follow_child.pose_port)
       refute_same narrowed, @model.narrow
@@ -54,16 +74,20 @@ module Syskit
       assert_empty @model.port_connections
     end
 
+    # The splitter, providing SpeedSource through its left output.
+    def splitter_as_speed_source
+      splitter = OroGen.rig.Splitter
+      splitter.provides(Rig::Services::SpeedSource, as: 'left_speed', 'speed_out' => 'left') unless
+        splitter.find_service('left_speed')
+      splitter
+    end
+
     def test_specializations_that_apply_together_are_merged
       @model.add(Rig::Services::SpeedSource, as: 'speed')
       odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry) { export pose_child.odometry_port }
       speed = @model.specialize(@model.speed_child => OroGen.rig.Splitter) { export speed_child.left_port }
-      source = odometry_source
-      follower = OroGen.rig.Splitter
-      follower.provides(Rig::Services::SpeedSource, as: 'left_speed', 'speed_out' => 'left') unless
-        follower.find_service('left_speed')
-      narrowed = @model.narrow('pose' => source, 'speed' => follower)
-      assert_equal [odometry, speed], narrowed.applied_specializations
+      narrowed = @model.narrow('pose' => odometry_source, 'speed' => splitter_as_speed_source)
+      assert_equal Set[odometry, speed], narrowed.applied_specializations
       assert_equal %w[left odometry], narrowed.ports.keys.sort
       assert_equal %w[left odometry], narrowed.each_port.map(&:name).sort
     end
@@ -78,7 +102,7 @@ module Syskit
       assert_match(/several specializations of Drive apply .* and cannot be combined/, error.message)
       assert_match(/prefer_specializations/, error.hint)
       narrowed = @model.narrow({ 'pose' => source }, hints: [{ 'pose' => Rig::Services::Odometry }])
-      assert_equal [first], narrowed.applied_specializations
+      assert_equal Set[first], narrowed.applied_specializations
     end
 
     # As in Syskit, the constraints are asked when a specialization is
@@ -116,7 +140,7 @@ module Syskit
       odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry)
       follower = @model.specialize(@model.follow_child => OroGen.rig.Follower.new_submodel)
       merged = odometry.composition_model.merge(follower.composition_model)
-      assert_equal [odometry, follower], merged.applied_specializations
+      assert_equal Set[odometry, follower], merged.applied_specializations
       assert_same merged, follower.composition_model.merge(odometry.composition_model)
       assert_same odometry.composition_model, odometry.composition_model.merge(@model)
     end
@@ -162,6 +186,17 @@ module Syskit
       error = assert_raises(DeclarationError) { @model.specialize(42 => Rig::Services::Odometry) }
       assert_match(/specialize cannot select a child with 42/, error.message)
       assert_empty @model.specializations
+    end
+
+    # As Syskit's specialization manager: a submodel has its parent's
+    # specializations, found by what they specialize.
+    def test_a_submodel_has_the_specializations_of_its_parent
+      odometry = @model.specialize(@model.pose_child => Rig::Services::Odometry)
+      submodel = @model.new_submodel
+      assert_equal [{ 'pose' => [Rig::Services::Odometry] }], submodel.specializations.specializations.keys
+      assert_equal @model.specializations.specializations.keys, submodel.specializations.specializations.keys
+      refute_same odometry, submodel.specializations.first
+      assert submodel.specializations.first.composition_model < submodel
     end
 
     # The block runs when the specialization is declared, so that a

@@ -9,6 +9,16 @@ module Syskit
   module GenTestHelpers
     BACKTRACE = /\.rb:\d+:in `/
 
+    # `rake test` in the guide's app: only the empty Base profile's tests
+    # fail, saying what +guide+ shows.
+    def assert_shown_rake_test(app, guide)
+      shown = guide.output_of('rake test').lines
+      out, err, status = rake_test(app)
+      refute status.success?, "#{out}\n#{err}"
+      assert_equal shown.last, out.lines.grep(/ runs, /).last
+      assert_equal 4, out.scan(shown[1].chomp).size, out
+    end
+
     def tmpdir
       dir = Dir.mktmpdir('syskit-gen')
       (@tmpdirs ||= []) << dir

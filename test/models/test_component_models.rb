@@ -106,5 +106,80 @@ module Syskit
       assert_equal 'out', port.name
       assert_equal 'left_out', port.to_component_port.name
     end
+
+    def test_a_proxy_task_is_an_abstract_task_of_the_model
+      model = Component.new_submodel
+      task = model.create_proxy_task
+      assert_kind_of model, task
+      assert task.abstract?
+      refute model.new.abstract?
+    end
+
+    def test_any_component_model_may_drive_a_device_held_in_its_dev_argument
+      device = Device.new_submodel(name: 'Imu')
+      model = Component.new_submodel { driver_for device, as: 'imu' }
+      assert_same model.imu_srv, model.find_data_service_from_type(device)
+      assert model.has_argument?(:imu_dev)
+      refute model.has_argument?(:other_dev)
+      refute Component.new_submodel.has_argument?(:imu_dev)
+    end
+
+    def test_a_private_specialization_is_not_among_the_models_it_fullfills
+      model = Component.new_submodel
+      specialized = model.specialize
+      assert_includes specialized.fullfilled_model, model
+      refute_includes specialized.fullfilled_model, specialized
+      assert_includes model.fullfilled_model, model
+    end
+
+    def test_a_component_model_may_provide_a_roby_task_service
+      service = Compat::Roby::TaskService.new_submodel(name: 'Logger')
+      model = Component.new_submodel { provides service }
+      assert model.fullfills?(service)
+      assert_includes model.fullfilled_model, service
+      assert_kind_of service, model.new
+      refute Component.new_submodel.fullfills?(service)
+    end
+
+    def dynamic_task_model
+      srv = DataService.new_submodel
+      TaskContext.new_submodel { dynamic_service(srv, as: 'dyn') { provides srv } }
+    end
+
+    def test_two_specializations_merge_into_a_new_one_with_the_services_of_both
+      base = dynamic_task_model
+      left = base.specialize
+      left.require_dynamic_service('dyn', as: 'left')
+      right = base.specialize
+      right.require_dynamic_service('dyn', as: 'right')
+      merged = left.merge(right)
+      assert merged.private_specialization?
+      assert_same base, merged.superclass
+      assert merged.left_srv
+      assert merged.right_srv
+      assert_nil left.find_data_service('right')
+      assert_nil right.find_data_service('left')
+    end
+
+    def test_a_specialization_merged_with_a_submodel_specializes_the_submodel
+      base = dynamic_task_model
+      left = base.specialize
+      left.require_dynamic_service('dyn', as: 'left')
+      sub = base.new_submodel
+      merged = left.merge(sub.specialize)
+      assert_same sub, merged.superclass
+      assert merged.left_srv
+      assert_raises(IncompatibleComponentModels) { left.merge(dynamic_task_model.specialize) }
+    end
+
+    def test_required_dynamic_services_are_a_list_for_any_component
+      assert_empty Component.new_submodel.each_required_dynamic_service
+      assert_empty Component.new_submodel.new.each_required_dynamic_service
+      model = dynamic_task_model.new_submodel
+      srv = model.require_dynamic_service('dyn', as: 'one')
+      assert_equal [srv], model.each_required_dynamic_service
+      task = model.new
+      assert_equal [srv.bind(task)], task.each_required_dynamic_service
+    end
   end
 end

@@ -58,5 +58,22 @@ module Syskit
       assert_equal '/double', placeholder.find_data_service_from_type(@pose).task_port_for(@pose, 'pose').type.name
       assert_equal '/float', placeholder.find_data_service_from_type(@heading).task_port_for(@heading, 'pose').type.name
     end
+
+    def test_selected_is_the_requirements_with_the_service_providing_the_required_one
+      facet = @task.to_instance_requirements.as(@pose)
+      assert_equal @task.to_instance_requirements.select_service(@task.front_pose_srv), facet.selected
+      placeholder = Models::FacetedAccess.new(@task, Models::Placeholder.for([@base, @pose]))
+      assert_nil placeholder.selected.service
+    end
+
+    def test_seeing_a_selected_service_through_a_parent_model_keeps_that_service
+      odometry = DataService.new_submodel(name: 'Odometry') { output_port 'odom', '/double' }
+      odometry.provides @pose, 'pose' => 'odom'
+      task = TaskContext.new_submodel(name: 'Wheels') { output_port 'ticks', '/double' }
+      task.provides odometry, as: 'odom'
+      requirements = task.to_instance_requirements.select_service(task.odom_srv)
+      assert_same task.odom_srv, requirements.as(@pose).service
+      assert_raises(DeclarationError) { requirements.as(@heading) }
+    end
   end
 end

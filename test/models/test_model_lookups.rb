@@ -54,7 +54,21 @@ module Syskit
     def test_short_name_is_the_name_or_what_stands_for_it
       assert_equal 'MyApp::Devices::Camera', MyApp::Devices::Camera.short_name
       assert_equal 'Srv', Syskit::DataService.new_submodel(name: 'Srv').short_name
-      assert_equal 'anonymous device', Syskit::Device.new_submodel.short_name
+      anonymous = Syskit::Device.new_submodel
+      assert_match(/\Aanonymous device #\d+\z/, anonymous.short_name)
+      assert_equal anonymous.short_name, anonymous.to_s
+    end
+
+    # As Syskit's, two anonymous models are shown apart: Syskit's tests
+    # name services after them (+provides srv, as: srv.to_s+).
+    def test_anonymous_models_are_shown_apart
+      first = Syskit::DataService.new_submodel
+      second = Syskit::DataService.new_submodel
+      refute_equal first.to_s, second.to_s
+      task_m = Syskit::TaskContext.new_submodel
+      task_m.provides first, as: first.to_s
+      task_m.provides second, as: second.to_s
+      assert_equal [first, second], task_m.each_data_service.map(&:model)
     end
 
     # As Syskit's: short_name is to_s, whatever shows the model otherwise

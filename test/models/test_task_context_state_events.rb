@@ -24,5 +24,11 @@ module Syskit
       assert_equal :stuck, parent.find_state_event(:STUCK)
       assert_nil TaskContext.find_state_event(:STUCK)
     end
+
+    def test_a_task_finds_the_events_of_its_model_states
+      child = TaskContext.new_submodel { runtime_states :GOING_UP }.new_submodel
+      assert_equal :going_up, child.new.state_event(:GOING_UP)
+      assert_nil child.new.state_event(:PRE_OPERATIONAL)
+    end
   end
 end

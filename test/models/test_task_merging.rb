@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'helper'
+require 'syskit/test/plan'
 
 module Syskit
   # Syskit's can_merge? and merge on tasks held in a plan as data: whether
@@ -69,6 +70,16 @@ module Syskit
       assert_equal default, bare.arguments.values[:exposure]
     end
 
+    def test_each_assigned_argument_lists_only_the_arguments_that_are_set
+      default = Compat::Roby::DefaultArgument.new(7)
+      task_m = TaskContext.new_submodel(name: 'Lidar') do
+        argument :range
+        argument :rate
+      end
+      task = task_m.new(range: default, rate: 10)
+      assert_equal [[:rate, 10]], task.arguments.each_assigned_argument.to_a
+    end
+
     def test_a_default_argument_gives_way_to_what_the_task_has
       default = Compat::Roby::DefaultArgument.new(7)
       own_default = Compat::Roby::DefaultArgument.new(8)
@@ -87,6 +98,31 @@ module Syskit
       left.merge(@task_m.new(exposure: 2))
       refute left.specialized_model?
       assert_equal 1, left.arguments[:exposure]
+    end
+
+    def test_children_given_roby_task_from_parent_task_take_their_compositions_argument
+      cmp_m = Composition.new_submodel
+      cmp_m.argument :exposure
+      cmp_m.add(@task_m, as: 'camera').with_arguments(exposure: Compat::Roby::Task.from(:parent_task).exposure)
+      plan = Test::Plan.new
+      short = cmp_m.with_arguments(exposure: 1).instanciate(plan).camera_child
+      long = cmp_m.with_arguments(exposure: 5).instanciate(plan).camera_child
+      other = cmp_m.with_arguments(exposure: 5).instanciate(plan).camera_child
+      assert_equal [1, 5], [short.exposure, long.exposure]
+      refute short.can_merge?(long)
+      assert long.can_merge?(other)
+    end
+
+    def test_tasks_bound_to_different_hosts_do_not_merge
+      left = @task_m.new
+      right = @task_m.new
+      left.required_host = 'host'
+      assert left.can_merge?(right)
+      assert right.can_merge?(left)
+      right.required_host = 'other'
+      refute left.can_merge?(right)
+      right.required_host = 'host'
+      assert left.can_merge?(right)
     end
   end
 end

@@ -44,6 +44,17 @@ module Syskit
       assert_equal [@task_m], other.provided_models
     end
 
+    def test_the_ports_of_a_service_of_a_specialized_task_are_those_of_its_own_model
+      @task_m.provides @srv_m, as: 'pose'
+      task = @task_m.new
+      assert_same @task_m.pose_srv, task.pose_srv.pose_port.model.component_model
+      task.specialize
+      port = task.pose_srv.pose_port
+      assert_same task.model, port.model.component_model.component_model
+      assert_equal 'pose', port.name
+      assert_equal task.pose_port, port.to_component_port
+    end
+
     def test_services_added_to_the_own_model_leave_the_task_model_alone
       task = @task_m.new
       task.specialize

@@ -163,11 +163,10 @@ module Syskit
         device(Devices::TemperatureSensor, as: 't').can_id(0x12)
       RUBY
       error, root = problem(robot)
-      assert_reported error, /device 't' has no 'can_id'/,
+      assert_reported error, Regexp.new(Regexp.escape("device 't' has no 'can_id': it is on no bus, and can_id is " \
+                                                      'for devices attached to a CommonModels::Devices::Bus::CAN bus')),
                       at: 'models/profiles/base.rb:10',
-                      hint: Regexp.new('can_id is for devices attached to a CommonModels::Devices::Bus::CAN bus: ' \
-                                       'declare t in a through \'bus_name\' do \.\.\. end block'),
-                      root: root
+                      hint: /\Adeclare t in a through 'bus_name' do \.\.\. end block\z/, root: root
     end
 
     def test_invalid_chained_values

@@ -255,13 +255,29 @@ module Syskit
                       at: 'models/profiles/rear.rb:2', hint: /its dynamic services: dimmer, export/, root: @root
     end
 
-    def test_require_dynamic_service_on_the_task_model_itself
-      error = load_robot(nil, 'models/profiles/rear.rb' => <<~RUBY)
+    def test_require_dynamic_service_on_the_task_model_itself_changes_it
+      assert_nil load_robot(nil, 'models/profiles/rear.rb' => <<~RUBY)
         using_task_library 'rig'
         OroGen.rig.Task.require_dynamic_service('export', as: 'rear')
       RUBY
-      assert_reported error, /require_dynamic_service\('export'\) on rig::Task itself: it is asked of a specialization/,
-                      at: 'models/profiles/rear.rb:2', hint: /rig::Task.with_dynamic_service/, root: @root
+      task = OroGen.rig.Task
+      assert_same task, task.rear_srv.component_model
+      assert_equal({ 'frame' => 'rear_frame' }, task.rear_srv.port_mappings)
+      assert task.find_port('rear_frame').dynamic?
+      assert_equal [task.rear_srv], task.each_required_dynamic_service.to_a
+    end
+
+    def test_a_dynamic_service_instanciates_itself_on_its_model
+      assert_nil load_robot(nil)
+      model = OroGen.rig.Task.specialize
+      dynamic = model.find_dynamic_service('export')
+      srv = dynamic.instanciate('side', prefix: 'lateral')
+      assert_same srv, model.side_srv
+      assert_equal({ prefix: 'lateral' }, srv.dynamic_service_options)
+      assert model.find_port('lateral_frame')
+      assert_raises(ArgumentError) { model.find_dynamic_service('export').instanciate('lamp') }
+      assert model.each_required_dynamic_service.one?
+      assert_empty OroGen.rig.Task.each_required_dynamic_service
     end
 
     def test_an_instance_named_like_a_service_of_another_model

@@ -36,14 +36,17 @@ module Syskit
         # loaded under the same name.
         path = File.expand_path(path)
         names = names_of(path)
-        return false if names.any? { |name| $LOADED_FEATURES.include?(name) }
+        if names.any? { |name| $LOADED_FEATURES.include?(name) }
+          inherit_failure(path)
+          return false
+        end
 
         # Marked as loaded first, so that a file that fails is reported once
         # rather than evaluated again by a later `require` of it.
         $LOADED_FEATURES.concat(names)
         source = UserFile.read(path)
         modules = source.match?(/^(module|class)\s+[A-Z]/) ? [] : namespace_for(path)
-        eval_in_namespace(source, path, modules)
+        loading(path) { eval_in_namespace(source, path, modules) }
         true
       end
 
@@ -154,6 +157,22 @@ module Syskit
         (@load_failures ||= {})[File.realpath(file)] ||= Location.of_exception(exception)
       end
 
+      # The app files being evaluated, innermost last.
+      def loading(path)
+        (@loading ||= []).push(path)
+        yield
+      ensure
+        @loading.pop
+      end
+
+      # A file that requires one that failed earlier (and so is not
+      # evaluated again) is incomplete too: it fails where that one did.
+      def inherit_failure(required)
+        failure = file_load_failure(required)
+        requirer = @loading&.last
+        (@load_failures[File.realpath(requirer)] ||= failure) if failure && requirer
+      end
+
       public
 
       # Where the error was that stopped the file +require_path+ (of the app
@@ -162,7 +181,20 @@ module Syskit
       def load_failure(require_path)
         return unless @load_failures
 
-        bundle_files(require_path).lazy.filter_map { |file| @load_failures[File.realpath(file)] }.first
+        bundle_files(require_path).lazy.filter_map { |file| file_load_failure(file) }.first
+      end
+
+      # Where the error was that stopped the file at +path+ from loading
+      # (in it, or in a file it requires), or nil when it did not fail.
+      def file_load_failure(path)
+        @load_failures&.[](File.realpath(path)) if File.file?(path)
+      end
+
+      # Where an app file failed that declares using_task_library +name+
+      # (so that the library is missing because of it), nil when none did.
+      def failed_user_of_library(name)
+        pattern = /using_task_library[\s(]*['"]#{Regexp.escape(name)}['"]/
+        @load_failures&.find { |file, _| File.file?(file) && UserFile.read(file).match?(pattern) }&.last
       end
 
       # Whether the file +require_path+ of the app or a bundle is loaded.

@@ -25,10 +25,11 @@ module Syskit
       class_option :robot, type: :string, default: 'default', desc: 'the robot configuration (config/robots/NAME.rb)'
       class_option :bus, type: :string, desc: 'the bus of the plan (default: its only bus with devices)'
 
-      desc 'replay PROFILE LOGFILE', 'what each device of a bus receives from a candump log'
+      desc 'replay [PROFILE] LOGFILE', 'what each device of a bus receives from a candump log'
       long_desc <<~TEXT
         Reads a candump log (candump -l or -L) and reports, per device attached
-        to the bus in PROFILE's plan: the frames it receives by its can_id filter,
+        to the bus in PROFILE's plan (without PROFILE, the app's first profile,
+        as for plan): the frames it receives by its can_id filter,
         the distinct ids, the first and last time and the mean rate; then the
         frames no device receives and those several devices receive.
 
@@ -43,9 +44,13 @@ module Syskit
                                 desc: 'the interface of the log to read (default: the first one in the log)'
       method_option :format, type: :string, default: 'text', enum: %w[text json], desc: 'output format'
       method_option :strict, type: :boolean, default: false, desc: 'fail on malformed lines'
-      def replay(profile_name, log_path)
+      def replay(profile_name, log_path = nil)
+        unless log_path
+          log_path = profile_name
+          profile_name = nil
+        end
         require_once 'syskit/bus/replay'
-        with_plan(profile_name) do |dispatcher, source, declared_bus|
+        with_plan(profile_name, __method__) do |dispatcher, source, declared_bus|
           replay = ::Syskit::Bus::Replay.new(dispatcher, log_path, interface: options[:interface], source: source,
                                                                    declared_bus: declared_bus)
           print_report(replay.run(strict: options[:strict]))
@@ -72,7 +77,7 @@ module Syskit
                              desc: 'json prints the final report only'
       def monitor(profile_name = nil)
         load_monitor
-        with_plan(profile_name) do |dispatcher, source, declared_bus|
+        with_plan(profile_name, __method__) do |dispatcher, source, declared_bus|
           io = ::Syskit::Bus::SocketCAN.open(options[:interface])
           begin
             source = source.merge('interface' => options[:interface])
@@ -106,7 +111,7 @@ module Syskit
       def timing(profile_name = nil)
         require_once 'syskit/cli/bus_timing'
         with_app(robots: [options[:robot]]) do |app|
-          profile = find_profile(app, profile_name)
+          profile = find_profile(app, profile_name, command: 'bus timing')
           # The traffic is the profile's, whatever the robot; a robot that
           # does not exist is still refused, as plan and replay refuse it.
           app.robot_config(options[:robot])
@@ -129,12 +134,12 @@ module Syskit
       # Loads the app, generates PROFILE's plan and yields the dispatcher of
       # --bus with what the report says about its source, and the plan's
       # entry of the bus when it declares CAN traffic.
-      def with_plan(profile_name)
+      def with_plan(profile_name, command)
         # The bus tools are loaded by their commands only: `syskit plan`
         # does not pay for them (nor for ffi, needed by monitor alone).
         require_once 'syskit/bus/dispatcher'
         with_app(robots: [options[:robot]]) do |app|
-          profile = find_profile(app, profile_name)
+          profile = find_profile(app, profile_name, command: "bus #{command}")
           plan = Network::Generator.plan_profile(app, profile, robot: options[:robot]).plan
           bus = options[:bus] || only_bus(plan)
           declared = plan.find_bus(bus)

@@ -46,7 +46,8 @@ module Syskit
     def plan(profile_name = nil, *actions)
       with_app(robots: [options[:robot]]) do |app|
         old = read_old_plan
-        profile = find_profile(app, profile_name)
+        profile = find_profile(app, profile_name, command: 'plan')
+        note_empty_profile(app, profile)
         result = plan_actions(app, profile, actions)
         if old
           print_diff(old, PlanFiles.plain(result.plan), new_name: "syskit plan #{[profile.name, *actions].join(' ')}")
@@ -61,6 +62,16 @@ module Syskit
     end
 
     no_commands do
+      # A profile with nothing to plan gives an empty plan: said on stderr,
+      # at the profile's declaration, rather than printed as if planned.
+      def note_empty_profile(app, profile)
+        return unless profile.action_names.empty?
+
+        empty = Warning.new("#{profile.name} has no device and no definition: its plan is empty",
+                            location: profile.declared_at, hint: "declare the robot's devices in its robot block")
+        warn Style.for($stderr).report(empty, app.root)
+      end
+
       # The renderer of +format+ (a key of RENDERERS).
       def renderer(format)
         require_once "syskit/render/#{format}"

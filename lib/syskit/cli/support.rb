@@ -6,7 +6,6 @@ require 'syskit/errors'
 module Syskit
   class CLI < Thor
     GEM_ROOT = File.expand_path('../../..', __dir__)
-    EXAMPLE_APP = File.join(GEM_ROOT, 'examples', 'awesome_robot')
 
     # What the command classes (syskit, syskit gen, syskit bus) share:
     # finding the app and the profile, and printing errors as
@@ -76,14 +75,13 @@ module Syskit
       end
 
       # --app (which must be an app), else the app containing the current
-      # directory, else the example app of a checkout of the gem (an
-      # installed gem has none).
+      # directory. Outside an app every command says so (as gen does)
+      # rather than quietly working on another app.
       def app_root
         return App.check_root(options[:app]) if options[:app]
 
         found = App.find_root(Dir.pwd)
         return found if found && !found.start_with?("#{GEM_ROOT}/bundles/")
-        return EXAMPLE_APP if File.directory?(EXAMPLE_APP)
 
         raise Error.new("#{Dir.pwd} is not in a Syskit app", hint: "pass --app DIR, or cd into an app; #{App::APP_HINT}")
       end
@@ -91,10 +89,10 @@ module Syskit
       # The profile called +name+: its full name or the end of it, in
       # constant form (Live::Base) or in the path form of `gen profile`
       # (live/base). Without +name+, the app's first profile, unless it has
-      # no device while others do.
-      def find_profile(app, name)
+      # no device while others do (the error's example runs +command+).
+      def find_profile(app, name, command:)
         profiles = app.profiles.values.sort_by(&:name)
-        return default_profile(app, profiles) if name.nil?
+        return default_profile(app, profiles, command) if name.nil?
 
         matches = profiles_ending_with(name, profiles)
         return matches.first if matches.size == 1
@@ -146,7 +144,7 @@ module Syskit
         (after ? segments.drop(after + 1) : segments).join('/')
       end
 
-      def default_profile(app, profiles)
+      def default_profile(app, profiles, command)
         if profiles.empty?
           raise UnknownName.new("#{app} has no profile",
                                 hint: 'declare one in models/profiles/ (syskit gen profile NAME)')
@@ -160,7 +158,7 @@ module Syskit
 
         raise UnknownName.new("#{first.name}, the app's first profile, has no device",
                               hint: "name the profile to plan: #{with_devices.map(&:name).join(', ')} " \
-                                    "(e.g. syskit plan #{with_devices.first.name})")
+                                    "(e.g. syskit #{command} #{with_devices.first.name})")
       end
 
       def report_error(error, root)

@@ -42,6 +42,14 @@ module Syskit
         def values
           self
         end
+
+        # Roby's +arguments.each_assigned_argument+: the arguments that are
+        # set (see #set?), as name and value (an Enumerator without block).
+        def each_assigned_argument
+          return enum_for(__method__) unless block_given?
+
+          each { |key, value| yield(key, value) if set?(key) }
+        end
       end
     end
   end

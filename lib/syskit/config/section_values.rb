@@ -15,10 +15,10 @@ module Syskit
       # properties[key] = value, the value coming from the sections +names+
       # of +file+; raises a ConfigurationError at the line of +key+.
       def apply(properties, file, names, key, value)
-        raise unknown_property(properties, file, names, key) unless properties.key?(key)
+        raise unknown_property(properties, file, names, key) unless properties.include?(key)
 
         check_symbol(properties, key, value)
-        properties[key] = numbers(file, names, key).convert(properties.declarations.fetch(key).type, value)
+        properties[key].write(numbers(file, names, key).convert(properties.declarations.fetch(key).type, value))
       rescue Types::ValueError => e
         raise ConfigurationError.new("property '#{key}' of #{properties.class.task_model.name}: #{e.message}",
                                      location: file.location_of(key, names),
@@ -40,7 +40,7 @@ module Syskit
       # +properties+ of +task_model+, in the order of the file.
       def problems(file, task_model)
         file.sections.each_value.flat_map do |section|
-          properties = task_model.properties_class.new
+          properties = task_model.properties_class.initial
           section.settings.filter_map do |key, value|
             apply(properties, file, [section.name], key, value)
             nil

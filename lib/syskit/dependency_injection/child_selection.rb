@@ -21,6 +21,13 @@ module Syskit
         [instance, selected, services, used]
       end
 
+      # #selection_for as Syskit's +instance_selection_for+: [an
+      # InstanceSelection, the keys used].
+      def instance_selection_for(name, requirements)
+        instance, selected, services, used = selection_for(name, requirements)
+        [InstanceSelection.new(instance, selected, InstanceRequirements.from(requirements), services), used]
+      end
+
       private
 
       # The selected values, each with the model it is selected for (nil

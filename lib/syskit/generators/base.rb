@@ -75,10 +75,17 @@ module Syskit
       def with_library(name)
         app = Syskit::App.new(root)
         app.load
-        path = app.orogen.spec_path(name) || raise(app.orogen.unknown_library(name, nil, error_class: GeneratorError))
+        path = app.orogen.spec_path(name) || raise(unknown_library(app, name))
         yield app.orogen.library(name) || load_library(app, name, path), path, app
       ensure
         app&.unload
+      end
+
+      # No .orogen file of that name: the hint also says how to start one.
+      def unknown_library(app, name)
+        error = app.orogen.unknown_library(name, nil, error_class: GeneratorError)
+        GeneratorError.new(error.message,
+                           hint: "#{error.hint}; to start a new task library: syskit gen tasklib #{name}")
       end
 
       # Loads a library the app does not use: an error of its .orogen file

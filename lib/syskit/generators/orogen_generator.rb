@@ -14,7 +14,17 @@ module Syskit
       # extension it builds on declares (driver_for and provides lines),
       # +driven+: the device and bus models it drives through them.
       TaskInfo = Struct.new(:name, :accessor, :doc, :device_name, :property, :output_port, :dynamic_type,
-                            :inherited, :driven, keyword_init: true)
+                            :inherited, :driven, :bus, keyword_init: true)
+
+      # The bus a task talks to through ports of its message type (the
+      # seed's form of test for a bus device's driver): the bus model's
+      # name, its short name, the example attribute calls of its attached
+      # devices and the stub device's options (a read-only or write-only
+      # client).
+      BusInfo = Struct.new(:model, :short_name, :attributes, :options, keyword_init: true)
+
+      # The values the generated test gives a bus attribute's parameters.
+      EXAMPLE_VALUES = %w[0x100 0x7ff 1 2 3].freeze
 
       # The extension file an app's models/orogen/LIB.rb takes the place of:
       # its path, the require that loads it, and where it comes from.
@@ -111,8 +121,35 @@ module Syskit
           name: model.name, accessor: "OroGen.#{library}.#{relative.split('::').join('.')}",
           doc: model.spec.doc, device_name: device_name(relative),
           property: (model.spec.properties.keys + model.property_declarations.keys).first,
-          **port_info(model), **inherited_info(model)
+          **port_info(model), **inherited_info(model), bus: bus_info(model)
         )
+      end
+
+      # The bus model +model+ is a client of, when it has static ports of a
+      # bus's message type and drives no bus itself: the app's own bus
+      # model first, then those of the bundles.
+      def bus_info(model)
+        return if model.driven_device_models.any?(Models::ComBusModel)
+
+        ports = model.ports.values.reject(&:dynamic?)
+        buses = Syskit::ComBus.each_submodel.select do |bus|
+          bus.message_type && ports.any? { |p| p.type.name == bus.message_type.name }
+        end
+        bus = buses.min_by { |b| [in_app?(b.declared_at) ? 0 : 1, b.name.to_s] }
+        bus && bus_description(bus, ports.select { |p| p.type.name == bus.message_type.name })
+      end
+
+      def bus_description(bus, ports)
+        options = []
+        options << 'bus_to_client: false' unless ports.any?(&:input?)
+        options << 'client_to_bus: false' unless ports.any?(&:output?)
+        attributes = bus.attached_device_configuration_modules.flat_map { |m| m.dsl_attribute_parameters.to_a }
+        calls = attributes.map do |attr, params|
+          count = params.count { |kind, _| %i[req opt rest].include?(kind) }
+          ".#{attr}(#{EXAMPLE_VALUES.first([count, 1].max).join(', ')})"
+        end
+        BusInfo.new(model: bus.name, short_name: bus.name.split('::').last, attributes: calls.join,
+                    options: options.map { |o| ", #{o}" }.join)
       end
 
       # The ports the template's examples name.

@@ -60,10 +60,21 @@ module Syskit
       end
 
       # The port +name+ of the selected service, or of the model when none
-      # is selected (nil when there is none).
+      # is selected (nil when there is none), as a port of these
+      # requirements (Syskit's: +component_model+ is the requirements; see
+      # #self_port_to_component_port).
       def find_port(name)
         owner = model
-        owner.respond_to?(:find_port) ? owner.find_port(name) : nil
+        port = owner.respond_to?(:find_port) ? owner.find_port(name) : nil
+        return unless port
+
+        port.class.new(self, port.orogen_port, name.to_s)
+      end
+
+      # The port of the component model that +port+ (one of these
+      # requirements' ports) stands for.
+      def self_port_to_component_port(port)
+        model.find_port(port.name).to_component_port
       end
 
       # These requirements with the service +name+ of the component model

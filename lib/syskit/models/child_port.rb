@@ -52,6 +52,11 @@ module Syskit
         @port.is_a?(Port) ? @port.orogen_model : @port
       end
 
+      # The oroGen port of the owner's port (see Port#orogen_port).
+      def orogen_port
+        @port.is_a?(Port) ? @port.orogen_port : @port
+      end
+
       def input?
         direction == :input
       end
@@ -114,7 +119,12 @@ module Syskit
         other.respond_to?(:key) && key == other.key
       end
 
+      # The same port of the same child (see #key); a Port of the child
+      # (+Port.new(child, srv_port.orogen_model)+, as Syskit's tests make
+      # them) is equal too (see Port#==).
       def ==(other)
+        return other == self if other.is_a?(Port)
+
         other.is_a?(ChildPort) && same_port?(other)
       end
       alias eql? ==

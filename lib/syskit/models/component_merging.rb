@@ -33,6 +33,7 @@ module Syskit
         return other.merge(self) if other.is_a?(BoundDataService) || other.placeholder?
         return self if self <= other
         return other if other <= self
+        return merge_private_specializations(other) if private_specialization? || other.private_specialization?
 
         merged = merged_specializations(other)
         return merged if merged
@@ -48,7 +49,31 @@ module Syskit
         self
       end
 
+      # This model with the services +from+ required of dynamic services
+      # that it lacks, required on a specialization of it when
+      # +specialize_if_needed+ (else on itself), as Syskit's
+      # +apply_missing_dynamic_services_from+.
+      def apply_missing_dynamic_services_from(from, specialize_if_needed)
+        missing = from.each_required_dynamic_service.reject { |srv| find_data_service(srv.full_name) }
+        return self if missing.empty?
+
+        model = specialize_if_needed ? specialize : self
+        missing.each do |srv|
+          model.require_dynamic_service(srv.dynamic_service.name, as: srv.full_name, **srv.dynamic_service_options)
+        end
+        model
+      end
+
       private
+
+      # Two specializations (see TaskSpecialization) merge into one new
+      # specialization of their merged concrete models, with the dynamic
+      # services both required.
+      def merge_private_specializations(other)
+        base = concrete_model.merge(other.concrete_model)
+        result = base.apply_missing_dynamic_services_from(self, true)
+        result.apply_missing_dynamic_services_from(other, base.equal?(result))
+      end
 
       # The model made of this one's and +other+'s specializations, when
       # both specialize one model (see CompositionSpecializations).

@@ -208,10 +208,20 @@ module Syskit
         facets = existing ? facets_of(existing, requirements) : []
         requirements = overloaded(existing, requirements, location) if existing
         child = CompositionChild.new(self, name, requirements, location, optional: existing&.optional? || false,
-                                                                         facets: facets - requirements.models)
+                                                                         facets: facets - requirements.models,
+                                                                         parent_model: overloaded_child(existing))
         (@children ||= {})[name] = child
         define_child_readers(name)
         child
+      end
+
+      # The child of a parent model that +existing+ (the child being
+      # overloaded) stands for: Syskit's parent_model of the new child.
+      def overloaded_child(existing)
+        return unless existing
+        return existing.parent_model if existing.equal?(@children&.[](existing.child_name))
+
+        superclass.find_child(existing.child_name)
       end
 
       # The models +existing+ is known as, which an overload with

@@ -4,6 +4,7 @@ require 'syskit/models/child_port'
 require 'syskit/models/port_lookup'
 require 'syskit/models/child_service_view'
 require 'syskit/models/composition_child_binding'
+require 'syskit/models/composition_child_overload'
 
 module Syskit
   module Models
@@ -19,6 +20,7 @@ module Syskit
       include ChildConnections
       include ChildReference
       include Binding
+      include Overload
 
       # +reached_through+: for a child of a child composition, reached as
       # +first_child.src_child+, the child it is reached through (nil for a
@@ -29,8 +31,9 @@ module Syskit
       attr_reader :composition_model, :child_name, :requirements, :declared_at, :reached_through
 
       def initialize(composition_model, child_name, requirements = InstanceRequirements.new([Syskit::Component]),
-                     location = nil, optional: false, reached_through: nil, facets: [])
+                     location = nil, optional: false, reached_through: nil, facets: [], parent_model: nil)
         @composition_model = composition_model
+        @parent_model = parent_model
         @facets = facets.freeze
         @child_name = child_name
         @declared_at = location
@@ -47,7 +50,8 @@ module Syskit
 
       # The same child, as seen from the submodel +model+ of its composition.
       def promote(model)
-        CompositionChild.new(model, child_name, requirements, declared_at, optional: optional?, facets: facets)
+        CompositionChild.new(model, child_name, requirements, declared_at, optional: optional?, facets: facets,
+                                                                           parent_model: parent_model)
       end
 
       # As a selection (+use('x' => first_child)+), the child itself, with
@@ -62,6 +66,7 @@ module Syskit
       def requirements=(requirements)
         # Held by the model from now on, as Syskit freezes what it is given.
         @requirements = requirements.freeze
+        @overload_info = nil
         @ports = nil
         @children = nil
         define_port_readers
@@ -106,6 +111,11 @@ module Syskit
       # placeholder model of what it requires (see Placeholder).
       def model
         Placeholder.for(models)
+      end
+
+      # What the child's requirements stand for (see InstanceRequirements#model).
+      def base_model
+        requirements.base_model
       end
 
       def fullfills?(model)

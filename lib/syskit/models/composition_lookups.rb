@@ -44,6 +44,24 @@ module Syskit
         find_child(name) || specializations.lazy.filter_map { |s| s.composition_model.find_child(name) }.first
       end
 
+      # What +context+ (selections, see Network::Selection.context_from)
+      # selects for each child, as Syskit's +find_children_models_and_tasks+:
+      # [the InstanceSelection of each child selected by name, that of every
+      # child, the keys of +context+ each child used], by child name.
+      def find_children_models_and_tasks(context)
+        context = Network::Selection.context_from(context)
+        explicit = {}
+        all = {}
+        used = {}
+        each_child do |name, child|
+          result = Network::Selection.select(child, context)
+          all[name] = InstanceSelection.new(result.requirements.instance, result.requirements, child.requirements)
+          explicit[name] = all[name] if result.explicit
+          used[name] = result.used_keys
+        end
+        [explicit, all, used]
+      end
+
       # The error for +name+ (a part of the +use+ key +key+), which is no
       # child of this model.
       def unknown_child(name, key, location)

@@ -84,11 +84,23 @@ module Syskit
           next unless selected
 
           selected = Array(selected)
-          return false unless Array(models).all? { |m| selected.any? { |s| s.fullfills?(m) } }
+          return false unless Array(models).all? { |m| selected.any? { |s| CompositionSpecialization.match?(s, m) } }
 
           matched = true
         end
         matched
+      end
+
+      # Whether +selected+ (requirements or a model) fullfills +model+ for
+      # a specialization: through its service when one is selected, as in
+      # Syskit (a task that provides both X and Y, selected through its X
+      # service, matches a specialization on X, not one on Y).
+      def self.match?(selected, model)
+        service = selected.service if selected.is_a?(InstanceRequirements)
+        return selected.fullfills?(model) unless service
+        return service.fullfills?(model) if model.is_a?(DataServiceModel)
+
+        selected.component_model.fullfills?(model)
       end
 
       # Syskit's lookup for specialization constraint blocks: the models

@@ -2,6 +2,7 @@
 
 require 'syskit/models/specialization_mappings'
 require 'syskit/models/composition_specialization'
+require 'syskit/models/specialization_manager'
 
 module Syskit
   module Models
@@ -43,11 +44,12 @@ module Syskit
         spec
       end
 
-      # The specializations of this model, its parents' included.
+      # The specializations of this model, its parents' included (a
+      # SpecializationManager, as Syskit's).
       def specializations
-        inherited = superclass.respond_to?(:specializations) ? superclass.specializations : []
+        inherited = superclass.respond_to?(:specializations) ? superclass.specializations.to_a : []
         promoted = inherited.map { |spec| (@promoted_specs ||= {}.compare_by_identity)[spec] ||= spec.promote(self) }
-        promoted + own_specializations
+        SpecializationManager.new(self, promoted + own_specializations)
       end
 
       # Adds a constraint on which specializations may be combined: the
@@ -62,12 +64,15 @@ module Syskit
         inherited + (@specialization_constraints || [])
       end
 
-      # For a specialized model, the specializations applied to make it.
+      # For a specialized model, the specializations applied to make it
+      # (a Set, as Syskit's).
       def applied_specializations
         return @applied_specializations if @applied_specializations
 
-        superclass.respond_to?(:applied_specializations) ? superclass.applied_specializations : []
+        superclass.respond_to?(:applied_specializations) ? superclass.applied_specializations : NO_SPECIALIZATIONS
       end
+
+      NO_SPECIALIZATIONS = Set.new.freeze
 
       # The model a specialized model was made from (itself otherwise).
       def specialization_root
@@ -251,7 +256,7 @@ module Syskit
 
       def become_specialization(specs, children, root)
         @specialization_root = root
-        @applied_specializations = specs.freeze
+        @applied_specializations = specs.to_set.freeze
         @specialized_children = children.freeze
         @declared_at = root.declared_at
         @given_name = "#{root.short_name}/" + children.map do |name, models|

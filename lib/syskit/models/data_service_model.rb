@@ -136,8 +136,18 @@ module Syskit
         constant_name && !constant_name.start_with?('#<') ? constant_name : @given_name
       end
 
+      # An anonymous model is shown with a number of its own, so that two
+      # are told apart (Syskit's show their address): Syskit's tests name
+      # services after anonymous models (+provides srv, as: srv.to_s+).
       def to_s
-        name || "anonymous #{self.class.kind}"
+        name || (@anonymous_name ||= "anonymous #{self.class.kind} ##{DataServiceModel.next_anonymous_number}")
+      end
+
+      ANONYMOUS_LOCK = Mutex.new
+      private_constant :ANONYMOUS_LOCK
+
+      def self.next_anonymous_number
+        ANONYMOUS_LOCK.synchronize { @anonymous_number = (@anonymous_number || 0) + 1 }
       end
       alias inspect to_s
 

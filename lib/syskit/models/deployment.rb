@@ -11,11 +11,11 @@ module Syskit
       Orogen::DeploymentSpec.new(name, location: Location.of_caller)
     end
 
-    # A task model made in Ruby, standing for an oroGen task context spec
-    # without a file (what +create_orogen_task_context_model+ makes in
-    # Syskit's tests).
-    def self.create_orogen_task_context_model(name = nil)
-      Syskit::TaskContext.new_submodel(name: name)
+    # An oroGen task model made in Ruby, of no task model yet (see
+    # Orogen::ModelView.define), as Syskit's tests make them; its task
+    # model is made by +TaskContext.define_from_orogen+.
+    def self.create_orogen_task_context_model(name = nil, project: nil, subclasses: nil)
+      Orogen::ModelView.define(name, project: project, subclasses: subclasses)
     end
 
     # The metamodel of deployments (extended onto Syskit::Deployment): a

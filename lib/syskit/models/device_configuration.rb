@@ -24,7 +24,17 @@ module Syskit
 
           set_dsl_attribute(attr, args, filter ? filter_method : nil)
         end
+        (@dsl_attribute_names ||= []) << attr
         attr
+      end
+
+      # The attributes declared with dsl_attribute, and the parameters of
+      # each (as Method#parameters; [[:rest]] when it has no block).
+      def dsl_attribute_parameters
+        (@dsl_attribute_names || []).to_h do |attr|
+          filter = :"__dsl_attribute_filter_#{attr}"
+          [attr, method_defined?(filter) ? instance_method(filter).parameters : [[:rest]]]
+        end
       end
 
       # Whether devices already have a method +name+: a public one, or a

@@ -3,8 +3,33 @@
 module Syskit
   module Models
     # What a task model drives: its driver services (master and slave), and
-    # the device models they drive. Part of TaskModel (uses its cache).
+    # the device models they drive. Part of Models::Component (uses its cache).
     module DriverServices
+      # Declares that this component drives devices of +model+; the device is given
+      # to the component as its +<as>_dev+ argument. Ports of the device model are
+      # bound by name and type, or by +'device_port' => 'task_port'+ mappings
+      # (keywords or a hash). +slave_of: 'master'+ makes it a slave device
+      # of the master service's device (see Robot::SlaveDeviceInstance).
+      def driver_for(model, mappings = {}, as: nil, slave_of: nil, **more)
+        location = Location.of_caller
+        unless model.is_a?(DeviceModel)
+          hint = if model.is_a?(DataServiceModel) then "#{model} is a data service: use provides #{model}, as: 'name'"
+                 else NotAModel.hint('driver_for', model, location)
+                 end
+          raise DeclarationError.new("driver_for expects a device or bus model, got #{model.inspect}",
+                                     location: location, hint: hint)
+        end
+
+        as ||= Naming.underscore(model.name.to_s.split('::').last)
+        add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
+      end
+
+      # Whether +name+ is the argument holding the device of a driver
+      # service (+gps_dev+ for +driver_for Gps, as: 'gps'+).
+      def device_argument?(name)
+        driver_services.any? { |srv| srv.argument_name == name }
+      end
+
       # Services through which this task drives a device or a bus (Syskit's
       # master driver services: slave services are served with their master).
       def driver_services

@@ -61,10 +61,17 @@ module Syskit
         )
       end
 
+      # Syskit's +instanciate+: the instance +name+ of this dynamic service
+      # (its block given +options+) becomes a service of its component
+      # model (see DynamicServices#require_dynamic_service), and is returned.
+      def instanciate(name, **options)
+        component_model.require_dynamic_service(self.name, as: name, **options)
+      end
+
       # The service named +as+ (a BoundDataService of +on+, the task model or
-      # a specialization of it) and the ports it needs created; +location+
-      # is where the instance is asked for.
-      def instantiate(as, options, location, on: component_model)
+      # a specialization of it) and the ports it needs created, not yet
+      # registered on +on+; +location+ is where the instance is asked for.
+      def instance_for(as, options, location, on: component_model)
         context = InstantiationContext.new(on, as, self, **options)
         evaluate(context, as)
         return [context.service, context.created_ports] if context.service

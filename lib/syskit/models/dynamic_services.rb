@@ -36,12 +36,10 @@ module Syskit
 
       # Syskit's +require_dynamic_service+: the instance +as+ of the dynamic
       # service +dynamic_name+ (its block given +options+) becomes a service
-      # of this model, with the ports it creates. It is asked of a
-      # specialization (+Task.specialize+, or +Task.with_dynamic_service+),
-      # which leaves the task model as it is: Syskit would change the task
-      # model itself, for every use, and that is refused here (see
-      # #not_a_specialization). Asking again for an instance of the same
-      # model returns it.
+      # of this model, with the ports it creates. As in Syskit, this
+      # changes the model itself: to leave a task model as it is, ask it
+      # of a specialization (+Task.specialize+, or +Task.with_dynamic_service+).
+      # Asking again for an instance of the same model returns it.
       def require_dynamic_service(dynamic_name, as:, **options)
         location = Location.of_caller
         dynamic = fetch_dynamic_service(dynamic_name, location, "to require as '#{as}'")
@@ -52,21 +50,6 @@ module Syskit
         service = instantiate_dynamic_service(dynamic, as.to_s, options, location)
         (@required_dynamic_services ||= []) << service
         service
-      end
-
-      # The services required from dynamic services, inherited ones
-      # included, in the order they were required.
-      def required_dynamic_services
-        inherited = superclass.respond_to?(:required_dynamic_services) ? superclass.required_dynamic_services : []
-        inherited + (@required_dynamic_services || [])
-      end
-
-      # Enumerates them, as Syskit's model-level method: each a service of
-      # this model (+srv.model+, +srv.dynamic_service_options+).
-      def each_required_dynamic_service(&)
-        return enum_for(__method__) unless block_given?
-
-        required_dynamic_services.each(&)
       end
 
       # The dynamic service +name+, or an error located at +location+
@@ -106,23 +89,11 @@ module Syskit
 
       # The service the block of +dynamic+ declares for the instance +as+,
       # registered on this model: on a task model, with the ports it
-      # creates, on a specialization only (see #not_a_specialization).
+      # creates.
       def instantiate_dynamic_service(dynamic, as, options, location)
-        raise not_a_specialization(dynamic.name, location) unless specialization?
-
-        service, ports = dynamic.instantiate(as, options, location, on: self)
-        ports.each { |port| spec.ports[port.name] = port }
+        service, ports = dynamic.instance_for(as, options, location, on: self)
+        ports.each { |port| spec.add_port(port) }
         register_service(service)
-      end
-
-      # Syskit changes the task model itself; here the ports a dynamic
-      # service creates go on a specialization, made for the purpose.
-      def not_a_specialization(dynamic_name, location)
-        DeclarationError.new(
-          "require_dynamic_service('#{dynamic_name}') on #{name} itself: it is asked of a specialization",
-          location: location,
-          hint: "write #{name}.specialize.require_dynamic_service(...), or use #{name}.with_dynamic_service(...)"
-        )
       end
 
       def already_a_service(existing, dynamic, location)

@@ -57,6 +57,17 @@ module Syskit
         !find_port(name).nil?
       end
 
+      # Syskit's +selected+: the object's requirements, with the service
+      # of its component model that provides the required data service
+      # selected when one data service alone is required.
+      def selected
+        requirements = object.to_instance_requirements
+        models = required_models
+        return requirements if requirements.service || models.size != 1 || !models.first.is_a?(DataServiceModel)
+
+        requirements.find_data_service_from_type(models.first)&.as(models.first) || requirements
+      end
+
       # The ports of the required models, as the facet's.
       def ports
         names = required_models.flat_map { |model| model.ports.keys }.uniq

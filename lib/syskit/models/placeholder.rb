@@ -62,11 +62,9 @@ module Syskit
       # Its component model's fullfilled models (none for Syskit::Component),
       # then its services' and Syskit::AbstractComponent: not the task model
       # class the gem builds it from.
-      def fullfilled_models
+      def fullfilled_model
         models = []
-        unless proxied_component_model.equal?(Syskit::Component)
-          models.concat(proxied_component_model.fullfilled_models)
-        end
+        models.concat(proxied_component_model.fullfilled_model) unless proxied_component_model.equal?(Syskit::Component)
         proxied_data_service_models.each { |srv| models.concat(srv.fullfilled_models) }
         models.delete(Syskit::AbstractComponent)
         (models.uniq << Syskit::AbstractComponent).freeze

@@ -17,7 +17,7 @@ module Syskit
       # another name on +component_model+.
       def initialize(component_model, orogen_model, name = orogen_model.name)
         @component_model = component_model
-        @port = orogen_model
+        @port = orogen_model.is_a?(PortModifiers) ? orogen_model.orogen_port : orogen_model
         @name = name
         @type = orogen_model.type
       end
@@ -117,9 +117,11 @@ module Syskit
         )
       end
 
+      # The same port of the same model: a Port, or a composition child's
+      # port (ChildPort) that is this port of that child.
       def ==(other)
-        other.is_a?(Port) && other.component_model == component_model && other.name == name &&
-          other.orogen_port.equal?(orogen_port)
+        (other.is_a?(Port) || other.is_a?(ChildPort)) && other.component_model == component_model &&
+          other.name == name && other.orogen_port.equal?(orogen_port)
       end
       alias eql? ==
 

@@ -92,11 +92,46 @@ module Syskit
       end
 
       def no_port(srv_port)
+        pointer = pointer_port(srv_port)
+        return pointer_mismatch(srv_port, pointer) if pointer
+
+        same_direction = @task_model.ports.values.select { |p| p.direction == srv_port.direction }
+        listed = same_direction.sort_by(&:name).map { |p| "#{p.name} (#{p.type})" }
         InvalidProvides.new(
           "#{@task_model.name} has no #{srv_port.direction} port of type #{srv_port.type} " \
-          "for #{@srv_model}'s port '#{srv_port.name}'",
+          "for #{@srv_model}'s port '#{srv_port.name}'" \
+          "#{"; its #{srv_port.direction} ports: #{listed.join(', ')}" unless listed.empty?}",
           location: @location,
           hint: "add the port to the task's .orogen declaration or map it: '#{srv_port.name}' => 'task_port'"
+        )
+      end
+
+      # A task port that holds the service port's type behind oroGen's
+      # read-only pointer (ro_ptr), or the other way round.
+      def pointer_port(srv_port)
+        wanted = [srv_port.type.to_s, pointer_of(srv_port.type)]
+        @task_model.ports.values.find do |p|
+          next false unless p.direction == srv_port.direction
+
+          wanted.include?(p.type.to_s) || pointer_of(p.type) == srv_port.type.to_s
+        end
+      end
+
+      def pointer_of(type)
+        "#{Types::Registry::RO_PTR}<#{type}>"
+      end
+
+      def pointer_mismatch(srv_port, task_port)
+        pointer = task_port.type.to_s.start_with?(Types::Registry::RO_PTR)
+        fix = if pointer
+                "declare #{@srv_model}'s port '#{srv_port.name}' with ro_ptr('#{srv_port.type}'), as the task's is"
+              else
+                "declare #{@srv_model}'s port '#{srv_port.name}' as a plain '#{task_port.type}', as the task's is"
+              end
+        InvalidProvides.new(
+          "#{@task_model.name}'s #{task_port.direction} port '#{task_port.name}' is a #{task_port.type}, " \
+          "not the #{srv_port.type} of #{@srv_model}'s port '#{srv_port.name}'",
+          location: @location, hint: "#{fix} (ro_ptr(T) and T are different types to Syskit)"
         )
       end
 

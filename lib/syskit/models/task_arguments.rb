@@ -56,9 +56,12 @@ module Syskit
           (superclass.respond_to?(:argument_declared?) && superclass.argument_declared?(name))
       end
 
-      # Syskit's name for #argument_declared?.
+      # Whether the model has the argument +name+: declared with
+      # #argument, or holding the device of a driver service (Syskit
+      # declares +<as>_dev+ for each +driver_for+).
       def has_argument?(name) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-        argument_declared?(name.to_sym)
+        name = name.to_sym
+        argument_declared?(name) || (respond_to?(:device_argument?) && device_argument?(name))
       end
 
       def argument_declarations

@@ -4,6 +4,7 @@ require 'syskit/models/component'
 require 'syskit/models/port_lookup'
 require 'syskit/models/dynamic_services'
 require 'syskit/models/task_specialization'
+require 'syskit/models/task_context_orogen'
 
 module Syskit
   module Models
@@ -18,31 +19,39 @@ module Syskit
       include PortModelLookups
       include DynamicServices
       include TaskSpecialization
+      include TaskContextOrogen
 
       attr_reader :spec
 
       # A submodel made in Ruby (see Component#new_submodel);
       # +orogen_model_name:+ names its oroGen model ('lib::Task'), as
       # Syskit's +TaskContext.new_submodel(orogen_model_name: ...)+ does.
-      def new_submodel(orogen_model_name: nil, **options, &block)
+      # With +orogen_model:+ (an Orogen::ModelView), the submodel stands for
+      # that oroGen model (see #define_from_orogen).
+      def new_submodel(orogen_model_name: nil, orogen_model: nil, **options, &block)
+        return new_model(orogen_model.spec, orogen_model: orogen_model) if orogen_model
+
         model = super(**options, &block)
         model.spec.orogen_model_name = orogen_model_name if orogen_model_name
         model
       end
 
-      # A new task model for +spec+, subclassing this one.
-      def new_model(spec)
+      # A new task model for +spec+, subclassing this one; +orogen_model+
+      # is the view of +spec+ it is known by, when one was made already.
+      def new_model(spec, orogen_model: nil)
         model = Class.new(self)
         model.send(:setup_model, spec)
+        orogen_model&.model = model
+        model.instance_variable_set(:@orogen_model, orogen_model)
         model
       end
 
       def name
-        spec ? spec.name : super
+        registered_name || (spec ? spec.name : super)
       end
 
       def to_s
-        name
+        name || '#<anonymous task model>'
       end
 
       # The name shown to users: #to_s, as Syskit's models have it.
@@ -108,25 +117,6 @@ module Syskit
         spec ? spec.all_properties : {}
       end
 
-      # Declares that this task drives devices of +model+; the device is given
-      # to the task as its +<as>_dev+ argument. Ports of the device model are
-      # bound by name and type, or by +'device_port' => 'task_port'+ mappings
-      # (keywords or a hash). +slave_of: 'master'+ makes it a slave device
-      # of the master service's device (see Robot::SlaveDeviceInstance).
-      def driver_for(model, mappings = {}, as: nil, slave_of: nil, **more)
-        location = Location.of_caller
-        unless model.is_a?(DeviceModel)
-          hint = if model.is_a?(DataServiceModel) then "#{model} is a data service: use provides #{model}, as: 'name'"
-                 else NotAModel.hint('driver_for', model, location)
-                 end
-          raise DeclarationError.new("driver_for expects a device or bus model, got #{model.inspect}",
-                                     location: location, hint: hint)
-        end
-
-        as ||= Naming.underscore(model.name.to_s.split('::').last)
-        add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
-      end
-
       # Stands for what the real component does at configure time, when
       # the network is generated without it (e.g. creating per-device ports
       # from the property the configure method just set).
@@ -158,34 +148,6 @@ module Syskit
       # Operations by name (inherited ones included).
       def operations
         spec ? spec.all_operations : {}
-      end
-
-      # The task model, among this model's submodels, standing for the oroGen
-      # model +orogen_model+ (a model's +orogen_model+, or its spec); nil
-      # when there is none. Forgotten submodels (#clear_submodels) are gone.
-      def find_model_by_orogen(orogen_model)
-        each_submodel.find do |model|
-          model.spec && (model.spec.equal?(orogen_model) || model.orogen_model == orogen_model)
-        end
-      end
-
-      def has_model_for?(orogen_model) # rubocop:disable Naming/PredicatePrefix -- Syskit's name
-        !find_model_by_orogen(orogen_model).nil?
-      end
-
-      # As #find_model_by_orogen, raising UnknownName (an ArgumentError)
-      # when no model stands for +orogen_model+.
-      def model_for(orogen_model)
-        find_model_by_orogen(orogen_model) ||
-          raise(UnknownName.new("no task model of #{self} stands for the oroGen model #{orogen_model}",
-                                location: Location.of_caller,
-                                hint: 'define one with new_submodel, or load the .orogen file that declares it'))
-      end
-
-      # The submodel whose oroGen model is called +name+ ('lib::Task'), nil
-      # when there is none.
-      def find_model_from_orogen_name(name)
-        each_submodel.find { |model| model.spec && model.spec.name == name }
       end
 
       # The states every task context has (RTT's), which have an event;
@@ -245,6 +207,13 @@ module Syskit
       # (theirs, a Syskit::Port), for each static port of the spec.
       def define_port_readers(spec)
         spec.all_ports.each_key { |name| define_port_reader(name) }
+        spec.all_properties.each_key { |name| define_property_reader(name) }
+      end
+
+      # +task.<name>_property+, the task's Property.
+      def define_property_reader(name)
+        reader = "#{name}_property"
+        define_method(reader) { property(name) } unless method_defined?(reader)
       end
 
       def define_port_reader(name)

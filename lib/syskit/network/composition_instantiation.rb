@@ -85,14 +85,15 @@ module Syskit
         child_context = child_context(context, selection, requirements, name, child_requirements)
         task = instantiate(child_requirements, child_context, "#{composition.name}.#{name}", composition)
         composition.add_child(name, task)
-        composition.child_selections[name] = child_requirements
+        composition.child_selection[name] = InstanceSelection.new(task, child_requirements, child.requirements)
       end
 
       # The child +name+ is the task of another child (+reference+).
       def add_referenced_child(composition, name, reference)
         requirements = referenced_requirements(reference)
         composition.add_child(name, requirements.instance)
-        composition.child_selections[name] = requirements
+        required = composition.model.find_child(name).requirements
+        composition.child_selection[name] = InstanceSelection.new(requirements.instance, requirements, required)
       end
 
       # The context a child's own children are selected in: without what
@@ -126,7 +127,8 @@ module Syskit
       def referenced_requirements(reference)
         child = reference.referenced_child
         task = referenced_task(child)
-        service = reference.referenced_service || referenced_owner(child).child_selections[child.child_name]&.service
+        selection = referenced_owner(child).child_selection[child.child_name]
+        service = reference.referenced_service || selection&.selected&.service
         InstanceRequirements.new([task.model], service: service, instance: task, declared_at: child.declared_at)
       end
 

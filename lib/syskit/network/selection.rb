@@ -46,8 +46,26 @@ module Syskit
         # to what it requires, as in Syskit (+narrow('pose' => Srv)+: a Pose
         # that also provides Srv).
         selected = selected.add_models(child.models, location: location) if services_only?(selected)
+        selected = with_service_selected_by_model(selected, child, context)
         check_fullfills(child, selected, value, location)
         Result.new(child.requirements.merge_selection(selected), used, explicit, nil)
+      end
+
+      # A component selected by name without saying which of its services
+      # fills the child takes the one the context selects for a data
+      # service model the child requires (+'test' => Task, Srv =>
+      # Task.x_srv+), as Syskit does.
+      def with_service_selected_by_model(selected, child, context)
+        component = selected.component_model
+        return selected if selected.service || selected.instance || !component.is_a?(Class)
+
+        child.models.grep(Models::DataServiceModel).each do |service_model|
+          service = context.direct_selection_for(service_model)
+          next unless service.is_a?(Models::BoundDataService) && service.component_model.equal?(component)
+
+          return selected.select_service(service)
+        end
+        selected
       end
 
       # Whether +selected+ names data services only (no component, device

@@ -42,6 +42,22 @@ module Syskit
         end
       end
 
+      # Whether +task_model+ has the ports of a client of +bus_model+ in the
+      # directions asked.
+      def bus_client?(task_model, bus_model, bus_to_client:, client_to_bus:)
+        type = bus_model.message_type
+        ports = task_model.ports.values.select { |p| p.type == type }
+        (!bus_to_client || ports.any?(&:input?)) && (!client_to_bus || ports.any?(&:output?))
+      end
+
+      # A submodel of +task_model+ that drives +model+ (a test's stub
+      # device, for a task that declares no driver_for yet).
+      def described_driver(task_model, model)
+        task_model("#{task_model.name.gsub('::', '_')}_driving_#{model_slug(model)}", base: task_model) do |task|
+          task.driver_for(model, as: 'dev')
+        end
+      end
+
       # A task model providing each of +service_models+, with their ports
       # (made once per list of services); a submodel of +base+ (a task
       # model) when given.

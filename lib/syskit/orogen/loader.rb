@@ -133,6 +133,11 @@ module Syskit
       end
 
       # The error for a task library that is on no search directory.
+      # Where the app file that would have loaded library +name+ failed.
+      def failed_user_of(name)
+        @app.failed_user_of_library(name)
+      end
+
       def unknown_library(name, location, error_class: FileLoadError)
         searched = @app.orogen_search_dirs.map { |d| Location.new(d, 0).relative_path(@app.root) }
         error_class.new(

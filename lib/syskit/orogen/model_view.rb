@@ -9,10 +9,38 @@ module Syskit
       # +declarations+: the model made in Ruby the spec is of, whose ports
       # may be declared through the view (see #input_port).
       # +model+: the task model whose oroGen model this is, if any.
-      def initialize(spec, model: nil, declarations: nil)
+      def initialize(spec, model: nil, declarations: nil, superclass: nil)
         @spec = spec
         @model = model
         @declarations = declarations
+        @superclass = superclass
+      end
+
+      # An oroGen model made in Ruby, of no task model yet, as Syskit's
+      # tests make them (+Models.create_orogen_task_context_model+,
+      # +OroGen::Spec::TaskContext.new(project, 'lib::Task')+): a spec
+      # called +name+, of the +project+, deriving from +subclasses+ (another
+      # such view). Its task model is made by TaskContext.define_from_orogen.
+      def self.define(name = nil, project: nil, subclasses: nil)
+        new(TaskSpec.new(name, project, superclass: subclasses&.spec), superclass: subclasses)
+      end
+
+      # The spec it is a view of (Orogen::TaskSpec).
+      attr_reader :spec
+
+      # The task model it is the oroGen model of (set once it is made).
+      attr_writer :model
+
+      # The project (task library) the model is of, as given.
+      def project
+        @spec.library
+      end
+
+      # The task's states, as an .orogen file declares them
+      # (+error_states :BLOCKED+), each with its event (see
+      # Models::TaskContext#state_events).
+      %i[exception_states error_states runtime_states fatal_states].each do |kind|
+        define_method(kind) { |*names| @spec.states[kind].concat(names.map(&:to_s)) }
       end
 
       # Declares a port on a task model made in Ruby, as Syskit's tests do
@@ -70,6 +98,8 @@ module Syskit
       # The oroGen model this one derives from (that of the parent task
       # model when it stands for it), nil for a root.
       def superclass
+        return @superclass if @superclass
+
         parent = @spec.superclass
         return unless parent
 
@@ -102,10 +132,6 @@ module Syskit
       def hash
         spec.hash
       end
-
-      protected
-
-      attr_reader :spec
 
       private
 

@@ -33,6 +33,13 @@ module Syskit
         @all_ports || (superclass ? superclass.all_ports : {}).merge(ports)
       end
 
+      # Adds +port+ (made from a dynamic port pattern, see
+      # Models::DynamicServices) to a spec that may already be finalized.
+      def add_port(port)
+        ports[port.name] = port
+        @all_ports &&= (superclass ? superclass.all_ports : {}).merge(ports).freeze
+      end
+
       def all_dynamic_ports
         @all_dynamic_ports || ((superclass ? superclass.all_dynamic_ports : []) + dynamic_ports)
       end

@@ -41,13 +41,22 @@ module Syskit
         self
       end
 
+      # Matches running components only (Roby's +running+). A plan held as
+      # data runs nothing: it finds none there, and its ports
+      # (+Task.match.running.out_port+) name what a data_reader binds to
+      # once Syskit's runtime runs the tasks.
+      def running
+        @running = true
+        self
+      end
+
       # A matcher is its own matcher (see PortMatcher.new).
       def match
         self
       end
 
       def ===(task)
-        task.is_a?(AbstractComponent) &&
+        !@running && task.is_a?(AbstractComponent) &&
           @models.all? { |m| task.fullfills?(m) } &&
           @predicates.all? { |predicate, value| task.public_send(predicate) == value } &&
           @arguments.all? { |key, value| task.arguments[key] == value }

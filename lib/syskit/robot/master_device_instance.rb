@@ -191,14 +191,26 @@ module Syskit
 
       def explain_missing(method_name)
         buses = robot.app_bus_models_defining(method_name)
+        return explain_not_attached(method_name, buses) if buses.any? && !attached?
+
+        ["#{self} has no '#{method_name}'#{Naming.did_you_mean(method_name, chainable_methods)}",
+         "chainable calls on devices: #{chainable_methods.join(', ')}"]
+      end
+
+      # A bus attribute asked of a device on no bus: in a profile, it is
+      # declared outside its bus's through block; in a test (a robot of no
+      # profile), the stub device was made on no bus.
+      def explain_not_attached(method_name, buses)
+        message = "#{self} has no '#{method_name}': it is on no bus, and #{method_name} is for devices attached " \
+                  "to a #{buses.map(&:name).join(' or ')} bus"
         hint =
-          if buses.any? && !attached?
-            "#{method_name} is for devices attached to a #{buses.join(' or ')} bus: " \
-              "declare #{name} in a through 'bus_name' do ... end block"
+          if robot.profile
+            "declare #{name} in a through 'bus_name' do ... end block"
           else
-            "chainable calls on devices: #{chainable_methods.join(', ')}"
+            "in a test, make it on a stub bus: bus = syskit_stub_com_bus(#{buses.first.name}); " \
+              "dev = syskit_stub_attached_device(bus).#{method_name}(...)"
           end
-        ["#{self} has no '#{method_name}'#{Naming.did_you_mean(method_name, chainable_methods)}", hint]
+        [message, hint]
       end
 
       # The same device: the device of this name on the same robot (as

@@ -170,7 +170,7 @@ module Syskit
 
       def instantiate(driver)
         driver.fetch_dynamic_service(dynamic_service_name, declared_at, "to make #{self} from")
-              .instantiate(name, dynamic_options, declared_at)
+              .instance_for(name, dynamic_options, declared_at)
       end
 
       def chainable_methods

@@ -37,8 +37,8 @@ module Syskit
       # An app with problems still runs its tests (a bundle may hold files
       # Rock itself never loads, and the tests that do not use them say so
       # by passing); the problems are printed first, on stderr (they are
-      # often the cause of what fails next), and are one failing test of
-      # their own.
+      # often the cause of what fails next), are one failing test of their
+      # own, and fail the run whatever -n selects (see LoadProblems).
       def report_load_problems(app)
         app.errors.each { |problem| warn problem.report(Dir.pwd) }
         report = app.errors.map { |e| e.report(app.root) }.join("\n")

@@ -118,14 +118,24 @@ module Syskit
         together = Array(together_with).empty? ? [] : syskit_requirements(Array(together_with))
         all = syskit_requirements(actions)
         checked = all.reject { |req| excluded&.any? { |e| syskit_same_action?(e, req) } }
-        # A profile without actions yet (a new app's), or all actions
-        # excluded, has nothing wrong; actions given that stand for nothing
-        # are a mistake of the test.
+        # An assertion that checks nothing would pass whatever the robot:
+        # it fails, saying why.
         flunk "#{assertion}: #{actions.flatten.join(', ')} stand for no action" if all.empty? && !actions.flatten.empty?
+        syskit_nothing_to_check(assertion, profile, all) if checked.empty?
 
         checked.each do |req|
           syskit_check_together([req, *together], assertion, through, profile: profile, label: req.to_s)
         end
+      end
+
+      def syskit_nothing_to_check(assertion, profile, all)
+        if all.empty?
+          where = profile.declared_at&.relative_path(Test.app.root)
+          flunk "#{assertion}: #{profile.name} has no device and no definition, so there is nothing to check: " \
+                "declare the robot's devices#{" in #{where}" if where} (or define what it runs), " \
+                'or remove this test'
+        end
+        flunk "#{assertion}: every action of #{profile.name} is excluded, so there is nothing to check"
       end
 
       # Generates the network of +requirements+ up to +through+; raises

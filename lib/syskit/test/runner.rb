@@ -120,6 +120,7 @@ module Syskit
         error = UserCode.translate(e, path: path, root: Test.app.root)
         report = error.report(Dir.pwd)
         warn report
+        LoadProblems.test_files << report
         Class.new(Minitest::Test) do
           define_singleton_method(:name) { "#{Location.new(path, nil).relative_path(Dir.pwd)} (loading)" }
           define_method(:test_the_file_loads) { flunk report }

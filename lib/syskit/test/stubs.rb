@@ -173,15 +173,26 @@ module Syskit
       def attached_model_and_driver(bus, base, driver, bus_to_client, client_to_bus)
         return [driver_model_for(driver, base), driver] if driver
 
-        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
-        if desc.is_a?(Class) && desc < TaskContext
-          model = desc.driven_device_models.find { |m| !m.is_a?(Models::ComBusModel) && m.fullfills?(base) }
-          return [model, desc] if model
-        end
+        desc = described_task_model
+        driven = desc&.driven_device_models&.find { |m| !m.is_a?(Models::ComBusModel) && m.fullfills?(base) }
+        return [driven, desc] if driven
 
         model = StubModels.device_model(base)
-        [model, StubModels.client_driver(model, bus.model, bus_to_client: bus_to_client,
-                                                           client_to_bus: client_to_bus)]
+        directions = { bus_to_client: bus_to_client, client_to_bus: client_to_bus }
+        # The described task talks to the bus but drives no device yet (no
+        # driver_for): it drives the stub device, so that the test checks it
+        # rather than a stub driver.
+        if desc&.driven_device_models&.empty? && StubModels.bus_client?(desc, bus.model, **directions)
+          return [model, StubModels.described_driver(desc, model)]
+        end
+
+        [model, StubModels.client_driver(model, bus.model, **directions)]
+      end
+
+      # The task model of the enclosing +describe+, if it describes one.
+      def described_task_model
+        desc = self.class.respond_to?(:desc) ? self.class.desc : nil
+        desc if desc.is_a?(Class) && desc < TaskContext
       end
 
       def driver_model_for(driver, base)

@@ -156,7 +156,10 @@ module Syskit
       # Deployment groups (+use_deployment+ and its kin in a profile) are
       # runtime choices of Syskit's action interface: this gem deploys from
       # the robot configuration (config/robots/*.rb).
-      NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: nil, transformer: nil, use_deployment: nil,
+      # +use_sdf_model model, as: 'arm'+ makes +arm_dev+ from the SDF model,
+      # which is not modelled either.
+      NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: ->(*, as: nil, **) { "#{as}_dev" if as },
+                       transformer: nil, use_deployment: nil,
                        use_ruby_tasks: nil, use_unmanaged_task: nil, use_deployments_from: nil, use_group: nil,
                        define_deployment_group: ->(name, *) { "#{name}_deployment_group" } }.freeze
 
@@ -173,11 +176,12 @@ module Syskit
           define_method(statement) do |*args, **options, &_block|
             Syskit.app&.not_modelled("#{statement} in profile #{self}", Location.of_caller)
             name = action&.call(*args, **options)
+            value = Compat::Ignored.instance
             if name && !respond_to?(name)
-              ignored = Compat::Ignored.instance
-              define_singleton_method(name) { ignored }
+              value = Compat::Ignored.new("#{self}.#{name} (made by #{statement})")
+              define_singleton_method(name) { value }
             end
-            Compat::Ignored.instance
+            value
           end
         end
 
@@ -210,8 +214,9 @@ module Syskit
 
           Syskit.app&.not_modelled("use_gazebo_model in profile #{self}", location)
           name = "#{as || url.to_s.sub(%r{\Amodel://}, '').split('/').first}_dev"
-          define_singleton_method(name) { Compat::Ignored.instance } unless respond_to?(name)
-          Compat::Ignored.instance
+          device = Compat::Ignored.new("#{self}.#{name} (made by use_gazebo_model from the SDF file of #{url})")
+          define_singleton_method(name) { device } unless respond_to?(name)
+          device
         end
 
         # Uses +profile+ (see Definitions#use_profile): +tags+ select for its

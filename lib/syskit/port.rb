@@ -60,6 +60,11 @@ module Syskit
       model.type
     end
 
+    # The type as declared (see Orogen::Port#type_description).
+    def type_description
+      model.type_description
+    end
+
     def direction
       model.direction
     end

@@ -13,12 +13,19 @@ module Syskit
               elsif !sink.respond_to?(:input?) || !sink.input?
                 [WrongPortConnectionDirection, "#{sink} is not an input port"]
               elsif same_owner then [SelfConnection, "they are ports of the same #{owner}"]
-              elsif source.type != sink.type then [WrongPortConnectionTypes, 'their types differ']
+              elsif source.type != sink.type
+                [WrongPortConnectionTypes, "their types differ (#{type_of(source)} and #{type_of(sink)})"]
               end
       return unless error
 
       raise error[0].new("cannot connect #{source} to #{sink}: #{error[1]}",
                          location: location, hint: 'connect an output port to an input port of the same type')
+    end
+
+    # The type as declared, with the type it resolves to when it is a
+    # typedef (/base/commands/Joints (= /base/samples/Joints)).
+    def self.type_of(port)
+      port.respond_to?(:type_description) ? port.type_description : port.type.name
     end
   end
 end

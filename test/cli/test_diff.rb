@@ -41,7 +41,7 @@ module Syskit
         - imu  imu::Task, deployment imu
         ~ can0
             ports.sensor2: added {"direction":"output","type":"/canbus/Message","dynamic":true}
-            operations: watch("sensor", 256, 2047) -> watch("sensor", 257, 2047), watch("sensor2", 512, 2047)
+            operations: watch("sensor", 0x100, 0x7FF) -> watch("sensor", 0x101, 0x7FF), watch("sensor2", 0x200, 0x7FF)
 
       Devices: 1 added, 1 removed, 1 changed
         + sensor2  MyApp::Devices::TemperatureSensor, task sensor2, bus can0
@@ -106,6 +106,18 @@ module Syskit
                      'new' => { 'name' => 'sensor2', 'direction' => 'output', 'type' => '/canbus/Message',
                                 'dynamic' => true } }, tasks['changed'].first['changes'].first)
       assert_equal 1, run_cli('diff', 'old.json', 'new.json', '--exit-code', chdir: @app).last
+    end
+
+    # One watch call of several changes: it alone is shown, with its
+    # position, ids in hex as in the plan.
+    def test_one_changed_operation_call_is_shown_alone
+      File.write(@old, syskit!('plan', '--format', 'json'))
+      profile = File.join(@app, 'models', 'profiles', 'base.rb')
+      File.write(profile, File.read(profile).sub('can_id(0x200, 0x7ff)', 'can_id(0x280, 0x7ff)'))
+      out = syskit!('plan', '--diff', 'old.json')
+      changed = 'operations.2: watch("sensor2", 0x200, 0x7FF) -> watch("sensor2", 0x280, 0x7FF)'
+      assert_includes out, "  ~ can0\n      #{changed}\n"
+      refute_includes out, 'watch("sensor",'
     end
 
     # The plan guide's example, on a copy of the example app.

@@ -68,8 +68,10 @@ module Syskit
 
     def test_operations_called_in_configure_are_in_the_plan_and_run_their_stub
       can0 = plan_json['tasks'].find { |t| t['name'] == 'can0' }
-      assert_equal [{ 'name' => 'watch', 'arguments' => ['motor_temp', 0x210, 0x7ff] },
-                    { 'name' => 'watch', 'arguments' => ['battery_temp', 0x211, 0x7ff] }], can0['operations']
+      names = %w[name id mask]
+      assert_equal [{ 'name' => 'watch', 'arguments' => ['motor_temp', 0x210, 0x7ff], 'argument_names' => names },
+                    { 'name' => 'watch', 'arguments' => ['battery_temp', 0x211, 0x7ff], 'argument_names' => names }],
+                   can0['operations']
       created = can0['ports'].select { |p| p['dynamic'] }.map { |p| p['name'] }
       assert_equal %w[battery_temp motor_temp], created
       assert_equal({ 'device' => 'can0', 'deviceType' => 'SOCKET' }, can0['properties'])

@@ -185,6 +185,17 @@ module Syskit
       assert_includes inherited, 'io_port from iodrivers_base::Task'
     end
 
+    # A port declared with a typedef's name shows that name, and the type
+    # it stands for beside it.
+    def test_a_port_declared_with_a_typedef_shows_its_declared_name
+      dir = File.join(Dir.mktmpdir('syskit-doc'), 'site')
+      (@tmpdirs ||= []) << File.dirname(dir)
+      _, err, status = run_cli('doc', '--app', File.join(GEM_ROOT, 'examples', 'arm_lab'), '--output', dir)
+      assert_equal 0, status, err
+      rows = texts(page(Dir.glob('**/*JointsCommand.html', base: dir).first, dir), "//section[@id='ports']//tr")
+      assert_includes rows, 'command_in input /base/commands/Joints = /base/samples/Joints'
+    end
+
     def test_a_profile_page
       doc = page('profiles/AwesomeRobot.Profiles.Live.Base.html')
       devices = texts(doc, "//section[@id='devices']//tbody/tr[@id]")

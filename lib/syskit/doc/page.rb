@@ -69,6 +69,15 @@ module Syskit
         h(Render::Text.plain(data, +'', ids: Render::Output.id_name?(name.to_s)))
       end
 
+      # A port's type as its declaration names it, and, for a typedef, the
+      # type it stands for beside it.
+      def port_type(port)
+        declared = port.declared_type if port.respond_to?(:declared_type)
+        return %(<code>#{h(port.type.name)}</code>) unless declared
+
+        %(<code>#{h(declared)}</code> <span class="muted">= <code>#{h(port.type.name)}</code></span>)
+      end
+
       # Where something was declared: its path relative to its bundle, and
       # line.
       def location(loc)

@@ -57,6 +57,16 @@ module Syskit
         @port.is_a?(Port) ? @port.orogen_port : @port
       end
 
+      # The typedef name the port was declared with, if any, and the type
+      # as declared (see Orogen::Port#type_description).
+      def declared_type
+        @port.declared_type if @port.respond_to?(:declared_type)
+      end
+
+      def type_description
+        @port.respond_to?(:type_description) ? @port.type_description : type.name
+      end
+
       def input?
         direction == :input
       end

@@ -200,7 +200,8 @@ module Syskit
         end
         return if from.type == to.type
 
-        raise DeclarationError.new("cannot connect #{from} (#{from.type}) to #{to} (#{to.type}): types differ",
+        raise DeclarationError.new("cannot connect #{from} (#{from.type_description}) to #{to} " \
+                                   "(#{to.type_description}): types differ",
                                    location: location, hint: 'connect ports of the same type')
       end
     end

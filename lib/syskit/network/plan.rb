@@ -149,8 +149,16 @@ module Syskit
           'devices' => task.devices, 'conf' => task.conf, 'properties' => task.properties,
           'ports' => task.ports.map { |p| port_hashes[p] ||= port_hash(p) },
           'depends_on' => task.depends_on, 'unmanaged' => task.unmanaged,
-          'operations' => task.operations.map { |op| { 'name' => op.name, 'arguments' => op.arguments } }
+          'operations' => task.operations.map { |op| operation_hash(op) }
         }
+      end
+
+      # The call; the argument names when the spec declares them, so that
+      # readers of the file (plan diffs) know which are ids.
+      def operation_hash(operation)
+        hash = { 'name' => operation.name, 'arguments' => operation.arguments }
+        names = operation.argument_names
+        names.nil? || names.empty? ? hash : hash.merge('argument_names' => names)
       end
 
       def port_hash(port)

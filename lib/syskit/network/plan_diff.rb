@@ -108,6 +108,7 @@ module Syskit
       # keyed entries (ports, frames) entry by entry, anything else whole.
       def diff_values(path, old, new)
         return [] if same?(old, new)
+        return diff_calls(path, old, new) if calls?(path, old, new)
         return diff_hashes(path, old, new) if old.is_a?(Hash) && new.is_a?(Hash)
         return diff_entries(path, old, new) if keyed_list?(path.last, old) && keyed_list?(path.last, new)
 
@@ -141,6 +142,27 @@ module Syskit
         when Array then value.map { |v| without_ignored(v) }
         else value
         end
+      end
+
+      # The operations a task's configure calls, as many before as after:
+      # compared call by call (path +operations.2+), so that one changed
+      # call is shown alone.
+      def calls?(path, old, new)
+        path.last == 'operations' && old.is_a?(Array) && new.is_a?(Array) && old.size == new.size
+      end
+
+      def diff_calls(path, old, new)
+        old.zip(new).each_with_index.flat_map do |(before, after), i|
+          next [] if same?(call_only(before), call_only(after))
+
+          [Change.new(path: path + [(i + 1).to_s], old: before, new: after)]
+        end
+      end
+
+      # A call without its argument names (files written before they were
+      # kept have none).
+      def call_only(call)
+        call.is_a?(Hash) ? call.except('argument_names') : call
       end
 
       def diff_hashes(path, old, new)

@@ -91,16 +91,22 @@ module Syskit
       # the key its path shows, operation calls as they were written.
       def value(value, path)
         return value.map { |call| call_text(call) }.join(', ') if path.last == 'operations' && value.is_a?(Array)
+        return call_text(value) if path[-2] == 'operations'
 
         value = value.reject { |k, v| k == 'name' && v == path.last } if value.is_a?(Hash)
         Text.plain(value, +'', ids: path.any? { |name| Output.id_name?(name) })
       end
 
-      # watch("sensor", 256, 2047)
+      # watch("sensor", 0x100, 0x7FF): ids in hex, as the plan writes them,
+      # when the file names the arguments.
       def call_text(call)
         return Text.plain(call, +'') unless call.is_a?(Hash) && call['arguments'].is_a?(Array)
 
-        "#{call['name']}(#{call['arguments'].map { |a| Text.plain(a, +'') }.join(', ')})"
+        names = call['argument_names'] || []
+        arguments = call['arguments'].each_with_index.map do |arg, i|
+          Text.plain(arg, +'', ids: Output.id_name?(names[i]))
+        end
+        "#{call['name']}(#{arguments.join(', ')})"
       end
     end
   end

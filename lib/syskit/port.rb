@@ -88,7 +88,9 @@ module Syskit
     # The port of the task that has it (Syskit's +to_actual_port+): this
     # one, a composition's port being found on the child it exports.
     def to_actual_port
-      self
+      return self unless component.respond_to?(:resolve_export)
+
+      component.find_port(name)&.to_actual_port || self
     end
 
     # Connects this output port to +sink+, an input port of another task

@@ -51,6 +51,16 @@ module Syskit
       assert cmp.pose_child.model.placeholder?
     end
 
+    # provides includes the service's module: a task of a model providing
+    # it, a driver or a placeholder standing for the service, is one.
+    def test_a_task_providing_a_service_is_kind_of_it
+      assert_kind_of Rig::Services::Pose, watch_model.instanciate(@plan).pose_child
+      driver = OroGen.rig.GPSDriver.new
+      assert_kind_of Rig::Devices::GPS, driver
+      assert_kind_of Rig::Services::Pose, driver
+      refute_kind_of Rig::Services::Pose, OroGen.rig.Follower.new
+    end
+
     def test_a_data_service_selected_for_a_child_adds_to_what_it_requires
       cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => Rig::Services::SpeedSource))
       assert_equal [Rig::Services::SpeedSource, Rig::Services::Pose], cmp.pose_child.model.proxied_data_service_models

@@ -147,6 +147,15 @@ module Syskit
         component_model.each_child(&)
       end
 
+      # The selections in effect for these requirements' children, as one
+      # injection (Syskit's +resolved_dependency_injection+): a profile
+      # definition's profile's (its robot's devices, used profiles and
+      # own use), then its own; defaults resolved to explicit selections.
+      def resolved_dependency_injection
+        context = profile.respond_to?(:dependency_injection_context) ? profile.dependency_injection_context : nil
+        (context || DependencyInjectionContext::EMPTY).with(selections).current_state
+      end
+
       # The same requirements without a selected service (Syskit's
       # +to_component_model+).
       def to_component_model

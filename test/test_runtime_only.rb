@@ -32,6 +32,12 @@ module Syskit
       assert_match(/port.writer needs Syskit's runtime/, assert_raises(Minitest::Skip) { task.in_port.writer }.message)
       assert_equal 'out', task.out_port.name
     end
+
+    # Roby's relation graphs are kept by its engine.
+    def test_the_relation_graphs_of_the_plan_skip
+      error = assert_raises(Minitest::Skip) { Test::Plan.new.task_relation_graph_for(Object) }
+      assert_equal "plan.task_relation_graph_for needs Syskit's runtime (Roby and Orocos)", error.message
+    end
   end
 
   # Roby's capture_log in Syskit's tests: the block is model-level code,

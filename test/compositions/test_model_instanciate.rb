@@ -125,6 +125,18 @@ module Syskit
       assert_equal cmp.follower_child.command_port, cmp.command_port.to_actual_port
     end
 
+    # A connection to a composition's port is one to the port of the child
+    # task it exports.
+    def test_a_composition_port_connects_the_port_it_exports
+      model = watch_model
+      model.export model.follower_child.command_port
+      cmp = model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
+      splitter = OroGen.rig.Splitter.new
+      cmp.command_port.connect_to splitter.in_port
+      assert cmp.follower_child.command_port.connected_to?(splitter.in_port)
+      assert cmp.command_port.connected_to?(splitter.in_port)
+    end
+
     # Roby's +Model.as_plan+: a task to be planned, holding the model's
     # requirements.
     def test_a_component_model_as_plan_is_a_task_to_be_planned

@@ -141,6 +141,21 @@ module Syskit
       on_service = InstanceRequirements.new([task.fix_srv])
       assert_same on_service, on_service.pose_port.component_model
       assert_equal Models::OutputPort.new(on_service, task.out_port.orogen_model, 'pose'), on_service.pose_port
+      assert_equal on_service.to_component_model.out_port, on_service.pose_port.to_component_port
+    end
+
+    # Syskit's add_port_period: how often a port gets data, kept with the
+    # requirements (and what they are merged with).
+    def test_port_periods_are_kept_with_the_requirements
+      _, task = pose_and_task
+      requirements = task.to_instance_requirements.add_port_period('out', 0.1).add_port_period(:out, 0.5, 2)
+      trigger = NetworkGeneration::PortDynamics::Trigger
+      assert_equal [trigger.new('period', 0.1, 1), trigger.new('period', 0.5, 2)],
+                   requirements.find_port_dynamics('out').triggers.to_a
+      assert_nil task.to_instance_requirements.find_port_dynamics('out')
+      assert_equal requirements.find_port_dynamics('out'),
+                   task.to_instance_requirements.merge(requirements).find_port_dynamics('out')
+      refute_equal requirements, task.to_instance_requirements
     end
 
     # Merging two requirements, binding a task to requirements.
@@ -234,12 +249,14 @@ module Syskit
       pose, task = pose_and_task
       other = TaskContext.new_submodel(name: 'Other')
       cmp = Composition.new_submodel(name: 'Cmp') { add task, as: 'nav' }
-      assert_raises(InvalidSelection) { cmp.use('nav' => other) }
+      error = assert_raises(InvalidSelection) { cmp.use('nav' => other) }
+      assert_match(/'nav'|nav_child/, error.message)
       assert cmp.use('nav' => task.new_submodel)
       assert_equal ['nav'], cmp.to_instance_requirements.each_child.map(&:first)
       assert_raises(ArgumentError) { task.to_instance_requirements.find_child('nav') }
       assert_nil InstanceRequirements.new([task.fix_srv]).to_component_model.service
-      assert_same task.find_port('out'), task.to_instance_requirements.out_port.to_component_port
+      requirements = task.to_instance_requirements
+      assert_equal requirements.out_port, requirements.out_port.to_component_port
       refute_nil pose
     end
 

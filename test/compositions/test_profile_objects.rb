@@ -37,6 +37,20 @@ module Syskit
       assert_raises(NoMethodError) { profile.other_def }
     end
 
+    # The selections in effect for a definition's children: its own use,
+    # and the profile's, as one injection.
+    def test_resolved_dependency_injection_has_the_selections_in_effect
+      @task.provides @pose, as: 'pose'
+      cmp = Composition.new_submodel(name: 'Follow')
+      cmp.add @pose, as: 'pose'
+      assert_equal @task.pose_srv, cmp.use('pose' => @task.pose_srv).resolved_dependency_injection.explicit['pose']
+      profile = Actions::Profile.new('Base')
+      profile.use @pose => @task
+      profile.define 'follow', cmp
+      resolved = profile.resolved_definition('follow').resolved_dependency_injection
+      assert_equal @task.pose_srv, resolved.explicit[@pose]
+    end
+
     def test_definition_gives_a_new_copy_each_time
       profile = Actions::Profile.new
       profile.define('drive', @task)

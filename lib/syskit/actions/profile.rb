@@ -185,7 +185,10 @@ module Syskit
       # with a "not modelled" warning each (see Compat). The value says which
       # action name a statement defines, when it defines one, so that later
       # statements can refer to it.
-      NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: nil, transformer: nil }.freeze
+      # +use_sdf_model model, as: 'arm'+ makes +arm_dev+ from the SDF model,
+      # which is not modelled either.
+      NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: ->(*, as: nil, **) { "#{as}_dev" if as },
+                       transformer: nil }.freeze
 
       # The comment block above +location+ (documentation of a statement).
       def self.doc_above(location)
@@ -200,11 +203,12 @@ module Syskit
           define_method(statement) do |*args, **options, &_block|
             Syskit.app&.not_modelled("#{statement} in profile #{self}", Location.of_caller)
             name = action&.call(*args, **options)
+            value = Compat::Ignored.instance
             if name && !respond_to?(name)
-              ignored = Compat::Ignored.instance
-              define_singleton_method(name) { ignored }
+              value = Compat::Ignored.new("#{self}.#{name} (made by #{statement})")
+              define_singleton_method(name) { value }
             end
-            Compat::Ignored.instance
+            value
           end
         end
 
@@ -244,8 +248,9 @@ module Syskit
 
           Syskit.app&.not_modelled("use_gazebo_model in profile #{self}", location)
           name = "#{as || url.to_s.sub(%r{\Amodel://}, '').split('/').first}_dev"
-          define_singleton_method(name) { Compat::Ignored.instance } unless respond_to?(name)
-          Compat::Ignored.instance
+          device = Compat::Ignored.new("#{self}.#{name} (made by use_gazebo_model from the SDF file of #{url})")
+          define_singleton_method(name) { device } unless respond_to?(name)
+          device
         end
 
         # Uses +profile+ (see Definitions#use_profile): +tags+ select for its

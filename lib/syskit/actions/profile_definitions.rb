@@ -94,7 +94,7 @@ module Syskit
         def define(name, requirements, location: Location.of_caller, doc: nil)
           name = Arguments.name(name, statement: 'define', what: 'a definition name', pattern: Arguments::METHOD_NAME,
                                       example: "define 'arm_control', Compositions::ArmControl")
-          return not_modelled_definition(name, location) if Compat::Ignored === requirements # rubocop:disable Style/CaseEquality
+          return not_modelled_definition(name, location, requirements.to_s) if Compat::Ignored === requirements # rubocop:disable Style/CaseEquality
 
           unless InstanceRequirements.selectable?(requirements)
             raise DeclarationError.new(
@@ -104,15 +104,23 @@ module Syskit
           end
 
           requirements = dependency_injection_context.direct_selection_for(requirements) || requirements
-          register_definition(name, InstanceRequirements.from(requirements, location: location), doc, location)
+          requirements = InstanceRequirements.from(requirements, location: location)
+          missing = requirements.selections.not_modelled.first
+          return not_modelled_definition(name, location, missing[0]) if missing
+
+          register_definition(name, requirements, doc, location)
         end
 
-        # A definition of something not modelled: its action stands for it,
-        # with a warning.
-        def not_modelled_definition(name, location)
-          Syskit.app&.not_modelled("definition '#{name}' of something not modelled", location)
-          define_action("#{name}_def") { Compat::Ignored.instance }
-          Compat::Ignored.instance
+        # A definition of something not modelled, or that selects something
+        # not modelled (+what+, as the device of use_gazebo_model): one
+        # warning, and the definition is left out of the plan; its action
+        # stands for it, so that later statements may refer to it.
+        def not_modelled_definition(name, location, what)
+          what = 'something not modelled' if what == Compat::Ignored.instance.to_s
+          value = Compat::Ignored.new(what)
+          Syskit.app&.not_modelled("definition '#{name}', which depends on #{what}", location)
+          define_action("#{name}_def") { value }
+          value
         end
 
         def register_definition(name, requirements, doc, location)
@@ -194,6 +202,8 @@ module Syskit
           tag_selections = resolve_tag_selection(profile, tags, location)
           used_profiles << [profile, tag_selections, location]
           robot.use_robot(profile.robot)
+          # Its devices are this profile's actions too (Importer.gps_dev).
+          profile.robot.each_master_device { |device| define_device_action(device) }
           profile.definitions.each_value do |definition|
             requirements = definition
             requirements = requirements.use(tag_selections) unless tag_selections.empty?

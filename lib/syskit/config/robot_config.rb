@@ -48,6 +48,13 @@ module Syskit
         @phase_blocks << PhaseBlock.new(phase, block, location)
       end
 
+      # The files this robot's configuration required as it loaded, and
+      # those of the profiles its Robot.actions blocks use (see
+      # App::RobotFiles): what Roby loads for this robot.
+      def loaded_files
+        @loaded_files ||= Set.new
+      end
+
       def phase_blocks(phase)
         @phase_blocks.select { |entry| entry.phase == phase }
       end

@@ -25,12 +25,13 @@ module Syskit
         change(arguments: self.arguments.merge(arguments).freeze)
       end
 
-      # Deployed tasks to prefer (names or regexps).
+      # Deployed tasks to prefer (names, regexps, or objects matching names
+      # with ===, see Arguments.deployment_hint?).
       def prefer_deployed_tasks(*hints)
         hints = hints.flatten
-        bad = hints.find { |h| !h.is_a?(String) && !h.is_a?(Regexp) }
-        if bad
-          raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{bad.inspect}",
+        bad = hints.reject { |h| Arguments.deployment_hint?(h) }
+        unless bad.empty?
+          raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{bad.first.inspect}",
                                      location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
         end
 
@@ -110,6 +111,16 @@ module Syskit
         end
       end
 
+      # Says that the port +port_name+ gets +sample_count+ samples every
+      # +period+ seconds (Syskit's +add_port_period+; see
+      # #find_port_dynamics).
+      def add_port_period(port_name, period, sample_count = 1)
+        port_name = port_name.to_s
+        dynamics = port_dynamics[port_name]&.dup || NetworkGeneration::PortDynamics.new(port_name)
+        dynamics.add_trigger('period', period, sample_count)
+        change(port_dynamics: port_dynamics.merge(port_name => dynamics.freeze))
+      end
+
       # Syskit's +use_configured_deployment+: one configured deployment
       # (Models::ConfiguredDeployment) for the network of these requirements.
       def use_configured_deployment(configured)
@@ -137,7 +148,8 @@ module Syskit
         with_conf(*names, location: Location.of_caller)
       end
 
-      # These requirements with +srv+, a service of their component model,
+      # These requirements with +srv+, a service of their component model
+      # (of the placeholder standing for their models when they have none),
       # selected (as +x_srv+ does).
       def select_service(srv)
         if srv.is_a?(InstanceRequirements)
@@ -145,7 +157,7 @@ module Syskit
           arguments = srv.arguments
           srv = srv.service
         end
-        model = component_model
+        model = component_model || proxy_model
         unless srv.is_a?(Models::BoundDataService) && model.is_a?(Class) && model <= srv.task_model
           shown = srv.respond_to?(:task_model) ? srv : Arguments.shown(srv)
           raise DeclarationError.new("#{shown} is not a service of #{self}",

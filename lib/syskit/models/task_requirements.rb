@@ -20,8 +20,8 @@ module Syskit
         to_instance_requirements.instanciate(plan, context, **options)
       end
 
-      # Syskit's +Model.as_plan+: a task standing for the model in a plan,
-      # to be planned (see InstanceRequirements#as_plan).
+      # A task of the model standing for it in a plan, to be planned
+      # (Roby's +Model.as_plan+): see InstanceRequirements#as_plan.
       def as_plan(**arguments)
         to_instance_requirements.as_plan(**arguments)
       end

@@ -22,6 +22,10 @@ module Syskit
         used = {}.compare_by_identity
         stub = @context.stub_deployments
         @context.tasks.each do |task|
+          # Only task contexts run in a deployment (a plain
+          # Syskit::Component has none, as in Syskit).
+          next unless task.is_a?(TaskContext)
+
           requirement = task.requirements
           declared = declared(task, requirement.declared_deployment) unless stub
           deployed = declared || (stub ? stub_deployment(task) : choose(task, requirement))
@@ -127,7 +131,9 @@ module Syskit
       # are matched against every candidate of the model.
       def preferred(index, hints)
         found = hints.flat_map do |hint|
-          hint.is_a?(Regexp) ? index.list.select { |c| hint.match?(c.name) } : [index.by_name[hint]].compact
+          next [index.by_name[hint]].compact if hint.is_a?(String)
+
+          index.list.select { |c| hint === c.name } # rubocop:disable Style/CaseEquality -- Syskit's matching
         end
         found.size > 1 ? found.uniq.sort_by(&:name) : found
       end

@@ -64,6 +64,17 @@ module Syskit
 
       private
 
+      # A profile's definition deployed on its own (+syskit_stub_and_deploy
+      # (Base.nav_def)+ in a test) is instantiated in its profile's
+      # selections (robot devices by device model, use, used profiles'),
+      # as when the profile is generated.
+      def base_of(requirement)
+        own = requirement.profile
+        return @base if @context.profile || !own.respond_to?(:dependency_injection_context)
+
+        own.dependency_injection_context
+      end
+
       def instantiate_root(requirement)
         requirement = InstanceRequirements.from(requirement) if requirement.is_a?(Robot::MasterDeviceInstance)
         unless requirement.is_a?(InstanceRequirements)
@@ -75,7 +86,7 @@ module Syskit
         @root = requirement
         return if @root_requirements.key?(requirement)
 
-        context = @base.with(requirement.selections)
+        context = base_of(requirement).with(requirement.selections)
         task = instantiate(requirement, context, root_name(requirement), nil)
         @context.roots << task
         @root_requirements[task.requirements] = true

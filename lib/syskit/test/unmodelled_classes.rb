@@ -41,7 +41,6 @@ module Syskit
         'DynamicPortBinding::BoundOutputReader' => RUNTIME,
         'DynamicPortBinding::InputWriter' => RUNTIME,
         'DynamicPortBinding::BoundInputWriter' => RUNTIME,
-        'Property' => RUNTIME,
         'Models::DynamicPortBinding' => RUNTIME,
         'Models::DynamicPortBinding::ValueResolver' => RUNTIME,
         'NetworkGeneration::Async' => RUNTIME,
@@ -54,8 +53,6 @@ module Syskit
         'NetworkGeneration::MergeSolver' => INTERNAL,
         'NetworkGeneration::SystemNetworkDeployer' => INTERNAL,
         'NetworkGeneration::SystemNetworkGenerator' => INTERNAL,
-        'NetworkGeneration::PortDynamics' => INTERNAL,
-        'NetworkGeneration::PortDynamics::Trigger' => INTERNAL,
         'NetworkGeneration::DataFlowDynamics' => INTERNAL
       }.freeze
 

@@ -108,16 +108,16 @@ module Syskit
           describe 'runtime' do
             it('waits on threads') { Concurrent::CyclicBarrier.new(2) }
             it('makes a Roby app configuration') { Syskit::RobyApp::Configuration.new(Roby::Application.new) }
-            it('captures logs') { capture_log(Syskit, :warn) { flunk } }
+            it('logs while the engine runs') { capture_log(Syskit, :warn) { execution_engine } }
+            it('makes the state of a running robot') { Roby::StateSpace.new }
           end
         RUBY
         report = File.join(dir, 'report.jsonl')
         out, err, = ruby_process('test/test_runtime.rb', chdir: dir, env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
-        assert_match(/3 runs, 0 assertions, 0 failures, 0 errors, 3 skips/, out, err)
-        messages = File.readlines(report).map { |l| JSON.parse(l)['message'] }.sort
-        assert_equal ["Concurrent::CyclicBarrier needs Syskit's runtime (Roby and Orocos)",
-                      "Syskit::RobyApp::Configuration needs Syskit's runtime (Roby and Orocos)",
-                      "capture_log needs Syskit's runtime (Roby and Orocos)"], messages
+        assert_match(/4 runs, 0 assertions, 0 failures, 0 errors, 4 skips/, out, err)
+        skipped = File.readlines(report).map { |l| JSON.parse(l)['message'].sub(/ needs Syskit's runtime .*/, '') }
+        assert_equal %w[Concurrent::CyclicBarrier Syskit::Compat::Roby::StateSpace Syskit::RobyApp::Configuration
+                        execution_engine], skipped.sort
       end
     end
 
@@ -141,6 +141,10 @@ module Syskit
         it('marks an object as not marshallable') { Object.new.extend(Roby::DRoby::Unmarshallable) }
         it('binds ports of a matcher') { Syskit::Models::DynamicPortBinding.create_from_matcher(task_m.out_port) }
         it('stubs a remote deployment') { syskit_stub_configured_deployment(task_m, 'remote', remote_task: true) }
+        it('reads the port of a deployed task') { syskit_stub_and_deploy(task_m).out_port.reader }
+        it('reads a relation graph of the plan') { plan.task_relation_graph_for(Object) }
+        it('sets up a plain component') { syskit_stub_and_deploy(Syskit::Component.new_submodel).setup }
+        it('asks whether a task may be set up') { Syskit::Component.new.ready_for_setup? }
       end
     RUBY
 
@@ -150,15 +154,14 @@ module Syskit
         report = File.join(dir, 'report.jsonl')
         out, err, = ruby_process('test/test_entry_points.rb', chdir: dir,
                                                               env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
-        assert_match(/10 runs, \d+ assertions, 0 failures, 0 errors, 8 skips/, out, err)
+        assert_match(/14 runs, \d+ assertions, 0 failures, 0 errors, 12 skips/, out, err)
         messages = File.readlines(report).map { |l| JSON.parse(l)['message'] }.reject(&:empty?).sort
         called = messages.map { |m| m.delete_suffix(" needs Syskit's runtime (Roby and Orocos)") }
-        assert_equal ['Syskit::Compat::Roby::DRoby::Unmarshallable',
-                      'Syskit::DynamicPortBinding::OutputReader', 'Syskit::Models::DynamicPortBinding.create',
-                      'Syskit::Models::DynamicPortBinding.create_from_matcher',
-                      'plan.execution_engine', 'plan.in_transaction', 'syskit_stub_deploy_and_configure',
-                      'syskit_stub_requirements_and_configure'],
-                     called
+        assert_equal ['Syskit::Compat::Roby::DRoby::Unmarshallable', 'Syskit::DynamicPortBinding::OutputReader',
+                      'Syskit::Models::DynamicPortBinding.create', 'Syskit::Models::DynamicPortBinding.create_from_matcher',
+                      'plan.execution_engine', 'plan.in_transaction', 'plan.task_relation_graph_for', 'port.reader',
+                      'syskit_stub_deploy_and_configure', 'syskit_stub_requirements_and_configure',
+                      'task.ready_for_setup?', 'task.setup'], called
       end
     end
 

@@ -109,11 +109,15 @@ module Syskit
     end
 
     # Whether a connection of the network links this port and +other+ (a
-    # task's port), in either direction.
+    # task's port), in either direction, or one of a composition both
+    # tasks are children of (as tasks instanciated from models are, before
+    # a network is made of them).
     def connected_to?(other)
       source = to_component_port
       other = other.to_component_port
-      source.component.connections.any? { |c| source.links?(c, other) || other.links?(c, source) }
+      return true if source.component.connections.any? { |c| source.links?(c, other) || other.links?(c, source) }
+
+      source.component.each_parent_task.any? { |cmp| cmp.connects?(source, other) || cmp.connects?(other, source) }
     end
 
     def ==(other)

@@ -51,6 +51,18 @@ module Syskit
         refute declared.rows.first.late?
       end
 
+      # The log's end hides a device that fell silent from the gaps
+      # between its frames: the time since its last frame says it.
+      def test_a_frame_that_stops_before_the_log_ends_is_silent_at_the_end
+        refute compare(declared_frame(0x100, Rational(1, 100))).rows.first.silent_at_end?, 'one period before the end'
+        bus = Network::Plan::Bus.new('can0', 500_000, nil, [declared_frame(0x100, Rational(1, 100))])
+        log = "#{LOG}(1.230000) can0 300#01\n"
+        row = DeclaredTraffic.new(bus, traffic(log)).rows.first
+        assert row.silent_at_end?
+        assert_equal Rational(200, 1000), row.silent_for
+        assert_in_delta 0.2, DeclaredTraffic.new(bus, traffic(log)).to_h['frames'].first['silent_at_end']
+      end
+
       def test_the_load_over_the_log_at_the_declared_bitrate
         declared = compare(declared_frame(0x100, Rational(1, 100)))
         # 5 frames of 8 bytes (135 bits) and one of 1 byte (65 bits) in 40 ms.
@@ -63,7 +75,7 @@ module Syskit
         plain = compare(declared_frame(0x100, Rational(1, 100)), declared_frame(0x123, 1, extended: true)).to_h
         assert_equal %w[bus bitrate declared_load observed_load frames unseen undeclared], plain.keys
         assert_equal({ 'id' => '100', 'device' => 'd256', 'period' => 0.01, 'frames' => 4, 'mean_period' => 0.01,
-                       'worst_period' => 0.012, 'late' => true }, plain['frames'].first)
+                       'worst_period' => 0.012, 'late' => true, 'silent_at_end' => nil }, plain['frames'].first)
         assert_equal ['00000123'], plain['unseen']
         assert_equal [{ 'id' => '200', 'frames' => 1 }, { 'id' => '300', 'frames' => 1 }], plain['undeclared']
       end

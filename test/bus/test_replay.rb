@@ -158,6 +158,19 @@ module Syskit
       assert_match(/^  200 +2 +0\.000 +1\.000  filter of write-only writer$/, out)
     end
 
+    # A device whose declared frame stops before the log ends: the gaps
+    # between its frames are fine, the report says it fell silent.
+    def test_a_declared_frame_that_stops_before_the_end_of_the_log
+      profile = File.join(@app, 'models', 'profiles', 'base.rb')
+      File.write(profile, File.read(profile).sub('can_id(0x100, 0x700)',
+                                                 'can_id(0x100, 0x700).frame(0x150, bytes: 1, period: 0.1)'))
+      File.write(@log, "(1.000000) can0 150#01\n(1.100000) can0 150#01\n(1.200000) can0 150#01\n" \
+                       "(2.000000) can0 7E5#00\n")
+      out, err, status = run_cli('bus', 'replay', 'Base', @log, '--app', @app)
+      assert_equal 0, status, err
+      assert_match(/^  150 +wide +100\.000 +3 +100\.000 +100\.000  silent for the last 800\.000 ms of the log$/, out)
+    end
+
     # Without PROFILE, as plan and bus timing: the app's first profile.
     def test_replay_without_a_profile_replays_the_first_one
       File.write(@log, "(1.000000) can0 200#01\n")

@@ -69,6 +69,21 @@ module Syskit
       assert_equal({ @task => @task }, profile.selections.explicit)
     end
 
+    def test_tasks_of_a_tag_stand_for_that_tag_only
+      require 'syskit/test/plan'
+      profile = Actions::Profile.new
+      profile.tag('localization', @pose)
+      profile.tag('odometry', @pose)
+      plan = Test::Plan.new
+      first = profile.localization_tag.instanciate(plan)
+      again = profile.localization_tag.instanciate(plan)
+      other = profile.odometry_tag.instanciate(plan)
+      assert first.fullfills?(@pose)
+      assert first.can_merge?(again)
+      refute first.can_merge?(other)
+      refute other.can_merge?(first)
+    end
+
     def test_devices_declared_on_the_robot_of_a_profile_object
       profile = Actions::Profile.new('Base')
       camera = Device.new_submodel(name: 'Camera')

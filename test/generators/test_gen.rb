@@ -114,7 +114,7 @@ module Syskit
       assert_file app, 'models/services/sensing/pose.rb', "    module Sensing\n", "data_service_type 'Pose' do"
       assert_file app, 'test/services/sensing/test_pose.rb', 'assert Pose.fullfills?(Syskit::DataService)'
       assert_file app, 'config/orogen/my_lib::Task.yml',
-                  "--- name:default\n# (no documentation in the spec)\nfilter_id: 0\n"
+                  "--- name:default\nfilter_id: 0\n"
       assert_new_task_library(app)
     end
 
@@ -342,13 +342,6 @@ module Syskit
         assert found, "the generators guide shows '#{line.chomp}', not in the generated device model"
         at += found + 1
       end
-    end
-
-    # What git should not track in an app: Bundler's files of this machine.
-    def test_a_new_app_has_a_gitignore
-      app, = new_app
-      ignored = File.readlines(File.join(app, '.gitignore'), chomp: true).grep_v(/\A#/)
-      assert_equal %w[/.bundle/ /vendor/bundle/ /Gemfile.lock /tmp/], ignored
     end
 
     def test_a_dry_run_of_an_app_creates_nothing

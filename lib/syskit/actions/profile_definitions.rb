@@ -8,6 +8,17 @@ module Syskit
       # +Base.localization_tag+; +use_profile Base, 'localization' => X+
       # selects it).
       class Tag
+        # What tasks standing for a tag have: one stands only for tasks of
+        # the same tag (not for those of another tag of the same services).
+        module Task
+          def can_merge?(other)
+            super && other.model.equal?(model)
+          end
+        end
+
+        # The kind of placeholder models tags have (see #placeholder_model).
+        PLACEHOLDER = Syskit::Models::Placeholder.new_specialized_placeholder(task_extension: Task)
+
         attr_reader :profile, :name, :models, :declared_at
 
         def initialize(profile, name, models, location)
@@ -15,12 +26,25 @@ module Syskit
           @name = name
           @models = models.freeze
           @declared_at = location
-          freeze
+          @placeholder_model = nil
+        end
+
+        # The placeholder model of the tag's tasks, its own (as Syskit's
+        # tags): tasks of two tags of the same services are of two models,
+        # so that neither can stand for the other.
+        def placeholder_model
+          @placeholder_model ||= PLACEHOLDER.create_for(models, as: to_s)
         end
 
         # The requirements it stands for (abstract: only services).
         def requirements
-          InstanceRequirements.new(models, profile: profile, name: "#{name}_tag", declared_at: declared_at)
+          InstanceRequirements.new([placeholder_model], profile: profile, name: "#{name}_tag", declared_at: declared_at)
+        end
+
+        # Tasks standing for the tag in +plan+ (see
+        # InstanceRequirements#instanciate).
+        def instanciate(plan, ...)
+          requirements.instanciate(plan, ...)
         end
 
         def each_fullfilled_model(&)

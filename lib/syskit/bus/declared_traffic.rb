@@ -15,9 +15,16 @@ module Syskit
       # A declared frame and what the log shows of it (periods are nil
       # below two frames). +late+: the longest period exceeds the declared
       # period plus jitter (a frame came late, or was lost).
-      Row = Struct.new(:frame, :frames, :mean_period, :worst_period, keyword_init: true) do
+      # +silent_for+: from its last frame to the end of the log; it fell
+      # silent when that is longer than its period plus jitter (a gap the
+      # log's end hides from +worst_period+).
+      Row = Struct.new(:frame, :frames, :mean_period, :worst_period, :silent_for, keyword_init: true) do
         def late?
           !worst_period.nil? && worst_period > frame.period + frame.jitter
+        end
+
+        def silent_at_end?
+          !silent_for.nil? && silent_for > frame.period + frame.jitter
         end
       end
       # An id seen but never declared.
@@ -29,7 +36,7 @@ module Syskit
       def initialize(bus, traffic)
         @bus = bus
         keys = bus.frames.map { |f| Frame.key(f.id, f.extended) }
-        @rows = bus.frames.zip(keys).map { |f, key| row(f, traffic.ids[key]) }
+        @rows = bus.frames.zip(keys).map { |f, key| row(f, traffic.ids[key], traffic.last_time) }
         declared = keys.to_h { |k| [k, true] }
         @undeclared = traffic.ids.keys.sort.reject { |k| declared[k] }.map { |k| Unknown.new(k, traffic.ids[k].frames) }
         @declared_load = bus.utilization
@@ -61,20 +68,25 @@ module Syskit
         Rational(traffic.bits * 1_000_000, bus.bitrate * (traffic.last_time - traffic.first_time))
       end
 
-      def row(frame, stats)
+      def row(frame, stats, log_end)
         return Row.new(frame: frame, frames: 0) unless stats
-        return Row.new(frame: frame, frames: stats.frames) unless stats.frames > 1 && stats.first_time
+
+        silent_for = Rational(log_end - stats.last_time, 1_000_000) if log_end && stats.last_time
+        unless stats.frames > 1 && stats.first_time
+          return Row.new(frame: frame, frames: stats.frames,
+                         silent_for: silent_for)
+        end
 
         Row.new(frame: frame, frames: stats.frames,
                 mean_period: Rational(stats.last_time - stats.first_time, 1_000_000 * (stats.frames - 1)),
-                worst_period: Rational(stats.max_gap, 1_000_000))
+                worst_period: Rational(stats.max_gap, 1_000_000), silent_for: silent_for)
       end
 
       def row_hash(row)
         f = row.frame
         { 'id' => Frame.key_to_s(Frame.key(f.id, f.extended)), 'device' => f.device, 'period' => f.period.to_f,
           'frames' => row.frames, 'mean_period' => row.mean_period&.to_f, 'worst_period' => row.worst_period&.to_f,
-          'late' => row.late? }
+          'late' => row.late?, 'silent_at_end' => row.silent_at_end? ? row.silent_for.to_f : nil }
       end
     end
   end

@@ -142,10 +142,12 @@ module Syskit
       end
 
       def declared_note(row)
-        if row.frames.zero? then 'never seen'
-        elsif row.late? then 'late: longer than period + jitter'
-        else ''
-        end
+        return 'never seen' if row.frames.zero?
+
+        notes = []
+        notes << 'late: longer than period + jitter' if row.late?
+        notes << "silent for the last #{ms(row.silent_for).strip} ms of the log" if row.silent_at_end?
+        notes.join('; ')
       end
 
       def undeclared(declared)

@@ -58,17 +58,14 @@ module Syskit
       # The property's documentation as comments, then its value; a value
       # syskit cannot write (an opaque type) is left commented out.
       def property_text(property)
-        doc = property.doc.to_s.strip
-        comment = (doc.empty? ? ['(no documentation in the spec)'] : doc.lines.map(&:rstrip)).map do |l|
-          "# #{l}".rstrip
-        end
+        comment = property.doc.to_s.strip.lines.map { |l| "# #{l.rstrip}".rstrip }
         if property.type.opaque?
           value = "# #{property.name}: (#{property.type.name} is opaque to syskit, write its value here)"
         else
           plain = property.type.to_plain(property.initial_value)
           value = YAML.dump(property.name => plain).delete_prefix("---\n").chomp
         end
-        "#{comment.join("\n")}\n#{value}\n"
+        [*comment, value].join("\n") << "\n"
       end
     end
   end

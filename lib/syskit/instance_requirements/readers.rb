@@ -71,10 +71,21 @@ module Syskit
         port.class.new(self, port.orogen_port, name.to_s)
       end
 
-      # The port of the component model that +port+ (one of these
-      # requirements' ports) stands for.
+      # The port of the component +port+ (one of these requirements' ports)
+      # stands for, as Syskit's: itself without a selected service, else the
+      # port of the requirements without the service (#to_component_model)
+      # that the service's port maps to.
       def self_port_to_component_port(port)
-        model.find_port(port.name).to_component_port
+        return port unless service
+
+        mapped = model.find_port(port.name).to_component_port
+        mapped.class.new(to_component_model, mapped.orogen_port, mapped.name)
+      end
+
+      # What add_port_period said of the port +name+ (a
+      # NetworkGeneration::PortDynamics), nil when nothing was.
+      def find_port_dynamics(name)
+        port_dynamics[name.to_s]
       end
 
       # These requirements with the service +name+ of the component model

@@ -132,7 +132,9 @@ module Syskit
         device = selected_device(model, context)
         return device_task(requirements, device, model: model) if device
 
-        unless model.driver_services.empty?
+        # Syskit's instanciate leaves a driver without its device (to be
+        # given, or stubbed): only a network refuses it.
+        unless model.driver_services.empty? || @placeholders
           return stub_driver(model, requirements) if @stub_abstract
 
           raise no_device(model, requirements, path, parent)
@@ -218,7 +220,9 @@ module Syskit
         model = requirements.models.find { |m| m.is_a?(Models::DeviceModel) }
         return stub_device_task(model, requirements, path) if model
 
-        stub = Test::StubModels.service_provider(requirements.models)
+        # A tag's placeholder stands for its services.
+        services = requirements.models.flat_map { |m| m.is_a?(Models::Placeholder) ? m.proxied_data_service_models : m }
+        stub = Test::StubModels.service_provider(services)
         component_task(stub, requirements.merge_selection(InstanceRequirements.new([stub])), @base, path, parent)
       end
 

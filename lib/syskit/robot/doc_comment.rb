@@ -5,7 +5,8 @@ module Syskit
     # The comment block right above a statement, which Syskit makes the
     # documentation of a device (as MetaRuby reads documentation blocks):
     # the comment lines that directly precede the statement's line, without
-    # their '#' and the indentation they share, joined by newlines.
+    # their '#' and the indentation they share, joined by newlines; its
+    # paragraphs that start with TODO are left out.
     #
     #   # The front-facing camera, 20 fps
     #   device(Devices::Camera::GigE, as: 'forward_camera')
@@ -66,7 +67,17 @@ module Syskit
       # Removes the indentation the non-blank lines share.
       def strip(block)
         indent = block.reject(&:empty?).map { |line| line[/\A */].size }.min || 0
-        block.map { |line| line[indent..] || '' }.join("\n")
+        text = block.map { |line| line[indent..] || '' }.join("\n")
+        without_notes(text)
+      end
+
+      # A paragraph that starts with TODO is a note to the file's author
+      # (the generators' placeholders), not documentation.
+      def without_notes(text)
+        return text unless text.match?(/^TODO\b/)
+
+        kept = text.split(/\n{2,}/).reject { |paragraph| paragraph.start_with?('TODO') }.join("\n\n")
+        kept.empty? ? nil : kept
       end
     end
   end

@@ -121,7 +121,10 @@ module Syskit
       model = watch_model
       model.export model.follower_child.command_port
       cmp = model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
-      assert_equal cmp.follower_child.command_port, cmp.command_port
+      # As in Syskit: the composition's own port, which stands for the
+      # child's it is exported from.
+      assert_same cmp, cmp.command_port.component
+      assert_equal cmp.follower_child.command_port, cmp.command_port.to_actual_port
     end
 
     # Roby's +Model.as_plan+: a task to be planned, holding the model's

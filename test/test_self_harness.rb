@@ -349,22 +349,5 @@ module Syskit
         assert_match(/^total \(2 files, 1 not loading\)\s+5\s+1\s+0\s+1\s+1/, out)
       end
     end
-
-    def test_rake_conformance_refuses_a_directory_that_is_not_a_checkout
-      Dir.mktmpdir do |dir|
-        out, err, status = Open3.capture3(SelfTest.child_env.merge('SYSKIT_SOURCE' => dir), RbConfig.ruby, '-S',
-                                          'rake', 'conformance', chdir: GEM_ROOT, unsetenv_others: true)
-        refute status.success?, out
-        assert_match(%r{rake conformance: #{Regexp.escape(dir)} is not a checkout of rock-core/tools-syskit}, err)
-        assert_match(%r{\(no test/models/ in it\)}, err)
-      end
-    end
-
-    def test_rake_conformance_without_a_checkout_says_how_to_give_one
-      out, err, status = Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-S', 'rake', 'conformance',
-                                        chdir: GEM_ROOT, unsetenv_others: true)
-      assert status.success?, err
-      assert_match(%r{skipped, no checkout of rock-core/tools-syskit given \(SYSKIT_SOURCE=DIR}, out)
-    end
   end
 end

@@ -4,9 +4,10 @@ require 'helper'
 require 'json'
 
 module Syskit
-  # require 'syskit/test/self', the harness of Syskit's own test files, and
-  # rake conformance, which runs them: in processes of their own, from a
-  # directory that is no app, as a Syskit developer runs them.
+  # require 'syskit/test/self', the harness of Syskit's own test files
+  # (rake conformance, which runs them, is test_conformance_task.rb): in
+  # processes of their own, from a directory that is no app, as a Syskit
+  # developer runs them.
   class TestSelfHarness < Minitest::Test
     # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
     parallelize_me!
@@ -332,21 +333,6 @@ module Syskit
         out, err, = ruby_process('test/test_profiles.rb', chdir: dir)
         assert_match(/6 runs, \d+ assertions, 1 failures, 0 errors, 1 skips/, out, err)
         assert_match(/Avoid is not self contained/, out)
-      end
-    end
-
-    def test_rake_conformance_counts_each_file_of_a_checkout
-      Dir.mktmpdir do |dir|
-        write_self_test(dir, 'models/test_shape.rb')
-        write_self_test(dir, 'robot/test_broken.rb', "require 'syskit/test/self'\nSyskit::NoSuchThing\n")
-        out, err, status = Open3.capture3(
-          SelfTest.child_env.merge('SYSKIT_SOURCE' => dir, 'CASES' => File.join(dir, 'none.tsv')),
-          RbConfig.ruby, '-S', 'rake', 'conformance', chdir: GEM_ROOT, unsetenv_others: true
-        )
-        assert status.success?, "#{out}\n#{err}"
-        assert_match(%r{^test/models/test_shape.rb\s+5\s+1\s+0\s+1\s+1\s}, out)
-        assert_match(%r{^test/robot/test_broken.rb\s+0\s+0\s+0\s+0\s+0\s+does not load: .*NoSuchThing}, out)
-        assert_match(/^total \(2 files, 1 not loading\)\s+5\s+1\s+0\s+1\s+1/, out)
       end
     end
   end

@@ -121,7 +121,7 @@ module Syskit
       model = watch_model
       model.export model.follower_child.command_port
       cmp = model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
-      # As in Syskit: the composition's own port, which stands for the
+      # As in Syskit: the composition's own port, whose actual port is the
       # child's it is exported from.
       assert_same cmp, cmp.command_port.component
       assert_equal cmp.follower_child.command_port, cmp.command_port.to_actual_port

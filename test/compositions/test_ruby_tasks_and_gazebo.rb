@@ -226,6 +226,7 @@ module Syskit
           module Profiles
             profile 'Yard' do
               robot { device(Devices::Wheel, as: 'spare').prefer_deployed_tasks('left_wheel') }
+              use Devices::GPS => World.crane_dev
               define 'lift', Compositions::Hoist.use('winch' => World.crane_dev)
               define 'lift_high', lift_def.with_arguments(height: 10)
               define 'hook', Compositions::Hoist.use(World.hook_dev)
@@ -241,12 +242,13 @@ module Syskit
       yard = Rig::Profiles::Yard.syskit_profile
       assert_equal %w[spare_lift], yard.definitions.keys
       warnings = loaded.problems.select { |p| p.location&.path&.end_with?('models/profiles/yard.rb') }
-      assert_equal([7, 8, 9], warnings.map { |w| w.location.lineno })
+      assert_equal([7, 8, 9, 10], warnings.map { |w| w.location.lineno })
       crane = %r{Rig::Profiles::World.crane_dev \(made by use_gazebo_model from the SDF file of model://crane\)}
-      assert_match(/definition 'lift', which depends on #{crane}: not modelled by this gem/, warnings[0].message)
-      assert_match(/definition 'lift_high', which depends on Rig::Profiles::World.crane_dev/, warnings[1].message)
+      assert_match(/a selection of #{crane} in Rig::Profiles::Yard: not modelled/, warnings[0].message)
+      assert_match(/definition 'lift', which depends on #{crane}: not modelled by this gem/, warnings[1].message)
+      assert_match(/definition 'lift_high', which depends on Rig::Profiles::World.crane_dev/, warnings[2].message)
       assert_match(/definition 'hook', which depends on Rig::Profiles::World.hook_dev \(made by use_sdf_model\)/,
-                   warnings[2].message)
+                   warnings[3].message)
       assert(warnings.all?(Warning))
     end
 
@@ -254,6 +256,7 @@ module Syskit
       out, _, status = run_cli('check', '--app', rig_app(CRANE))
       assert_equal 0, status, out
       assert_equal 3, out.scan(/which depends on Rig::Profiles::World\.\w+_dev/).size, out
+      assert_equal 1, out.scan('a selection of Rig::Profiles::World.crane_dev').size, out
       refute_match(/abstract|nothing selects/, out)
     end
   end

@@ -183,7 +183,12 @@ module Syskit
 
         # Adds selections every definition of the profile uses.
         def use(*mappings)
+          known = selections.not_modelled
           @selections = selections.dup.add(*mappings).freeze
+          # What it selects that is not modelled is left out, with a warning.
+          (selections.not_modelled - known).each do |what, location|
+            Syskit.app&.not_modelled("a selection of #{what} in #{self}", location)
+          end
           @dependency_injection_context = nil
           self
         end

@@ -65,5 +65,30 @@ module Syskit
       assert_in_delta 5.0, property.value
       refute_respond_to Properties.new(nil, {}), :rate
     end
+
+    def test_raw_values_made_by_typelib_are_of_the_property_type
+      raw = Typelib.from_ruby(10, @task.gain_property.type)
+      @task.properties.raw_gain = raw
+      assert_in_delta 10.0, @task.properties.raw_gain
+    end
+
+    def test_the_configuration_manager_is_the_concrete_model_s_configuration
+      manager = @task_m.configuration_manager
+      assert_same manager, @task_m.specialize.configuration_manager
+      assert_same manager, @task_m.configuration_manager
+      assert_empty manager.section_names
+      Syskit.app.stub_conf(@task_m, ['default'], { 'gain' => 3 }, Location.of_caller)
+      assert_equal ['default'], @task_m.configuration_manager.section_names
+    ensure
+      Syskit.app.clear_conf_stubs
+    end
+
+    def test_what_a_running_component_says_of_a_task_skips_the_test_asking_it
+      require 'syskit/test/runtime_only'
+      Test::RuntimeOnly::TASK_METHODS.each do |name|
+        skip = assert_raises(Minitest::Skip) { @task.public_send(name) }
+        assert_equal "task.#{name} needs Syskit's runtime (Roby and Orocos)", skip.message
+      end
+    end
   end
 end

@@ -103,6 +103,11 @@ module Syskit
     # The plan service of this task, once #as_service made one.
     attr_accessor :plan_service
 
+    # The task itself (what a plan service or a bound service gives too).
+    def to_task
+      self
+    end
+
     # The services its model requires of dynamic services, bound to this
     # task (see Models::DynamicServices#require_dynamic_service). Without
     # a block, the list (Syskit's tests ask it +empty?+).

@@ -30,6 +30,13 @@ module Syskit
     # +statement+ names the call in messages ("dsl_attribute"), +what+ the
     # argument ("an attribute name"), +example+ a correct call.
     # +rule+ says what +pattern+ accepts (known for the patterns above).
+    # Whether +hint+ may choose deployed tasks (+prefer_deployed_tasks+):
+    # a name, a regexp, or any object matching names with === (a Proc...),
+    # but not a value that never matches a name (a number, a symbol...).
+    def deployment_hint?(hint)
+      [NilClass, TrueClass, FalseClass, Numeric, Symbol].none? { |klass| hint.is_a?(klass) }
+    end
+
     def name(value, statement:, what:, example:, pattern: IDENTIFIER, rule: RULES[pattern],
              error_class: DeclarationError)
       given(value, statement: statement, what: what, example: example, error_class: error_class)

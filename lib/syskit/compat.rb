@@ -140,6 +140,8 @@ module Syskit
 
     # +Typelib+: Rock's type system, which a few specs call in Ruby.
     Typelib = not_modelled_namespace('Typelib', %i[Registry Type CompoundType ContainerType EnumType OpaqueType])
+    # +Typelib.from_ruby(10, type)+: the value of +type+ made from a Ruby one.
+    Typelib.define_singleton_method(:from_ruby) { |value, type| type.from_ruby(value) }
     # +Utilrb::PkgConfig+: the build machine's pkg-config packages, which
     # a few specs look their C++ libraries up in (+using_library+ matters
     # only to build the component).
@@ -174,7 +176,7 @@ module Syskit
 
     # Syskit's network generation engine and its logging support, which
     # bundles hook into at runtime.
-    Syskit.const_set(:NetworkGeneration, Module.new)
+    Syskit.const_set(:NetworkGeneration, Module.new) unless Syskit.const_defined?(:NetworkGeneration, false)
     Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
     not_modelled_class(Roby, :Task, 'Roby task')

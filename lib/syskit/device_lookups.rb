@@ -45,6 +45,18 @@ module Syskit
       (@attached_devices ||= []) << device
     end
 
+    # Syskit's +bus_task.attach(device_task)+: this bus driver serves the
+    # devices +device_task+ drives that are attached to one of its buses.
+    # Returns the devices newly served.
+    def attach(device_task)
+      buses = devices.select(&:com_bus?)
+      device_task.devices.select do |device|
+        next false if each_attached_device.include?(device) || buses.none? { |bus| device.attached_to?(bus) }
+
+        attach_device(device)
+      end
+    end
+
     # The device bound to +service+: a service of the task model, its (full)
     # name, a service model it provides exactly once, or nothing when the
     # task drives one device. A slave service gives the slave device.

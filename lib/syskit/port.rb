@@ -88,7 +88,9 @@ module Syskit
     # The port of the task that has it (Syskit's +to_actual_port+): this
     # one, a composition's port being found on the child it exports.
     def to_actual_port
-      self
+      return self unless component.respond_to?(:resolve_export)
+
+      component.find_port(name)&.to_actual_port || self
     end
 
     # Connects this output port to +sink+, an input port of another task
@@ -96,8 +98,8 @@ module Syskit
     # network's connections), with the policy given.
     def connect_to(sink, policy = {})
       location = Location.of_caller
-      source = to_component_port
-      sink = sink.to_component_port
+      source = Port.task_port(self)
+      sink = Port.task_port(sink)
       check_connection(source, sink, location)
       connection = Network::Connect::Connection.new(source.component, source.model.orogen_port, sink.component,
                                                     sink.model.orogen_port, policy, nil, location)
@@ -106,12 +108,23 @@ module Syskit
       self
     end
 
+    # The port of a task that +port+ stands for: a composition's port is
+    # the port of the child task it exports (see #to_actual_port).
+    def self.task_port(port)
+      port = port.to_actual_port if port.respond_to?(:to_actual_port)
+      port.to_component_port
+    end
+
     # Whether a connection of the network links this port and +other+ (a
-    # task's port), in either direction.
+    # task's port), in either direction, or one of a composition both
+    # tasks are children of (as tasks instanciated from models are, before
+    # a network is made of them).
     def connected_to?(other)
-      source = to_component_port
-      other = other.to_component_port
-      source.component.connections.any? { |c| source.links?(c, other) || other.links?(c, source) }
+      source = Port.task_port(self)
+      other = Port.task_port(other)
+      return true if source.component.connections.any? { |c| source.links?(c, other) || other.links?(c, source) }
+
+      source.component.each_parent_task.any? { |cmp| cmp.connects?(source, other) || cmp.connects?(other, source) }
     end
 
     def ==(other)

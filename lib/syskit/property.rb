@@ -6,23 +6,30 @@ module Syskit
   # sections give it. Values are converted to the property's type as they
   # are written; what a running component does with them is not modelled.
   class Property
-    # The task it is a property of (nil for the properties a configuration
-    # section is checked on, which belong to no task).
-    attr_reader :task_context
-
-    attr_reader :name, :type
-
     # The current value, converted to the property's type.
     attr_reader :value
 
     # +declaration+: the property as +task_model+ declares it
-    # (Orogen::Property), which gives its name, type and initial value.
+    # (Orogen::Property), which gives its name, type and initial value;
+    # +task_context+ is nil for properties of no task.
     def initialize(declaration, task_model, task_context = nil)
-      @task_model = task_model
-      @task_context = task_context
-      @name = declaration.name
-      @type = declaration.type
+      @declaration = declaration
+      @owner = task_context || task_model
       @value = declaration.initial_value
+    end
+
+    def name
+      @declaration.name
+    end
+
+    def type
+      @declaration.type
+    end
+
+    # The task it is a property of (nil for the properties a configuration
+    # section is checked on, which belong to no task).
+    def task_context
+      @owner unless @owner.is_a?(Module)
     end
 
     def read
@@ -64,7 +71,7 @@ module Syskit
     private
 
     def owner_name
-      @task_model.name
+      @owner.is_a?(Module) ? @owner.name : @owner.model.name
     end
   end
 end

@@ -65,7 +65,10 @@ module Syskit
       # (+runtime_states :moving+; +reports+ is oroGen's other name for
       # runtime_states).
       %i[exception_states error_states runtime_states fatal_states].each do |kind|
-        define_method(kind) { |*names| spec.states[kind].concat(names.map(&:to_s)) }
+        define_method(kind) do |*names|
+          spec.states[kind].concat(names.map(&:to_s))
+          define_event_readers
+        end
       end
 
       def reports(*names)

@@ -4,6 +4,7 @@ require 'syskit/models/task_context'
 require 'syskit/properties'
 require 'syskit/task_connections'
 require 'syskit/task_properties'
+require 'syskit/task_event_generator'
 
 module Syskit
   # A task of a network: an instance of a task model (a subclass of this
@@ -88,6 +89,15 @@ module Syskit
       end
 
       super
+    end
+
+    # The hints choosing its deployed task (see prefer_deployed_tasks): its
+    # requirements', else those of the devices it drives.
+    def deployment_hints
+      own = requirements&.deployment_hints
+      return own if own && !own.empty?
+
+      devices.flat_map(&:deployment_hints).uniq
     end
 
     # The event emitted when the task enters the state +name+ (see
@@ -254,6 +264,9 @@ module Syskit
     def inspect
       "#<#{self}>"
     end
+
+    # The events of RTT's states, which every task has.
+    define_event_readers
 
     private
 

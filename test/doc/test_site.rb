@@ -251,7 +251,7 @@ module Syskit
     def test_the_profile_page_draws_the_plan_with_links_to_the_task_models
       skip 'graphviz (dot) is not installed: the drawn plan is not checked' unless Doc.dot_command
       html = File.read(File.join(example_site, 'profiles/AwesomeRobot.Profiles.Live.Base.html'))
-      svg = html[%r{<figure class="graph">\s*(<svg.*?</svg>)}m, 1]
+      svg = html[%r{<figure class="graph plan">\s*(<svg.*?</svg>)}m, 1]
       refute_nil svg, 'the plan is drawn inline'
       assert_includes svg, %(xlink:href="../tasks/canbus.Task.html")
       assert_includes svg, '>left_motor</text>'

@@ -121,6 +121,25 @@ module Syskit
       assert_equal url('devices/AwesomeRobot.Devices.N2k.FluidLevel.html'), location_after_navigation(page)
     end
 
+    # The profile's plan is drawn at its own size, wider than the text
+    # column if the window allows (it was scaled to the column, its 10 pt
+    # text about 7 px high), and the page does not scroll sideways.
+    def test_the_plan_is_drawn_at_a_readable_size_without_scrolling_sideways
+      skip 'graphviz (dot) is not installed: the drawn plan is not checked' unless Doc.dot_command
+
+      page = browser.open(url('profiles/AwesomeRobot.Profiles.Live.Base.html'))
+      scale, overflow, column = page.evaluate(<<~JS)
+        (() => { const svg = document.querySelector('figure.graph.plan svg');
+                 const html = document.documentElement;
+                 return [svg.getBoundingClientRect().width / svg.width.baseVal.value,
+                         html.scrollWidth - html.clientWidth, document.querySelector('main p').offsetWidth]; })()
+      JS
+      # The browser's window is 1,280 px wide: the 991 pt plan is 1,321 px.
+      assert_operator scale, :>=, 0.9
+      assert_equal 0, overflow
+      assert_operator page.evaluate("document.querySelector('figure.graph.plan').offsetWidth"), :>, column
+    end
+
     private
 
     def a_page_of_each_kind

@@ -32,13 +32,17 @@ module Syskit
     def test_the_model_of_the_orogen_superclass_is_made_first_or_reused
       parent = Models.create_orogen_task_context_model('define_test::Parent')
       child = Models.create_orogen_task_context_model('define_test::Child', subclasses: parent)
-      child_m = TaskContext.define_from_orogen(child)
+      child_m = TaskContext.define_from_orogen(child, register: true)
       parent_m = TaskContext.find_model_by_orogen(parent)
       assert_same parent_m, child_m.superclass
       assert_same parent, child_m.orogen_model.superclass
+      assert_same parent_m, ::OroGen.define_test.Parent
 
       other = Models.create_orogen_task_context_model('define_test::Other', subclasses: parent)
       assert_same parent_m, TaskContext.define_from_orogen(other).superclass
+
+      TaskContext.clear_submodels
+      refute ::OroGen.project_name?('define_test')
     end
 
     def test_a_registered_model_is_reached_by_its_call_chain_until_cleared

@@ -175,9 +175,22 @@ module Syskit
                            'temperature_sensor\\ncan_temperature_sensor::Task\\nid\\ 0x1234/0xFFFF|' \
                            '{<o0> can_out|<o1> temperature}}"'
       assert_includes dot, '"can0":o1 -> "temperature_sensor":i0 [label="buffer 2"];'
-      # Frames into the bus driver enter it from below, so the bus's devices
-      # line up on one side of it.
-      assert_includes dot, '"sync":o0 -> "can0":i0:s [label="buffer 12"];'
+    end
+
+    # A device's frames to its bus's driver are written from the driver,
+    # the arrow turned back: graphviz then ranks the device after the
+    # driver, as the driver's writes to it do, instead of looping it round
+    # the driver; each carries its own policy.
+    def test_dot_draws_the_frames_into_a_bus_driver_turned_back_each_labelled
+      dot = Render::Dot.render(example_plan)
+      assert_includes dot, %(  "can0":i0 -> "sync":o0 [dir=back, label="buffer 12"];\n)
+      assert_includes dot, %(  "can0":i0 -> "temperature_sensor":o0 [dir=back, label="buffer 2"];\n)
+      into_can1 = dot.lines.grep(/^  "can1":i0 -> /)
+      assert_equal [%(  "can1":i0 -> "left_motor":o0 [dir=back, label="buffer 20"];\n),
+                    %(  "can1":i0 -> "right_motor":o0 [dir=back, label="buffer 20"];\n)], into_can1
+      refute_match(/-> "can[01]":/, dot)
+      # The bus driver's writes to a bus attached through it go forward.
+      assert_includes dot, %(  "can0":o0 -> "n2k":i0 [label="buffer 20"];\n)
     end
 
     def test_dot_draws_the_ports_the_plan_connects_and_counts_the_others
@@ -203,16 +216,45 @@ module Syskit
 
     def test_dot_writes_a_policy_once_for_the_connections_into_one_port
       dot = Render::Dot.render(example_plan)
-      into_can1 = dot.lines.grep(/-> "can1":i0:s/)
-      assert_equal 2, into_can1.size
-      assert_equal 1, into_can1.grep(/label="buffer 20"/).size
+      into_monitor = dot.lines.grep(/-> "temperature_monitor":i0/)
+      assert_equal [%(  "temperature_sensor":o1 -> "temperature_monitor":i0 [label="data"];\n),
+                    %(  "water_temperature":o0 -> "temperature_monitor":i0;\n)], into_monitor
+    end
+
+    # Ranks closer than graphviz's default and boxes titled smaller than
+    # the plan keep the example app's plan within a 1,400 px window.
+    def test_dot_spaces_its_ranks_and_titles_its_boxes_to_fit_a_window
+      dot = Render::Dot.render(example_plan)
+      assert_includes dot, "  rankdir=LR;\n  ranksep=0.3;\n  node ["
+      boxes = dot.lines.grep(/^\s+subgraph /).size
+      assert_equal 7, boxes
+      assert_equal boxes, dot.lines.grep(/^\s+label=".*"; .*; fontsize=12;$/).size
+    end
+
+    # A specialization's name (model/selection) is the widest line of its
+    # box's title: the selection goes on a line of its own.
+    def test_dot_titles_a_specialized_composition_on_two_lines
+      app = load_app(File.join(GEM_ROOT, 'examples', 'arm_lab'))
+      bench = app.profiles.fetch('ArmLab::Profiles::Bench')
+      plan = Network::Generator.plan_profile(app, bench, actions: ['reach_target_def']).plan
+      assert_includes Render::Dot.render(plan),
+                      'label="reach_target.control\\nArmLab::Compositions::ArmControl\\n/controller.is_a?(arm_control::'
+    end
+
+    def test_svg_of_the_example_fits_a_1400_px_window
+      skip 'graphviz (dot) is not installed' unless system('command -v dot >/dev/null 2>&1')
+
+      svg = Render::Svg.write(example_plan, StringIO.new(+'')).string
+      width = Float(svg[/<svg width="([\d.]+)pt"/, 1])
+      # 1,400 px less a scroll bar, at 96 px to 72 pt.
+      assert_operator width * 96 / 72, :<=, 1385, "the plan is #{width} pt wide"
     end
 
     def test_dot_groups_the_devices_of_a_bus_with_its_driver_and_draws_bus_drivers_apart
       dot = Render::Dot.render(example_plan)
       can0 = dot[/^  subgraph "cluster_bus_can0" \{\n.*?^  \}\n/m]
       refute_nil can0
-      %w[can0 sync temperature_sensor water_temperature].each { |task| assert_match(/^    "#{task}" \[/, can0) }
+      %w[can0 sync].each { |task| assert_match(/^    "#{task}" \[/, can0) }
       # n2k is attached through can0, and fuel_level through n2k.
       assert_match(/^    subgraph "cluster_bus_n2k" \{\n.*^      "fuel_level" \[.*^      "n2k" \[/m, can0)
       assert_match(/^    "can0" \[label=.*style="filled,bold"/, can0)
@@ -220,10 +262,27 @@ module Syskit
       # A deployment of several tasks is a box, one of a single task none.
       assert_match(/^    subgraph "cluster_deployment_motors" \{\n.*"left_motor".*"right_motor"/m, dot)
       refute_match(/cluster_deployment_(gps|can0|sync)"/, dot)
-      # A composition is a box around the children it alone has; the
-      # motors stay in their bus's box.
-      assert_match(/^  subgraph "cluster_composition_drive" \{\n.*^    "gps" \[.*^    "path_follower" \[.*?^  \}/m, dot)
-      refute_match(/cluster_composition_drive" \{[^}]*"left_motor" \[/m, dot)
+    end
+
+    # A device's driver that a composition uses is drawn with the
+    # composition's other children, not in its bus's box: its connections
+    # to the bus's driver say which bus it is on.
+    def test_dot_draws_a_composition_around_the_children_it_alone_has_devices_included
+      dot = Render::Dot.render(example_plan)
+      drive = dot[/^  subgraph "cluster_composition_drive" \{\n.*?^  \}\n/m]
+      %w[gps path_follower].each { |task| assert_match(/^    "#{task}" \[/, drive) }
+      motors = /^    subgraph "cluster_deployment_motors" \{\n.*^      "left_motor" \[.*^      "right_motor" \[/m
+      assert_match(motors, drive)
+      watch = dot[/^  subgraph "cluster_composition_watch_temperatures" \{\n.*?^  \}\n/m]
+      %w[temperature_monitor temperature_sensor water_temperature].each do |task|
+        assert_match(/^    "#{task}" \[/, watch)
+      end
+      # Its bus's box keeps the bus's driver and the devices no composition
+      # uses.
+      can1 = dot[/^  subgraph "cluster_bus_can1" \{\n.*?^  \}\n/m]
+      assert_equal %w[can1], can1.scan(/^\s+"(\w+)" \[/).flatten
+      can0 = dot[/^  subgraph "cluster_bus_can0" \{\n.*?^  \}\n/m]
+      assert_equal %w[can0 sync fuel_level n2k], can0.scan(/^\s+"(\w+)" \[/).flatten
     end
 
     def test_dot_links_tasks_to_the_urls_given_for_their_models

@@ -23,6 +23,13 @@ module Syskit
         file
       end
 
+      # Syskit's configuration manager of +task_model+: its configuration
+      # (see #conf_file), an empty one when it has no file.
+      def configuration_manager(task_model)
+        conf_file(task_model) ||
+          (@empty_conf_files ||= {})[task_model.name] ||= Config::ConfFile.empty("#{task_model.name}.yml")
+      end
+
       # Merges +data+ into the sections +names+ of +task_model+ (made when
       # missing) until #clear_conf_stubs, as Syskit's syskit_stub_conf does.
       def stub_conf(task_model, names, data, location)

@@ -44,6 +44,11 @@ module Syskit
         @lazy_dispatch
       end
 
+      # Syskit's +lazy_dispatch = true+ (see #lazy_dispatch?).
+      def lazy_dispatch=(value)
+        @lazy_dispatch = value ? true : false
+      end
+
       # Whether the bus driver's inputs get a buffered policy even when they
       # do not declare needs_reliable_connection (true by default, as in
       # Syskit).

@@ -5,6 +5,7 @@ require 'syskit/models/port_lookup'
 require 'syskit/models/dynamic_services'
 require 'syskit/models/task_specialization'
 require 'syskit/models/task_context_orogen'
+require 'syskit/models/task_state_events'
 
 module Syskit
   module Models
@@ -20,6 +21,7 @@ module Syskit
       include DynamicServices
       include TaskSpecialization
       include TaskContextOrogen
+      include TaskStateEvents
 
       attr_reader :spec
 
@@ -140,6 +142,13 @@ module Syskit
         @worstcase_processing_time = seconds
       end
 
+      # The sections of configuration of the model, from the app's
+      # configuration files (App#configuration_manager): those of the
+      # concrete model for a specialization.
+      def configuration_manager
+        Syskit.app.configuration_manager(concrete_model)
+      end
+
       # The class of this model's +properties+ objects.
       def properties_class
         @properties_class ||= Properties.for(self)
@@ -148,23 +157,6 @@ module Syskit
       # Operations by name (inherited ones included).
       def operations
         spec ? spec.all_operations : {}
-      end
-
-      # The states every task context has (RTT's), which have an event;
-      # PRE_OPERATIONAL has none.
-      RTT_STATES_WITH_EVENTS = %w[STOPPED RUNNING RUNTIME_ERROR EXCEPTION FATAL_ERROR].freeze
-
-      # The event emitted when a task enters each of its model's states, by
-      # state name (+:CUSTOM => :custom+): RTT's, then those of its spec and
-      # of the specs it inherits (+runtime_states+, +error_states+...).
-      def state_events
-        names = RTT_STATES_WITH_EVENTS + orogen_state_names(spec)
-        names.to_h { |name| [name.to_sym, Naming.underscore(name).downcase.to_sym] }
-      end
-
-      # The event of the state +name+ (+:EXCEPTION+), nil when it has none.
-      def find_state_event(name)
-        state_events[name.to_sym]
       end
 
       # Whether the task is configured through +update_properties+ (Syskit's
@@ -186,12 +178,6 @@ module Syskit
 
       private
 
-      def orogen_state_names(spec)
-        return [] unless spec
-
-        orogen_state_names(spec.superclass) + spec.states.values.flatten
-      end
-
       def defines_own?(klass, name)
         klass.method_defined?(name, false) || klass.private_method_defined?(name, false)
       end
@@ -199,6 +185,7 @@ module Syskit
       def setup_model(spec)
         @spec = spec
         define_port_readers(spec)
+        define_event_readers
         @services = {}
         @stub_blocks = []
       end

@@ -35,9 +35,10 @@ module Syskit
       # The name #register_model gave it, nil when it was not registered.
       attr_reader :registered_name
 
-      # Forgets the submodels, and their registrations on OroGen.
+      # Forgets the submodels, and their registrations on OroGen (those of
+      # their own submodels as they clear theirs).
       def clear_submodels
-        each_submodel(&:deregister_model)
+        subclasses.each(&:deregister_model)
         super
       end
 

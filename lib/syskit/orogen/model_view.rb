@@ -40,7 +40,10 @@ module Syskit
       # (+error_states :BLOCKED+), each with its event (see
       # Models::TaskContext#state_events).
       %i[exception_states error_states runtime_states fatal_states].each do |kind|
-        define_method(kind) { |*names| @spec.states[kind].concat(names.map(&:to_s)) }
+        define_method(kind) do |*names|
+          @spec.states[kind].concat(names.map(&:to_s))
+          @model&.define_event_readers
+        end
       end
 
       # Declares a port on a task model made in Ruby, as Syskit's tests do

@@ -2,27 +2,32 @@
 
 require 'syskit/render/output'
 require 'syskit/can/timing/format'
+require 'syskit/render/dot_layout'
 
 module Syskit
   module Render
     # The plan as a Graphviz graph, drawn as Syskit draws dataflow: each
     # task a record with its input ports on the left and its output ports on
     # the right, each connection an edge between two ports labelled with its
-    # policy. A bus is a box holding its driver (drawn in blue, in bold) and
-    # the drivers of the devices attached through it, a bus attached through
+    # policy. A composition is a box holding the tasks that are its children
+    # alone (a task several compositions share stays out), device drivers
+    # included, its child compositions boxes inside. A bus is a box holding
+    # its driver (drawn in blue, in bold) and the drivers of the devices
+    # attached through it that no composition uses, a bus attached through
     # it being a box inside. Tasks that share a deployment (one process) are
-    # in a dashed box when they are in the same bus box, and say their
-    # deployment otherwise. A composition is a box too, holding the tasks
-    # that are its children alone (a task several compositions share, or
-    # attached to a bus, stays out), its child compositions boxes inside.
-    # The title is the profile and the robot.
+    # in a dashed box when they are in the same box, and say their
+    # deployment otherwise. The title is the profile and the robot.
     #
     # For the picture to stay readable: a task shows the ports the plan
     # connects (+all_ports: true+ for every port, a note says how many are
     # left out otherwise), a bus box its bitrate and load, a device its CAN
-    # filter; the writes of attached devices into their bus driver enter
-    # its input from below, and several connections into one input with
-    # one policy are labelled once.
+    # filter; the frames a device sends to its bus's driver are drawn from
+    # the driver, the arrow turned back, each labelled with its policy, so
+    # that the device is ranked after its driver instead of looped round
+    # it; other connections into one input with one policy are labelled
+    # once. Ranks are closer than graphviz's default and boxes titled
+    # smaller than the plan, for the example app's plan to fit a 1,400 px
+    # window.
     #
     # +links+ (task model name => URL) makes each task's box a link (the
     # documentation site links tasks to their model's page).
@@ -36,89 +41,12 @@ module Syskit
       BUS_BOX = 'style="rounded,filled"; fillcolor="#f2f6fc"; color="#7a9cc6"'
       DEPLOYMENT_BOX = 'style="dashed,rounded"; color="#888888"'
       COMPOSITION_BOX = 'style="rounded,filled"; fillcolor="#f4f8ef"; color="#6b8e4e"'
-
-      # Where each task is drawn: the bus boxes (nested as the buses are),
-      # the composition boxes (nested as the compositions are) and the
-      # tasks at each level, computed once from the plan.
-      class Layout
-        # A cluster: its id, label and style, its tasks and inner boxes.
-        Box = Struct.new(:id, :label, :style, :tasks, :boxes)
-
-        attr_reader :top, :bus_tasks, :shared_deployments
-
-        def initialize(plan)
-          devices = plan.devices.group_by(&:task)
-          buses = plan.devices.select(&:com_bus).to_h { |d| [d.name, d] }
-          @wires = plan.buses.to_h { |b| [b.name, b] }
-          @bus_tasks = {}
-          @boxes = {}
-          @top = Box.new(nil, nil, nil, [], [])
-          buses.each_value { |bus| box_of(bus.name, buses) }
-          @owners = composition_owners(plan)
-          plan.compositions.each { |c| composition_box(c, plan) }
-          plan.tasks.each { |task| place(task, devices[task.name] || [], buses) }
-          @shared_deployments = shared(plan.tasks)
-        end
-
-        # The box a bus's driver and the devices through the bus are in.
-        def box_of(bus_name, buses)
-          @boxes[bus_name] ||= begin
-            box = Box.new("cluster_bus_#{bus_name}", bus_label(bus_name), BUS_BOX, [], [])
-            parent = buses[bus_name]&.bus
-            (parent && buses[parent] ? box_of(parent, buses) : @top).boxes << box
-            box
-          end
-        end
-
-        private
-
-        # "bus can0", then its bitrate and load when it declares them.
-        def bus_label(bus_name)
-          wire = @wires[bus_name]
-          return "bus #{bus_name}" unless wire&.bitrate
-
-          load = wire.utilization ? ", load #{CAN::Timing::Format.percent(wire.utilization)}" : ''
-          "bus #{bus_name}\n#{CAN::Timing::Format.bitrate(wire.bitrate)}#{load}"
-        end
-
-        # For each task, the compositions whose child it is.
-        def composition_owners(plan)
-          owners = Hash.new { |h, k| h[k] = [] }
-          plan.compositions.each { |c| c.children.each_value { |name| owners[name] << c.name } }
-          owners
-        end
-
-        def composition_box(composition, plan)
-          @composition_boxes ||= {}
-          @composition_boxes[composition.name] ||= begin
-            box = Box.new("cluster_composition_#{composition.name}", "#{composition.name}\n#{composition.model}",
-                          COMPOSITION_BOX, [], [])
-            parent = composition.parent && plan.find_composition(composition.parent)
-            (parent ? composition_box(parent, plan) : @top).boxes << box
-            box
-          end
-        end
-
-        # A bus's driver goes in the bus's box, a device's driver in the
-        # box of the bus the device is attached through; any other task in
-        # the box of the composition it is the child of, when it is the
-        # child of one only.
-        def place(task, devices, buses)
-          bus = devices.find(&:com_bus)
-          @bus_tasks[task.name] = true if bus
-          through = bus&.name || devices.map(&:bus).find { |b| b && buses[b] }
-          return box_of(through, buses).tasks << task if through
-
-          owners = @owners.fetch(task.name, [])
-          (owners.size == 1 ? @composition_boxes[owners.first] : @top).tasks << task
-        end
-
-        # Deployments of several tasks, those in one box being drawn as a
-        # box of their own.
-        def shared(tasks)
-          tasks.group_by(&:deployment).select { |_, ts| ts.size > 1 }
-        end
-      end
+      # Dataflow left to right, ranks closer than graphviz's default (0.5
+      # inch): most of a plan's width is its records and the policies
+      # between them, and the example app's plan then fits a 1,400 px
+      # window. Boxes are titled smaller than the plan.
+      LAYOUT = "  rankdir=LR;\n  ranksep=0.3;\n"
+      BOX_FONT = 'fontsize=12'
 
       # Writes the graph of one plan.
       class Writer
@@ -136,7 +64,7 @@ module Syskit
 
         def write
           @out << '  label=' << Dot.quote("#{@plan.profile} on robot '#{@plan.robot}'", +'')
-          @out << ";\n  labelloc=t;\n  fontname=\"Helvetica\";\n  fontsize=16;\n  rankdir=LR;\n"
+          @out << ";\n  labelloc=t;\n  fontname=\"Helvetica\";\n  fontsize=16;\n" << LAYOUT
           @out << "  node [shape=record, fontname=\"Helvetica\", fontsize=10];\n"
           @out << "  edge [fontname=\"Helvetica\", fontsize=9, color=\"#555555\"];\n"
           box(@layout.top, '  ')
@@ -175,7 +103,7 @@ module Syskit
 
         def cluster(id, label, style, indent)
           Dot.quote(id, @out << indent << 'subgraph ') << " {\n"
-          Dot.quote(label, @out << indent << '  label=') << '; ' << style << ";\n"
+          Dot.quote(label, @out << indent << '  label=') << '; ' << style << '; ' << BOX_FONT << ";\n"
         end
 
         # Task name => names of its connected ports.
@@ -249,18 +177,29 @@ module Syskit
         end
 
         # From the output port's field to the input port's, labelled with
-        # the policy (once per input port and policy). Into a bus driver,
-        # the edge enters the port from below, not around the bus's box.
+        # the policy (once per input port and policy).
         def edge(connection)
+          from = connection.from
           to = connection.to
-          endpoint(connection.from, @out << '  ') << ' -> '
-          endpoint(to, @out)
-          @out << ':s' if @layout.bus_tasks[to.task] && @ports.dig(to.task, to.port)
+          return into_bus(connection) if @layout.on_bus?(from.task, to.task)
+
+          endpoint(to, endpoint(from, @out << '  ') << ' -> ')
           key = [to.task, to.port, connection.policy]
           return @out << ";\n" if @labelled[key]
 
           @labelled[key] = true
           Output.policy(connection.policy, @out << ' [label="') << "\"];\n"
+        end
+
+        # The frames a device sends to its bus's driver. Written from the
+        # driver with the arrow turned back, so that graphviz ranks the
+        # device after its driver as the driver's writes to it do, instead
+        # of looping the device round the driver: every such edge leaves
+        # the driver's input from its left and reaches the device's output
+        # from its right, each labelled with its own policy.
+        def into_bus(connection)
+          endpoint(connection.from, endpoint(connection.to, @out << '  ') << ' -> ')
+          Output.policy(connection.policy, @out << ' [dir=back, label="') << "\"];\n"
         end
 
         def endpoint(endpoint, out)

@@ -119,6 +119,12 @@ module Syskit
         InstanceRequirements.new([driver_model], device: self, arguments: driver_arguments, declared_at: declared_at)
       end
 
+      # Syskit's +device.instanciate(plan)+: the driver task of the device,
+      # added to +plan+ (see InstanceRequirements#instanciate).
+      def instanciate(plan, context = DependencyInjectionContext::EMPTY, **options)
+        requirements.instanciate(plan, context, **options)
+      end
+
       # Nil: a device declared in a robot block is its own master.
       def master_device; end
 

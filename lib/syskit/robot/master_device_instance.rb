@@ -89,11 +89,11 @@ module Syskit
       attr_reader :conf, :conf_location
 
       # Chooses among the deployed tasks that could run this device's driver:
-      # names matching a regexp or equal to a string.
+      # names matching a regexp or equal to a string (or matched by ===).
       def prefer_deployed_tasks(*hints)
         hints = hints.flatten
         hints.each do |hint|
-          next if hint.is_a?(Regexp) || hint.is_a?(String)
+          next if Arguments.deployment_hint?(hint)
 
           raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{hint.inspect}",
                                      location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')

@@ -231,8 +231,9 @@ module Syskit
     def test_a_failed_spec_does_not_keep_its_deployments
       spec = "name 'cams'\ntask_context 'Task' do\nend\ndeployment 'cams' do\n  task 'cam', 'cams::Task'\nend\n" \
              "simple_deployment 'cam_simple', 'cams::Nope'\n"
+      robot = "using_task_library 'cams'\nSyskit.conf.use_deployment 'cams'\n"
       root = my_app("device(Devices::IMU, as: 'imu')\n", 'models/orogen/cams.orogen' => spec,
-                                                         'config/robots/default.rb' => "using_task_library 'cams'\nSyskit.conf.use_deployment 'cams'\n")
+                                                         'config/robots/default.rb' => robot)
       out, _, status = run_cli('check', '--app', root)
       assert_equal 1, status
       assert_equal "models/orogen/cams.orogen:7: unknown task model 'cams::Nope' (did you mean 'cams::Task'?)",

@@ -4,9 +4,10 @@ require 'helper'
 require 'json'
 
 module Syskit
-  # require 'syskit/test/self', the harness of Syskit's own test files, and
-  # rake conformance, which runs them: in processes of their own, from a
-  # directory that is no app, as a Syskit developer runs them.
+  # require 'syskit/test/self', the harness of Syskit's own test files
+  # (rake conformance, which runs them, is test_conformance_task.rb): in
+  # processes of their own, from a directory that is no app, as a Syskit
+  # developer runs them.
   class TestSelfHarness < Minitest::Test
     # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
     parallelize_me!
@@ -109,15 +110,15 @@ module Syskit
             it('waits on threads') { Concurrent::CyclicBarrier.new(2) }
             it('makes a Roby app configuration') { Syskit::RobyApp::Configuration.new(Roby::Application.new) }
             it('logs while the engine runs') { capture_log(Syskit, :warn) { execution_engine } }
+            it('makes the state of a running robot') { Roby::StateSpace.new }
           end
         RUBY
         report = File.join(dir, 'report.jsonl')
         out, err, = ruby_process('test/test_runtime.rb', chdir: dir, env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
-        assert_match(/3 runs, 0 assertions, 0 failures, 0 errors, 3 skips/, out, err)
-        messages = File.readlines(report).map { |l| JSON.parse(l)['message'] }.sort
-        assert_equal ["Concurrent::CyclicBarrier needs Syskit's runtime (Roby and Orocos)",
-                      "Syskit::RobyApp::Configuration needs Syskit's runtime (Roby and Orocos)",
-                      "execution_engine needs Syskit's runtime (Roby and Orocos)"], messages
+        assert_match(/4 runs, 0 assertions, 0 failures, 0 errors, 4 skips/, out, err)
+        skipped = File.readlines(report).map { |l| JSON.parse(l)['message'].sub(/ needs Syskit's runtime .*/, '') }
+        assert_equal %w[Concurrent::CyclicBarrier Syskit::Compat::Roby::StateSpace Syskit::RobyApp::Configuration
+                        execution_engine], skipped.sort
       end
     end
 
@@ -141,6 +142,10 @@ module Syskit
         it('marks an object as not marshallable') { Object.new.extend(Roby::DRoby::Unmarshallable) }
         it('binds ports of a matcher') { Syskit::Models::DynamicPortBinding.create_from_matcher(task_m.out_port) }
         it('stubs a remote deployment') { syskit_stub_configured_deployment(task_m, 'remote', remote_task: true) }
+        it('reads the port of a deployed task') { syskit_stub_and_deploy(task_m).out_port.reader }
+        it('reads a relation graph of the plan') { plan.task_relation_graph_for(Object) }
+        it('sets up a plain component') { syskit_stub_and_deploy(Syskit::Component.new_submodel).setup }
+        it('asks whether a task may be set up') { Syskit::Component.new.ready_for_setup? }
       end
     RUBY
 
@@ -150,15 +155,14 @@ module Syskit
         report = File.join(dir, 'report.jsonl')
         out, err, = ruby_process('test/test_entry_points.rb', chdir: dir,
                                                               env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
-        assert_match(/10 runs, \d+ assertions, 0 failures, 0 errors, 8 skips/, out, err)
+        assert_match(/14 runs, \d+ assertions, 0 failures, 0 errors, 12 skips/, out, err)
         messages = File.readlines(report).map { |l| JSON.parse(l)['message'] }.reject(&:empty?).sort
         called = messages.map { |m| m.delete_suffix(" needs Syskit's runtime (Roby and Orocos)") }
-        assert_equal ['Syskit::Compat::Roby::DRoby::Unmarshallable',
-                      'Syskit::DynamicPortBinding::OutputReader', 'Syskit::Models::DynamicPortBinding.create',
-                      'Syskit::Models::DynamicPortBinding.create_from_matcher',
-                      'plan.execution_engine', 'plan.in_transaction', 'syskit_stub_deploy_and_configure',
-                      'syskit_stub_requirements_and_configure'],
-                     called
+        assert_equal ['Syskit::Compat::Roby::DRoby::Unmarshallable', 'Syskit::DynamicPortBinding::OutputReader',
+                      'Syskit::Models::DynamicPortBinding.create', 'Syskit::Models::DynamicPortBinding.create_from_matcher',
+                      'plan.execution_engine', 'plan.in_transaction', 'plan.task_relation_graph_for', 'port.reader',
+                      'syskit_stub_deploy_and_configure', 'syskit_stub_requirements_and_configure',
+                      'task.ready_for_setup?', 'task.setup'], called
       end
     end
 
@@ -330,38 +334,6 @@ module Syskit
         assert_match(/6 runs, \d+ assertions, 1 failures, 0 errors, 1 skips/, out, err)
         assert_match(/Avoid is not self contained/, out)
       end
-    end
-
-    def test_rake_conformance_counts_each_file_of_a_checkout
-      Dir.mktmpdir do |dir|
-        write_self_test(dir, 'models/test_shape.rb')
-        write_self_test(dir, 'robot/test_broken.rb', "require 'syskit/test/self'\nSyskit::NoSuchThing\n")
-        out, err, status = Open3.capture3(
-          SelfTest.child_env.merge('SYSKIT_SOURCE' => dir, 'CASES' => File.join(dir, 'none.tsv')),
-          RbConfig.ruby, '-S', 'rake', 'conformance', chdir: GEM_ROOT, unsetenv_others: true
-        )
-        assert status.success?, "#{out}\n#{err}"
-        assert_match(%r{^test/models/test_shape.rb\s+5\s+1\s+0\s+1\s+1\s}, out)
-        assert_match(%r{^test/robot/test_broken.rb\s+0\s+0\s+0\s+0\s+0\s+does not load: .*NoSuchThing}, out)
-        assert_match(/^total \(2 files, 1 not loading\)\s+5\s+1\s+0\s+1\s+1/, out)
-      end
-    end
-
-    def test_rake_conformance_refuses_a_directory_that_is_not_a_checkout
-      Dir.mktmpdir do |dir|
-        out, err, status = Open3.capture3(SelfTest.child_env.merge('SYSKIT_SOURCE' => dir), RbConfig.ruby, '-S',
-                                          'rake', 'conformance', chdir: GEM_ROOT, unsetenv_others: true)
-        refute status.success?, out
-        assert_match(%r{rake conformance: #{Regexp.escape(dir)} is not a checkout of rock-core/tools-syskit}, err)
-        assert_match(%r{\(no test/models/ in it\)}, err)
-      end
-    end
-
-    def test_rake_conformance_without_a_checkout_says_how_to_give_one
-      out, err, status = Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-S', 'rake', 'conformance',
-                                        chdir: GEM_ROOT, unsetenv_others: true)
-      assert status.success?, err
-      assert_match(%r{skipped, no checkout of rock-core/tools-syskit given \(SYSKIT_SOURCE=DIR}, out)
     end
   end
 end

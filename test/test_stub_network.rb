@@ -35,6 +35,30 @@ module Syskit
       assert plan.include?(cmp.pose_child)
     end
 
+    def test_a_device_model_is_stubbed_by_the_driver_of_a_stub_device
+      sonar = Device.new_submodel(name: 'Sonar')
+      cmp_m = Composition.new_submodel { add sonar, as: 'sonar' }
+      cmp = Test::StubNetwork.new(self).apply([cmp_m.instanciate(plan)]).first
+      assert_kind_of sonar, cmp.sonar_child
+      assert_equal sonar, cmp.sonar_child.dev0_dev.model
+    end
+
+    def test_a_driver_without_a_device_is_instanciated_and_stubbed_a_device
+      lamp = Device.new_submodel(name: 'Lamp')
+      driver = TaskContext.new_submodel(name: 'LampDriver') { driver_for lamp, as: 'lamp' }
+      cmp_m = Composition.new_submodel { add driver, as: 'lamp' }
+      cmp = cmp_m.instanciate(plan)
+      refute cmp.lamp_child.arguments.set?(:lamp_dev)
+      Test::StubNetwork.new(self).apply([cmp])
+      assert_equal lamp, cmp.lamp_child.lamp_dev.model
+    end
+
+    def test_a_model_as_plan_is_a_task_to_be_planned_for_its_requirements
+      task = @cmp_m.as_plan
+      assert_kind_of @cmp_m, task
+      assert_equal @cmp_m.to_instance_requirements, task.planning_task.requirements
+    end
+
     def test_plan_services_follow_the_replaced_tasks
       cmp = @cmp_m.instanciate(plan)
       root = cmp.as_service

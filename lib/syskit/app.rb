@@ -10,6 +10,7 @@ require 'syskit/app/settings'
 require 'syskit/app/everything'
 require 'syskit/app/conf_files'
 require 'syskit/app/init_file'
+require 'syskit/app/robot_files'
 require 'syskit/types/typekit_search'
 require 'syskit/config/robot_config_loader'
 

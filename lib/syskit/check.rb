@@ -5,7 +5,7 @@ require 'syskit/checks/can_timing'
 
 module Syskit
   # `syskit check`: loads everything in an app, generates every profile on
-  # every robot configuration, and reports all the problems found, including
+  # the robots that load it (every robot, when none names it), and reports all the problems found, including
   # the ones no generation error shows (overlapping CAN filters, CAN
   # frames that can miss their deadlines).
   class Check
@@ -45,6 +45,16 @@ module Syskit
       problems.grep(Warning)
     end
 
+    # The robots that load the profile, as Roby loads a robot: those whose
+    # configuration requires its file, directly or through other files, or
+    # uses it in Robot.actions (see App::RobotFiles). A profile no robot
+    # names is checked on every robot.
+    def robots_of(profile)
+      path = profile.declared_at&.path
+      robots = path ? app.robots_loading(path) : []
+      robots.empty? ? app.robot_configs.keys : robots
+    end
+
     private
 
     def opaque_typekits_note
@@ -59,7 +69,7 @@ module Syskit
       @problems.concat(Checks::CanTiming.new(profile).problems)
       return if profile_files(profile).intersect?(failed_files)
 
-      app.robot_configs.each_key { |robot| generate(profile, robot) }
+      robots_of(profile).each { |robot| generate(profile, robot) }
     end
 
     def profile_files(profile)

@@ -176,7 +176,7 @@ module Syskit
 
     # Syskit's network generation engine and its logging support, which
     # bundles hook into at runtime.
-    Syskit.const_set(:NetworkGeneration, Module.new)
+    Syskit.const_set(:NetworkGeneration, Module.new) unless Syskit.const_defined?(:NetworkGeneration, false)
     Syskit::NetworkGeneration.const_set(:Engine, Class.new.extend(NotModelledCalls))
     Syskit::NetworkGeneration.const_set(:LoggerConfigurationSupport, Module.new)
     not_modelled_class(Roby, :Task, 'Roby task')

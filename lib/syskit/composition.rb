@@ -55,6 +55,27 @@ module Syskit
       task
     end
 
+    # Puts +new_task+ in the roles +task+ has (Roby's replacement of a
+    # child, see Test::Plan#replace).
+    def replace_child(task, new_task)
+      @children.select { |_, child| child.equal?(task) }.each_key { |role| add_child(role, new_task) }
+    end
+
+    # Whether a connection of the model links the task ports +source+ and
+    # +sink+ (Syskit::Port of the tasks filling its children, in this
+    # direction), the children's ports mapped onto what fills them.
+    def connects?(source, sink)
+      model.port_connections.any? do |connection|
+        Composition.resolved_to?(resolve_child_port(connection.from), source) &&
+          Composition.resolved_to?(resolve_child_port(connection.to), sink)
+      end
+    end
+
+    # Whether +resolved+ (a task and port name, see #resolve_child_port) is +port+.
+    def self.resolved_to?(resolved, port)
+      resolved && resolved[0].equal?(port.component) && resolved[1] == port.name
+    end
+
     # Removes +task+ from the children.
     def remove_dependency(task)
       @children.delete_if { |_, child| child.equal?(task) }

@@ -192,6 +192,15 @@ module Syskit
       end
     end
 
+    # What the selections named that this gem does not model, left out of
+    # them, the selected requirements' included: pairs of what it is and
+    # where it was selected. A profile's definition that depends on one is
+    # left out of the plan (see Actions::ProfileDefinitions#define).
+    def not_modelled
+      nested = explicit.each_value.grep(InstanceRequirements).flat_map { |r| r.selections.not_modelled }
+      [*@not_modelled, *nested].uniq
+    end
+
     def to_s
       parts = explicit.map { |k, v| "#{key_name(k)} => #{v}" } + defaults.map(&:to_s)
       "use(#{parts.join(', ')})"
@@ -214,6 +223,7 @@ module Syskit
         when Hash
           mapping.each { |k, v| explicit[k] = v unless not_modelled?(k, location) || not_modelled?(v, location) }
         when DependencyInjection
+          @not_modelled = [*@not_modelled, *mapping.not_modelled].uniq.freeze
           explicit = mapping.explicit.merge(explicit)
           defaults.concat(mapping.defaults.to_a)
         else defaults << DependencyInjection.normalize_selected_object(mapping, nil, location)
@@ -225,12 +235,13 @@ module Syskit
       self
     end
 
-    # A value made by a statement this gem does not model (the device of
-    # use_gazebo_model): the selection is left out, with a warning.
+    # A value made by a statement this gem does not model (the device
+    # use_gazebo_model makes from an SDF file): the selection is left out,
+    # and remembered (see #not_modelled).
     def not_modelled?(value, location)
       return false unless Compat::Ignored === value # rubocop:disable Style/CaseEquality
 
-      Syskit.app&.not_modelled('a selection of something not modelled', location)
+      @not_modelled = [*@not_modelled, [value.to_s, location]].freeze
       true
     end
 

@@ -27,7 +27,10 @@ module Syskit
       # name is mapped (see Compat::OldCommonModels).
       def require(name)
         path = Syskit.app&.required_file(name) if name.is_a?(String)
-        return Syskit.app.load_file(path) if path
+        if path
+          Syskit.app.record_require(Location.of_caller, path)
+          return Syskit.app.load_file(path)
+        end
 
         super
       rescue LoadError

@@ -128,7 +128,11 @@ module Syskit
   class NetworkError < Error; end
 
   # No, or too many, deployed tasks for a task of the network.
-  class DeploymentError < NetworkError; end
+  class DeploymentError < NetworkError
+    # The task that has no deployed task, when the error is about one (see
+    # Network::Deploy): profile assertions list them.
+    attr_accessor :task
+  end
 
   # A configuration file or section that cannot be applied.
   class ConfigurationError < Error; end

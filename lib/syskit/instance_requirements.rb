@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/models/fullfillment'
+require 'syskit/network_generation/port_dynamics'
 require 'syskit/instance_requirements/statements'
 require 'syskit/instance_requirements/readers'
 require 'syskit/instance_requirements/combination'
@@ -31,15 +32,17 @@ module Syskit
 
     NO_ARGUMENTS = {}.freeze
     NO_HINTS = [].freeze
+    NO_PORT_DYNAMICS = {}.freeze
     DEFAULT_CONF = ['default'].freeze
     FIELDS = %i[models device service profile name arguments conf conf_location deployment_hints deployment
-                selections specialization_hints declared_at instance abstract doc].freeze
+                deployment_group selections specialization_hints declared_at instance abstract doc port_dynamics].freeze
 
     # +instance+: a task of the network being generated, when these
     # requirements select it (a composition's child given to another);
-    # +conf_location+: where the sections were chosen (with_conf).
+    # +conf_location+: where the sections were chosen (with_conf);
+    # +port_dynamics+: what add_port_period said, by port name.
     attr_reader :device, :service, :profile, :name, :arguments, :deployment, :selections,
-                :specialization_hints, :declared_at, :instance, :conf_location, :doc
+                :specialization_hints, :declared_at, :instance, :conf_location, :doc, :port_dynamics
 
     # What stands for requirements besides models and lists of them (see
     # .from): requirements, a model's service, a device, a tag, a
@@ -90,9 +93,9 @@ module Syskit
     end
 
     def initialize(models = nil, device: nil, service: nil, profile: nil, name: nil, arguments: NO_ARGUMENTS,
-                   conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil,
+                   conf: nil, conf_location: nil, deployment_hints: nil, deployment: nil, deployment_group: nil,
                    selections: DependencyInjection::EMPTY, specialization_hints: NO_HINTS, declared_at: nil,
-                   instance: nil, abstract: false, doc: nil, open: false)
+                   instance: nil, abstract: false, doc: nil, open: false, port_dynamics: NO_PORT_DYNAMICS)
       bound = models&.grep(Models::BoundDataService)&.first
       @models = InstanceRequirements.without_service(models, bound)
       @device = device
@@ -104,12 +107,14 @@ module Syskit
       @conf_location = conf_location
       @deployment_hints = deployment_hints&.freeze
       @deployment = deployment
+      @deployment_group = deployment_group
       @selections = selections
       @specialization_hints = specialization_hints
       @declared_at = declared_at
       @instance = instance
       @abstract = abstract
       @doc = doc
+      @port_dynamics = port_dynamics
       @open = open
       extend_readers
     end
@@ -191,6 +196,12 @@ module Syskit
       deployment || device&.declared_deployment
     end
 
+    # The deployed tasks these requirements' network may use before the
+    # robot's (Syskit's deployment group, see #use_deployment).
+    def deployment_group
+      @deployment_group || Models::DeploymentGroup.empty
+    end
+
     # Each required model, then what they provide.
     def fullfilled_models
       list = []
@@ -229,7 +240,7 @@ module Syskit
     def as(models)
       if service
         service.as(models)
-        return copy(service: component_model.find_service(service.full_name) || service)
+        return copy(service: component_model&.find_service(service.full_name) || service)
       end
 
       Models::FacetedAccess.new(self, Models::Placeholder.for(Array(models)))
@@ -237,16 +248,18 @@ module Syskit
 
     # Syskit's +instanciate+: the task these requirements stand for, its
     # children selected in +context+ (a DependencyInjectionContext), added
-    # to +plan+ with them (see Network::Instantiate.into_plan).
-    # +task_arguments+ are the root task's arguments (+conf:+ its
-    # sections); +specialization_hints+ the specializations to prefer.
+    # to +plan+ with them (see Network::Instantiate.into_plan); with a
+    # service selected, that service of the task (a Syskit::BoundDataService,
+    # as Syskit's). +task_arguments+ are the root task's arguments (+conf:+
+    # its sections); +specialization_hints+ the specializations to prefer.
     def instanciate(plan, context = DependencyInjectionContext::EMPTY, task_arguments: {}, specialization_hints: [])
       arguments = task_arguments.dup
       conf = Array(arguments.delete(:conf))
       requirements = dup.with_arguments(**arguments)
       requirements = requirements.with_conf(*conf) unless conf.empty?
       requirements = requirements.prefer_specializations(specialization_hints) unless specialization_hints.empty?
-      Network::Instantiate.into_plan(plan, requirements, context)
+      task = Network::Instantiate.into_plan(plan, requirements, context)
+      service ? service.bind(task) : task
     end
 
     # An action by its name (+Base.drive_def+, +gps_dev+), else the model
@@ -276,8 +289,10 @@ module Syskit
         conf_location: other.conf_given? ? other.conf_location : conf_location,
         deployment_hints: other.raw_hints || @deployment_hints,
         deployment: other.deployment || deployment, selections: merged_selections(other),
+        deployment_group: merged_deployment_group(other),
         specialization_hints: specialization_hints + other.specialization_hints,
-        declared_at: other.declared_at || declared_at, instance: other.instance
+        declared_at: other.declared_at || declared_at, instance: other.instance,
+        port_dynamics: port_dynamics.merge(other.port_dynamics)
       )
     end
 
@@ -306,7 +321,18 @@ module Syskit
       @models
     end
 
+    def raw_deployment_group
+      @deployment_group
+    end
+
     private
+
+    def merged_deployment_group(other)
+      return @deployment_group unless other.raw_deployment_group
+      return other.raw_deployment_group unless @deployment_group
+
+      @deployment_group.dup.use_group(other.raw_deployment_group)
+    end
 
     def merged_selections(other)
       return selections if other.selections.empty?

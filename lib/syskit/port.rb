@@ -88,7 +88,9 @@ module Syskit
     # The port of the task that has it (Syskit's +to_actual_port+): this
     # one, a composition's port being found on the child it exports.
     def to_actual_port
-      self
+      return self unless component.respond_to?(:resolve_export)
+
+      component.find_port(name)&.to_actual_port || self
     end
 
     # Connects this output port to +sink+, an input port of another task
@@ -107,11 +109,15 @@ module Syskit
     end
 
     # Whether a connection of the network links this port and +other+ (a
-    # task's port), in either direction.
+    # task's port), in either direction, or one of a composition both
+    # tasks are children of (as tasks instanciated from models are, before
+    # a network is made of them).
     def connected_to?(other)
       source = to_component_port
       other = other.to_component_port
-      source.component.connections.any? { |c| source.links?(c, other) || other.links?(c, source) }
+      return true if source.component.connections.any? { |c| source.links?(c, other) || other.links?(c, source) }
+
+      source.component.each_parent_task.any? { |cmp| cmp.connects?(source, other) || cmp.connects?(other, source) }
     end
 
     def ==(other)

@@ -95,5 +95,13 @@ module Syskit
       assert_equal gps.position_port, @inner.pose_child.pose_port.bind(gps)
       assert_raises(ArgumentError) { @inner.pose_child.pose_port.bind(OroGen.rig.Follower.new) }
     end
+
+    def test_a_composition_task_has_the_ports_it_exports
+      @inner.export @inner.pose_child.pose_port, as: 'where'
+      cmp = @inner.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
+      assert_same cmp, cmp.where_port.component
+      assert_equal @inner.where_port, cmp.where_port.model
+      assert_equal cmp.pose_child.rear_port, cmp.where_port.to_actual_port
+    end
   end
 end

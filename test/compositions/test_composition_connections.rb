@@ -16,7 +16,7 @@ module Syskit
         follow_child.command_port.connect_to split_child.in_port, type: :buffer, size: 2
         pose_child.pose_port.connect_to follow_child.pose_port
       end
-      expected = { %w[follow split] => { %w[command in] => { 'type' => 'buffer', 'size' => 2 } },
+      expected = { %w[follow split] => { %w[command in] => { type: :buffer, size: 2 } },
                    %w[pose follow] => { %w[pose pose] => {} } }
       assert_equal expected, model.connections
       assert_equal expected.to_a, model.each_explicit_connection.to_a
@@ -41,7 +41,7 @@ module Syskit
         add OroGen.rig.Splitter, as: 'split'
       end
       model.follow_child.connect_ports(model.split_child, %w[command in] => { type: :buffer, size: 4 })
-      assert_equal({ %w[follow split] => { %w[command in] => { 'type' => 'buffer', 'size' => 4 } } }, model.connections)
+      assert_equal({ %w[follow split] => { %w[command in] => { type: :buffer, size: 4 } } }, model.connections)
       other = new_cmp { add OroGen.rig.Splitter, as: 'split' }
       assert_raises(ArgumentError) { model.follow_child.connect_ports(other.split_child, %w[command in] => {}) }
       error = assert_raises(Models::InvalidCompositionChildPort) do

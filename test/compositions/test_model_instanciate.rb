@@ -51,6 +51,16 @@ module Syskit
       assert cmp.pose_child.model.placeholder?
     end
 
+    # provides includes the service's module: a task of a model providing
+    # it, a driver or a placeholder standing for the service, is one.
+    def test_a_task_providing_a_service_is_kind_of_it
+      assert_kind_of Rig::Services::Pose, watch_model.instanciate(@plan).pose_child
+      driver = OroGen.rig.GPSDriver.new
+      assert_kind_of Rig::Devices::GPS, driver
+      assert_kind_of Rig::Services::Pose, driver
+      refute_kind_of Rig::Services::Pose, OroGen.rig.Follower.new
+    end
+
     def test_a_data_service_selected_for_a_child_adds_to_what_it_requires
       cmp = watch_model.instanciate(@plan, DependencyInjectionContext.new('pose' => Rig::Services::SpeedSource))
       assert_equal [Rig::Services::SpeedSource, Rig::Services::Pose], cmp.pose_child.model.proxied_data_service_models
@@ -105,6 +115,60 @@ module Syskit
       assert_equal({ 'pose' => 'front' }, explicit['pose'].port_mappings)
       assert_equal [OroGen.rig.Follower], all['follower'].selected.models
       assert_equal({ 'pose' => ['pose'], 'follower' => [] }, used.transform_values(&:to_a))
+    end
+
+    def test_a_composition_has_readers_of_its_exported_ports
+      model = watch_model
+      model.export model.follower_child.command_port
+      cmp = model.instanciate(@plan, DependencyInjectionContext.new('pose' => OroGen.rig.Tracker.rear_pose_srv))
+      # As in Syskit: the composition's own port, whose actual port is the
+      # child's it is exported from.
+      assert_same cmp, cmp.command_port.component
+      assert_equal cmp.follower_child.command_port, cmp.command_port.to_actual_port
+    end
+
+    # Roby's +Model.as_plan+: a task to be planned, holding the model's
+    # requirements.
+    def test_a_component_model_as_plan_is_a_task_to_be_planned
+      task = OroGen.rig.Follower.as_plan(speed: 2)
+      assert_kind_of OroGen.rig.Follower, task
+      assert_equal({ speed: 2 }, task.arguments)
+      assert_equal OroGen.rig.Follower.with_arguments(speed: 2), task.planning_task.requirements
+    end
+
+    # As Roby's plan.replace: the new task takes the child's roles, and
+    # the composition's connections map onto its ports.
+    def test_a_child_replaced_in_the_plan_takes_its_connections
+      model = watch_model
+      model.pose_child.pose_port.connect_to model.follower_child.pose_port
+      cmp = model.instanciate(@plan)
+      placeholder = cmp.pose_child
+      sink = cmp.follower_child.pose_port
+      assert placeholder.pose_port.connected_to?(sink)
+      gps = @plan.replace(placeholder, OroGen.rig.GPSDriver.new)
+      assert_equal [gps, true, false], [cmp.pose_child, sink.connected_to?(gps.position_port),
+                                        placeholder.pose_port.connected_to?(sink)]
+      assert @plan.include?(placeholder)
+    end
+
+    def test_a_task_replaced_leaves_the_plan
+      cmp = watch_model.instanciate(@plan)
+      placeholder = cmp.pose_child
+      gps = @plan.replace_task(placeholder, OroGen.rig.GPSDriver.new)
+      assert_same gps, cmp.pose_child
+      refute @plan.include?(placeholder)
+    end
+
+    # As Syskit's: requirements with a service selected instanciate into
+    # that service of the task; a placeholder's service may be selected
+    # on requirements of its service models.
+    def test_requirements_on_a_service_instanciate_into_the_service_of_the_task
+      bound = OroGen.rig.Tracker.rear_pose_srv.to_instance_requirements.instanciate(@plan)
+      assert_equal [OroGen.rig.Tracker.rear_pose_srv, OroGen.rig.Tracker], [bound.model, bound.component.model]
+      placeholder_srv = Rig::Services::Pose.placeholder_model.find_data_service_from_type(Rig::Services::Pose)
+      requirements = InstanceRequirements.new([Rig::Services::Pose]).select_service(placeholder_srv)
+      assert_equal placeholder_srv, requirements.service
+      assert_equal placeholder_srv, requirements.instanciate(@plan).model
     end
 
     def test_a_child_removed_from_the_task_is_no_required_child

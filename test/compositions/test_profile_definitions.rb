@@ -168,6 +168,7 @@ module Syskit
         end
       RUBY
       assert_equal %w[rear_watch_def watch_def], Rig::Profiles::Base.syskit_profile.action_names
+      assert_equal %w[rear_watch watch], [Rig::Profiles::Base.rear_watch_def.name, Rig::Profiles::Base.watch_def.name]
       assert_equal ['tracker.rear -> follower.pose'], connection_lines(plan_of(app, 'rear_watch_def'))
       assert_equal ['tracker.front -> follower.pose'], connection_lines(plan_of(app, 'watch_def'))
     end

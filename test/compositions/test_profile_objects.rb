@@ -37,6 +37,20 @@ module Syskit
       assert_raises(NoMethodError) { profile.other_def }
     end
 
+    # The selections in effect for a definition's children: its own use,
+    # and the profile's, as one injection.
+    def test_resolved_dependency_injection_has_the_selections_in_effect
+      @task.provides @pose, as: 'pose'
+      cmp = Composition.new_submodel(name: 'Follow')
+      cmp.add @pose, as: 'pose'
+      assert_equal @task.pose_srv, cmp.use('pose' => @task.pose_srv).resolved_dependency_injection.explicit['pose']
+      profile = Actions::Profile.new('Base')
+      profile.use @pose => @task
+      profile.define 'follow', cmp
+      resolved = profile.resolved_definition('follow').resolved_dependency_injection
+      assert_equal @task.pose_srv, resolved.explicit[@pose]
+    end
+
     def test_definition_gives_a_new_copy_each_time
       profile = Actions::Profile.new
       profile.define('drive', @task)
@@ -53,6 +67,21 @@ module Syskit
       assert_equal 'anonymous profile.localization_tag', tag.to_s
       profile.use(@task => @task)
       assert_equal({ @task => @task }, profile.selections.explicit)
+    end
+
+    def test_tasks_of_a_tag_stand_for_that_tag_only
+      require 'syskit/test/plan'
+      profile = Actions::Profile.new
+      profile.tag('localization', @pose)
+      profile.tag('odometry', @pose)
+      plan = Test::Plan.new
+      first = profile.localization_tag.instanciate(plan)
+      again = profile.localization_tag.instanciate(plan)
+      other = profile.odometry_tag.instanciate(plan)
+      assert first.fullfills?(@pose)
+      assert first.can_merge?(again)
+      refute first.can_merge?(other)
+      refute other.can_merge?(first)
     end
 
     def test_devices_declared_on_the_robot_of_a_profile_object

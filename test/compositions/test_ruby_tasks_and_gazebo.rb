@@ -192,21 +192,69 @@ module Syskit
       assert(messages.any? { |m| m.start_with?("property 'model_sdf' of rock_gazebo::ModelTask set from something") })
     end
 
-    def test_use_gazebo_model_without_the_simulator_is_not_modelled
-      app = write_app({ 'config/syskit.yml' => "name: Sim\n", 'models/profiles/base.rb' => <<~RUBY }, name: 'sim')
-        module Sim
-          module Profiles
-            profile 'Base' do
-              use_gazebo_model 'model://arm'
-              define 'arm_control', Syskit::Composition.new_submodel.use('arm' => arm_dev)
+    # Without the simulator's models, the device use_gazebo_model would make
+    # from the SDF file is not modelled: each definition that selects it,
+    # or is made from one that does, is one warning at its define line and
+    # is left out of the plan, rather than an error on the child left
+    # without a selection. The rest of the profile is planned as before.
+    CRANE = {
+      'models/compositions/hoist.rb' => <<~RUBY,
+        require 'models/devices/rover'
+        module Rig
+          module Compositions
+            class Hoist < Syskit::Composition
+              argument :height, default: 1
+              add Devices::Wheel, as: 'winch'
             end
           end
         end
       RUBY
-      loaded = load_app(app)
-      messages = loaded.problems.map(&:message)
-      assert_match(/use_gazebo_model in profile Sim::Profiles::Base: not modelled/, messages[0])
-      assert_match(/a selection of something not modelled/, messages[1])
+      'models/profiles/world.rb' => <<~RUBY,
+        module Rig
+          module Profiles
+            profile 'World' do
+              use_gazebo_model 'model://crane', prefix_device_with_name: true
+              use_sdf_model 'model://hook', as: 'hook'
+            end
+          end
+        end
+      RUBY
+      'models/profiles/yard.rb' => <<~RUBY
+        require 'models/profiles/world'
+        require 'models/compositions/hoist'
+        module Rig
+          module Profiles
+            profile 'Yard' do
+              robot { device(Devices::Wheel, as: 'spare').prefer_deployed_tasks('left_wheel') }
+              define 'lift', Compositions::Hoist.use('winch' => World.crane_dev)
+              define 'lift_high', lift_def.with_arguments(height: 10)
+              define 'hook', Compositions::Hoist.use(World.hook_dev)
+              define 'spare_lift', Compositions::Hoist.use('winch' => spare_dev)
+            end
+          end
+        end
+      RUBY
+    }.freeze
+
+    def test_definitions_needing_a_device_made_from_an_sdf_file_are_left_out
+      loaded = load_app(rig_app(CRANE))
+      yard = Rig::Profiles::Yard.syskit_profile
+      assert_equal %w[spare_lift], yard.definitions.keys
+      warnings = loaded.problems.select { |p| p.location&.path&.end_with?('models/profiles/yard.rb') }
+      assert_equal([7, 8, 9], warnings.map { |w| w.location.lineno })
+      crane = %r{Rig::Profiles::World.crane_dev \(made by use_gazebo_model from the SDF file of model://crane\)}
+      assert_match(/definition 'lift', which depends on #{crane}: not modelled by this gem/, warnings[0].message)
+      assert_match(/definition 'lift_high', which depends on Rig::Profiles::World.crane_dev/, warnings[1].message)
+      assert_match(/definition 'hook', which depends on Rig::Profiles::World.hook_dev \(made by use_sdf_model\)/,
+                   warnings[2].message)
+      assert(warnings.all?(Warning))
+    end
+
+    def test_syskit_check_reports_them_as_warnings_and_no_error
+      out, _, status = run_cli('check', '--app', rig_app(CRANE))
+      assert_equal 0, status, out
+      assert_equal 3, out.scan(/which depends on Rig::Profiles::World\.\w+_dev/).size, out
+      refute_match(/abstract|nothing selects/, out)
     end
   end
 end

@@ -95,6 +95,18 @@ module Syskit
       refute task.dynamic_service(srv, as: 'live', dynamic: true) { provides srv }.addition_requires_reconfiguration?
     end
 
+    def test_the_dynamic_option_of_a_dynamic_service_is_deprecated
+      srv = DataService.new_submodel
+      task = TaskContext.new_submodel
+      level = ENV.fetch('SYSKIT_LOG', nil)
+      ENV['SYSKIT_LOG'] = 'debug'
+      _, err = capture_io { task.dynamic_service(srv, as: 'live', dynamic: true) { provides srv } }
+      assert_match(/dynamic: of dynamic_service is deprecated, write addition_requires_reconfiguration: false/, err)
+      assert_empty capture_io { task.dynamic_service(srv, as: 'plain') { provides srv } }[1]
+    ensure
+      ENV['SYSKIT_LOG'] = level
+    end
+
     def test_a_ruby_task_model_declares_dynamic_ports_its_dynamic_services_create
       double = Types::OpaqueType.new('/double')
       srv = DataService.new_submodel { output_port 'out', double }
@@ -180,6 +192,38 @@ module Syskit
       assert_equal [srv], model.each_required_dynamic_service
       task = model.new
       assert_equal [srv.bind(task)], task.each_required_dynamic_service
+    end
+
+    def test_a_model_as_plan_is_a_task_standing_for_its_requirements
+      model = Component.new_submodel { argument :speed }
+      task = model.as_plan(speed: 2)
+      assert_kind_of model, task
+      assert_equal 2, task.speed
+      assert_equal model.to_instance_requirements.with_arguments(speed: 2), task.requirements
+      assert task.planning_task
+    end
+
+    def test_a_dynamic_service_block_that_provides_nothing_is_an_invalid_block
+      srv = DataService.new_submodel
+      task = TaskContext.new_submodel
+      dynamic = task.dynamic_service(srv, as: 'dyn') { nil }
+      error = assert_raises(InvalidDynamicServiceBlock) { dynamic.instanciate('one') }
+      assert_match(/the block of dynamic service 'dyn' of .* provides nothing for 'one'/, error.message)
+      assert_equal [File.expand_path(__FILE__), __LINE__ - 3], [error.location.path, error.location.lineno]
+      assert_match(/call provides/, error.hint)
+    end
+
+    def test_compute_port_mappings_binds_a_service_as_provides_would
+      double = Types::OpaqueType.new('/double')
+      srv = DataService.new_submodel { output_port 'pose', double }
+      task = TaskContext.new_submodel do
+        output_port 'a', double
+        output_port 'b', double
+      end
+      assert_equal({ 'pose' => 'b' }, task.compute_port_mappings(srv, 'pose' => 'b'))
+      error = assert_raises(InvalidPortMapping) { task.compute_port_mappings(srv) }
+      assert_equal File.expand_path(__FILE__), error.location.path
+      assert_nil task.find_data_service('pose'), 'nothing declared'
     end
   end
 end

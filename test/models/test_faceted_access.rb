@@ -74,6 +74,9 @@ module Syskit
       requirements = task.to_instance_requirements.select_service(task.odom_srv)
       assert_same task.odom_srv, requirements.as(@pose).service
       assert_raises(DeclarationError) { requirements.as(@heading) }
+      placeholder_srv = odometry.placeholder_model.find_data_service_from_type(odometry)
+      on_placeholder = InstanceRequirements.new([odometry]).select_service(placeholder_srv)
+      assert_same placeholder_srv, on_placeholder.as(@pose).service
     end
   end
 end

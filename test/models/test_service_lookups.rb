@@ -154,7 +154,28 @@ module Syskit
       assert_equal @gps_task.gps_srv, @gps_task.try_bind(@gps_task.gps_srv)
       assert_nil @gps_task.try_bind(@stereo_task)
       error = assert_raises(DeclarationError) { @gps_task.bind(@stereo_task) }
-      assert_match 'nav::StereoTask is not a nav::GpsTask', error.message
+      assert_match 'cannot bind nav::GpsTask to nav::StereoTask', error.message
+    end
+
+    def test_bind_takes_a_task_of_the_model_or_of_a_submodel
+      task = @gps_task.new_submodel.new
+      assert_same task, @gps_task.bind(task)
+      assert_nil @stereo_task.try_bind(task)
+      assert_nil @gps_task.try_bind(Object.new)
+    end
+
+    def test_resolve_is_bind_under_its_deprecated_name
+      task = @gps_task.new
+      level = ENV.fetch('SYSKIT_LOG', nil)
+      ENV['SYSKIT_LOG'] = 'debug'
+      _, err = capture_io do
+        assert_same task, @gps_task.resolve(task)
+        assert_nil @stereo_task.try_resolve(task)
+      end
+      assert_match(/resolve is deprecated, use Models::Component#bind/, err)
+      assert_match(/try_resolve is deprecated, use Models::Component#try_bind/, err)
+    ensure
+      ENV['SYSKIT_LOG'] = level
     end
   end
 end

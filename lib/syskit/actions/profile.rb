@@ -62,7 +62,39 @@ module Syskit
         # A profile made in Ruby declares its devices on its robot
         # (+profile.robot.device(...)+), as Syskit's.
         @robot = namespace ? Robot::Definition.new(self) : Robot::RobotDefinition.new(self)
+        @deployment_group = Syskit::Models::DeploymentGroup.new
         Profile.register_submodel(self) if register
+      end
+
+      # The deployments of the profile's actions (Syskit's deployment
+      # group): their tasks are deployed from them before the robot's.
+      attr_reader :deployment_group
+
+      # Deployments for the profile's actions, as in config/robots
+      # (see Models::DeploymentGroup):
+      #
+      #   use_deployment OroGen.rig.Tracker => 'rear_tracker'
+      DEPLOYMENT_STATEMENTS = %i[use_deployment use_deployments_from use_ruby_tasks use_unmanaged_task use_group].freeze
+
+      DEPLOYMENT_STATEMENTS.each do |statement|
+        define_method(statement) do |*args, **options|
+          deployment_group.public_send(statement, *args, **options)
+          self
+        end
+      end
+
+      # A deployment group of its own, +<name>_deployment_group+, for
+      # use_group (here, or in requirements' use_deployment_group):
+      #
+      #   define_deployment_group 'trackers' do
+      #     use_deployment OroGen.rig.Tracker => 'rear_tracker'
+      #   end
+      #   use_group trackers_deployment_group
+      def define_deployment_group(name, &block)
+        group = Syskit::Models::DeploymentGroup.new
+        group.instance_eval(&block) if block
+        define_action("#{name}_deployment_group") { group }
+        group
       end
 
       def name
@@ -153,12 +185,10 @@ module Syskit
       # with a "not modelled" warning each (see Compat). The value says which
       # action name a statement defines, when it defines one, so that later
       # statements can refer to it.
-      # Deployment groups (+use_deployment+ and its kin in a profile) are
-      # runtime choices of Syskit's action interface: this gem deploys from
-      # the robot configuration (config/robots/*.rb).
-      NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: nil, transformer: nil, use_deployment: nil,
-                       use_ruby_tasks: nil, use_unmanaged_task: nil, use_deployments_from: nil, use_group: nil,
-                       define_deployment_group: ->(name, *) { "#{name}_deployment_group" } }.freeze
+      # +use_sdf_model model, as: 'arm'+ makes +arm_dev+ from the SDF model,
+      # which is not modelled either.
+      NOT_MODELLED = { use_sdf_world: nil, use_sdf_model: ->(*, as: nil, **) { "#{as}_dev" if as },
+                       transformer: nil }.freeze
 
       # The comment block above +location+ (documentation of a statement).
       def self.doc_above(location)
@@ -173,16 +203,24 @@ module Syskit
           define_method(statement) do |*args, **options, &_block|
             Syskit.app&.not_modelled("#{statement} in profile #{self}", Location.of_caller)
             name = action&.call(*args, **options)
+            value = Compat::Ignored.instance
             if name && !respond_to?(name)
-              ignored = Compat::Ignored.instance
-              define_singleton_method(name) { ignored }
+              value = Compat::Ignored.new("#{self}.#{name} (made by #{statement})")
+              define_singleton_method(name) { value }
             end
-            Compat::Ignored.instance
+            value
           end
         end
 
         def robot(&)
           syskit_profile.robot_block(&)
+        end
+
+        [*DEPLOYMENT_STATEMENTS, :define_deployment_group].each do |statement|
+          define_method(statement) do |*args, **options, &block|
+            result = syskit_profile.public_send(statement, *args, **options, &block)
+            result.equal?(syskit_profile) ? self : result
+          end
         end
 
         # Defines +name_def+: what the robot can run (see Definitions#define).
@@ -210,8 +248,9 @@ module Syskit
 
           Syskit.app&.not_modelled("use_gazebo_model in profile #{self}", location)
           name = "#{as || url.to_s.sub(%r{\Amodel://}, '').split('/').first}_dev"
-          define_singleton_method(name) { Compat::Ignored.instance } unless respond_to?(name)
-          Compat::Ignored.instance
+          device = Compat::Ignored.new("#{self}.#{name} (made by use_gazebo_model from the SDF file of #{url})")
+          define_singleton_method(name) { device } unless respond_to?(name)
+          device
         end
 
         # Uses +profile+ (see Definitions#use_profile): +tags+ select for its

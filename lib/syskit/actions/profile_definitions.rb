@@ -8,6 +8,17 @@ module Syskit
       # +Base.localization_tag+; +use_profile Base, 'localization' => X+
       # selects it).
       class Tag
+        # What tasks standing for a tag have: one stands only for tasks of
+        # the same tag (not for those of another tag of the same services).
+        module Task
+          def can_merge?(other)
+            super && other.model.equal?(model)
+          end
+        end
+
+        # The kind of placeholder models tags have (see #placeholder_model).
+        PLACEHOLDER = Syskit::Models::Placeholder.new_specialized_placeholder(task_extension: Task)
+
         attr_reader :profile, :name, :models, :declared_at
 
         def initialize(profile, name, models, location)
@@ -15,12 +26,25 @@ module Syskit
           @name = name
           @models = models.freeze
           @declared_at = location
-          freeze
+          @placeholder_model = nil
+        end
+
+        # The placeholder model of the tag's tasks, its own (as Syskit's
+        # tags): tasks of two tags of the same services are of two models,
+        # so that neither can stand for the other.
+        def placeholder_model
+          @placeholder_model ||= PLACEHOLDER.create_for(models, as: to_s)
         end
 
         # The requirements it stands for (abstract: only services).
         def requirements
-          InstanceRequirements.new(models, profile: profile, name: "#{name}_tag", declared_at: declared_at)
+          InstanceRequirements.new([placeholder_model], profile: profile, name: "#{name}_tag", declared_at: declared_at)
+        end
+
+        # Tasks standing for the tag in +plan+ (see
+        # InstanceRequirements#instanciate).
+        def instanciate(plan, ...)
+          requirements.instanciate(plan, ...)
         end
 
         def each_fullfilled_model(&)
@@ -70,7 +94,7 @@ module Syskit
         def define(name, requirements, location: Location.of_caller, doc: nil)
           name = Arguments.name(name, statement: 'define', what: 'a definition name', pattern: Arguments::METHOD_NAME,
                                       example: "define 'arm_control', Compositions::ArmControl")
-          return not_modelled_definition(name, location) if Compat::Ignored === requirements # rubocop:disable Style/CaseEquality
+          return not_modelled_definition(name, location, requirements.to_s) if Compat::Ignored === requirements # rubocop:disable Style/CaseEquality
 
           unless InstanceRequirements.selectable?(requirements)
             raise DeclarationError.new(
@@ -80,15 +104,23 @@ module Syskit
           end
 
           requirements = dependency_injection_context.direct_selection_for(requirements) || requirements
-          register_definition(name, InstanceRequirements.from(requirements, location: location), doc, location)
+          requirements = InstanceRequirements.from(requirements, location: location)
+          missing = requirements.selections.not_modelled.first
+          return not_modelled_definition(name, location, missing[0]) if missing
+
+          register_definition(name, requirements, doc, location)
         end
 
-        # A definition of something not modelled: its action stands for it,
-        # with a warning.
-        def not_modelled_definition(name, location)
-          Syskit.app&.not_modelled("definition '#{name}' of something not modelled", location)
-          define_action("#{name}_def") { Compat::Ignored.instance }
-          Compat::Ignored.instance
+        # A definition of something not modelled, or that selects something
+        # not modelled (+what+, as the device of use_gazebo_model): one
+        # warning, and the definition is left out of the plan; its action
+        # stands for it, so that later statements may refer to it.
+        def not_modelled_definition(name, location, what)
+          what = 'something not modelled' if what == Compat::Ignored.instance.to_s
+          value = Compat::Ignored.new(what)
+          Syskit.app&.not_modelled("definition '#{name}', which depends on #{what}", location)
+          define_action("#{name}_def") { value }
+          value
         end
 
         def register_definition(name, requirements, doc, location)
@@ -170,6 +202,8 @@ module Syskit
           tag_selections = resolve_tag_selection(profile, tags, location)
           used_profiles << [profile, tag_selections, location]
           robot.use_robot(profile.robot)
+          # Its devices are this profile's actions too (Importer.gps_dev).
+          profile.robot.each_master_device { |device| define_device_action(device) }
           profile.definitions.each_value do |definition|
             requirements = definition
             requirements = requirements.use(tag_selections) unless tag_selections.empty?

@@ -69,6 +69,24 @@ module Syskit
         nil
       end
 
+      # Records that the code at +location+ requires +path+, a file of the
+      # app or of its bundles (see RobotFiles), and that the robot whose
+      # configuration is loading loads it.
+      def record_require(location, path)
+        robot_files.required(location.path, path) if location
+        loading_robot_config&.loaded_files&.<<(path)
+      end
+
+      def robot_files
+        @robot_files ||= RobotFiles.new
+      end
+
+      # The names of the robots, of those loaded, whose configuration loads
+      # +path+ (see RobotFiles).
+      def robots_loading(path)
+        robot_configs.select { |_, config| robot_files.reaches?(config.loaded_files, path) }.keys
+      end
+
       # Evaluates a file that is not a model file (a robot configuration)
       # in the app's namespace, each time it is asked to.
       def eval_file(path)

@@ -4,7 +4,7 @@ module Syskit
   # `syskit check`, a command of `syskit` (see syskit/cli.rb): every problem
   # of an app, as text grouped by file or as JSON.
   class CLI < Thor
-    desc 'check', 'load an app, generate every profile on every robot, report every problem'
+    desc 'check', 'load an app, generate every profile on the robots that load it, report every problem'
     long_desc <<~TEXT
       Reports all the problems found (not only the first), grouped by file,
       and exits with status 1 if there is any error. Overlapping CAN filters

@@ -12,8 +12,14 @@ module Syskit
         @instance ||= new
       end
 
+      # +what+: what the statement made, for the warnings of what
+      # depends on it ("the device of use_gazebo_model 'model://ur10'").
+      def initialize(what = nil)
+        @what = what
+      end
+
       def to_s
-        '(not modelled)'
+        @what || '(not modelled)'
       end
       alias inspect to_s
 

@@ -7,13 +7,11 @@ module Syskit
     #
     #   Syskit.conf.use_deployment 'test_canbus'              # a deployment of an .orogen file
     #   Syskit.conf.use_deployment OroGen.gps_ublox.Task => 'gps'  # one task, named 'gps'
-    class RobotConfig
-      # Options of use_deployment that only matter to a running system
-      # (where and how processes are started): accepted, no effect on plans.
-      RUNTIME_OPTIONS = %i[on simulation loader process_managers read_only logger_name wait valgrind
-                           valgrind_options gdb gdb_options log_level output oro_logfile working_directory
-                           cmdline_args].freeze
-
+    #
+    # Its deployment statements are those of every deployment group (see
+    # Models::DeploymentGroup); the file's phases and the runtime's
+    # statements are its own.
+    class RobotConfig < Models::DeploymentGroup
       # Statements of Syskit.conf about a running system (process servers,
       # simulators, logging, ruby tasks): accepted, with a "not modelled"
       # warning each (see Compat).
@@ -25,75 +23,12 @@ module Syskit
       # A Robot.init/requires/config/controller/actions block of the file.
       PhaseBlock = Struct.new(:phase, :block, :location)
 
-      attr_reader :name, :deployments
+      attr_reader :name
 
       def initialize(app, name)
-        @app = app
+        super(app)
         @name = name
-        @deployments = []
-        @deployed_tasks = {}
         @phase_blocks = []
-      end
-
-      # Deploys task instances, as Syskit's use_deployment does:
-      #
-      #   use_deployment 'test_canbus'                    # a deployment of an .orogen file
-      #   use_deployment 'test_canbus' => 'left_'         # ... its task names prefixed
-      #   use_deployment 'test_canbus', prefix: 'left_'   # the same
-      #   use_deployment OroGen.gps_ublox.Task => 'gps'   # one task, named gps
-      #   use_deployment 'gps_ublox::Task' => 'gps'       # the same, by model name
-      #
-      # Where and how processes start (+on:+, +valgrind:+, ...) does not
-      # change a plan: those options are accepted and ignored.
-      def use_deployment(*specs, prefix: nil, **options)
-        location = Location.of_caller
-        # Ruby passes a trailing `Model => 'name'` as keywords. Most
-        # statements give no option: their keywords are all mappings.
-        mappings = options
-        if options.any? { |key, _| key.is_a?(Symbol) }
-          mappings = options.reject { |key, _| key.is_a?(Symbol) }
-          check_options(options.keys.grep(Symbol), location)
-        end
-        specs.each { |spec| add_spec(spec, prefix, location) }
-        mappings.each { |spec, value| add_mapping(spec, value, prefix, location) }
-        self
-      end
-
-      # Every deployment an .orogen file declares (Syskit's
-      # use_deployments_from).
-      def use_deployments_from(*libraries, **options)
-        location = Location.of_caller
-        check_options(options.keys, location)
-        libraries.each do |name|
-          library = @app.using_task_library(name.to_s, location: location)
-          library.deployments.each_value { |deployment| add(deployment, location) }
-        end
-        self
-      end
-
-      # Tasks started outside of Syskit's control, integrated in the
-      # network: planned as deployed tasks of their own name.
-      def use_unmanaged_task(mappings = {}, **options)
-        location = Location.of_caller
-        raise unmanaged_without_model(mappings, location) unless mappings.is_a?(Hash)
-
-        mappings = mappings.merge(options.reject { |key, _| key.is_a?(Symbol) })
-        check_options(options.keys.grep(Symbol), location)
-        mappings.each { |model, name| add_mapping(model, name, nil, location) }
-        self
-      end
-
-      # Ruby task contexts (see RubyTaskContext), each deployed as a task of
-      # its own name: +use_ruby_tasks Generator => 'setpoint'+. +on:+ (the
-      # process they run in) has no effect on plans.
-      def use_ruby_tasks(mappings = {}, on: nil, **more) # rubocop:disable Lint/UnusedMethodArgument
-        location = Location.of_caller
-        mappings.merge(more).each do |model, name|
-          raise not_a_ruby_task(model, name, location) unless model.is_a?(Class) && model < RubyTaskContext
-
-          add_mapping(model, name, nil, location)
-        end
-        self
       end
 
       # Simulation is not modelled: plans are of the real robot.
@@ -103,7 +38,7 @@ module Syskit
 
       NOT_MODELLED.each do |statement|
         define_method(statement) do |*_args, **_options, &_block|
-          @app.not_modelled("Syskit.conf.#{statement}", Location.of_caller)
+          app.not_modelled("Syskit.conf.#{statement}", Location.of_caller)
           Compat::Ignored.instance
         end
       end
@@ -113,47 +48,15 @@ module Syskit
         @phase_blocks << PhaseBlock.new(phase, block, location)
       end
 
+      # The files this robot's configuration required as it loaded, and
+      # those of the profiles its Robot.actions blocks use (see
+      # App::RobotFiles): what Roby loads for this robot.
+      def loaded_files
+        @loaded_files ||= Set.new
+      end
+
       def phase_blocks(phase)
         @phase_blocks.select { |entry| entry.phase == phase }
-      end
-
-      # Deployed tasks by name.
-      def deployed_tasks
-        @deployed_tasks.values
-      end
-
-      # The deployed tasks that can run a task of +model+ (their model is it
-      # or a subclass of it), computed once per model: indexed by name for
-      # prefer_deployed_tasks('name'), listed by name when they must be
-      # scanned (regexp hints) or shown (errors).
-      class Candidates
-        attr_reader :by_name
-
-        def initialize(groups)
-          @by_name = {}
-          groups.each { |tasks| tasks.each { |t| @by_name[t.name] = t } }
-        end
-
-        def empty?
-          by_name.empty?
-        end
-
-        def list
-          @list ||= by_name.values.sort_by(&:name).freeze
-        end
-      end
-
-      def candidates_for(model)
-        @candidates ||= {}
-        @candidates[model] ||= begin
-          @by_model ||= deployed_tasks.group_by(&:model)
-          Candidates.new(@by_model.filter_map { |m, tasks| tasks if m <= model })
-        end
-      end
-
-      # Deployed tasks whose model is +model+ or a subclass of it, by name.
-      def deployed_tasks_for(model)
-        candidates_for(model).list
       end
 
       def to_s
@@ -162,128 +65,6 @@ module Syskit
 
       def inspect
         "#<#{self.class.name} #{name}: #{@deployed_tasks.keys.join(', ')}>"
-      end
-
-      private
-
-      def unmanaged_without_model(given, location)
-        DeploymentError.new(
-          "use_unmanaged_task takes a task model and the name of its task, got #{given.inspect} alone",
-          location: location,
-          hint: "write Syskit.conf.use_unmanaged_task OroGen.lib.Task => '#{given.is_a?(String) ? given : 'name'}'"
-        )
-      end
-
-      def add(deployment, location)
-        @candidates = nil
-        @by_model = nil
-        @deployments << deployment
-        deployment.task_activities.each do |task|
-          if (other = @deployed_tasks[task.name])
-            raise DeploymentError.new(
-              "deployed task name '#{task.name}' is used twice (#{other} and #{task})",
-              location: location, hint: 'deployed task names must be unique on a robot: rename one of them'
-            )
-          end
-
-          @deployed_tasks[task.name] = task
-        end
-      end
-
-      def check_options(keys, location)
-        unknown = keys - RUNTIME_OPTIONS
-        return if unknown.empty?
-
-        raise DeploymentError.new(
-          "use_deployment does not know the option#{'s' if unknown.size > 1} #{unknown.map { |k| "#{k}:" }.join(', ')}",
-          location: location,
-          hint: 'options that change the plan: prefix:; accepted and ignored: ' \
-                "#{RUNTIME_OPTIONS.map { |o| "#{o}:" }.join(', ')}"
-        )
-      end
-
-      def add_spec(spec, prefix, location)
-        case spec
-        when String, Symbol then add(prefixed(named_deployment(spec.to_s, location), prefix), location)
-        when Models::Deployment, Models::ConfiguredDeployment then add(prefixed(spec.orogen_model, prefix), location)
-        when Hash then spec.each { |key, value| add_mapping(key, value, prefix, location) }
-        else raise usage_error(spec, location)
-        end
-      end
-
-      # +Model => 'name'+, +'lib::Task' => 'name'+ or +'deployment' => 'prefix'+.
-      def add_mapping(key, value, prefix, location)
-        unless (value.is_a?(String) || value.is_a?(Symbol)) && !value.to_s.empty?
-          raise DeploymentError.new(
-            "use_deployment #{key.inspect} => #{value.inspect}: the task name must be a non-empty string",
-            location: location, hint: "write use_deployment #{key.inspect} => 'task_name'"
-          )
-        end
-
-        model = key.is_a?(String) ? task_model_named(key, location) : key
-        return add(task_deployment(model, "#{prefix}#{value}", location), location) if model
-
-        add(prefixed(named_deployment(key, location), "#{prefix}#{value}"), location)
-      end
-
-      # The task model called +name+ ('lib::Task'), loading its library;
-      # nil when +name+ is not a task model name (but a deployment's).
-      def task_model_named(name, location)
-        library, = name.split('::', 2)
-        return unless name.include?('::') && @app.orogen.available_library_names.include?(library)
-
-        @app.using_task_library(library, location: location)
-        found = @app.orogen.find_task_model(name)
-        return found if found
-
-        raise DeploymentError.new("task library '#{library}' has no task model '#{name}'",
-                                  location: location,
-                                  hint: "its task models: #{@app.orogen.library(library).tasks.keys.sort.join(', ')}")
-      end
-
-      def prefixed(deployment, prefix)
-        prefix ? deployment.with_prefix(prefix.to_s) : deployment
-      end
-
-      def named_deployment(name, location)
-        found = @app.orogen.find_deployment(name)
-        return found if found
-
-        @app.orogen.libraries_declaring_deployment(name).each do |lib|
-          @app.using_task_library(lib, location: location)
-        end
-        found = @app.orogen.find_deployment(name)
-        return found if found
-
-        raise DeploymentError.new(
-          "no deployment named '#{name}'#{Naming.did_you_mean(name, @app.orogen.all_deployment_names)}",
-          location: location,
-          hint: "deployments are declared in .orogen files (deployment '#{name}' do task('name', 'lib::Task') end), " \
-                "or made for one task with use_deployment OroGen.lib.Task => 'name'"
-        )
-      end
-
-      def task_deployment(model, name, location)
-        raise usage_error(model, location) unless model.is_a?(Class) && model <= Syskit::TaskContext && model.spec
-
-        deployment = Orogen::DeploymentSpec.new(name.to_s, location: location)
-        deployment.add_task(name.to_s, model, location: location)
-        deployment
-      end
-
-      def not_a_ruby_task(model, name, location)
-        DeploymentError.new("use_ruby_tasks expects ruby task models, got #{Arguments.shown(model)}",
-                            location: location,
-                            hint: 'deploy task contexts of .orogen files with ' \
-                                  "use_deployment #{model.inspect} => '#{name}'")
-      end
-
-      def usage_error(spec, location)
-        DeploymentError.new(
-          "use_deployment does not understand #{spec.inspect}",
-          location: location,
-          hint: "write use_deployment 'deployment_name' or use_deployment OroGen.lib.Task => 'task_name'"
-        )
       end
     end
   end

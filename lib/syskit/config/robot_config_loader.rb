@@ -50,6 +50,7 @@ module Syskit
           context = Object.new.extend(DSL::TopLevelStatements)
           robot_files_required_into(path) { UserCode.evaluate(path, context, root: @app.root) }
           run_phases(config)
+          record_used_profiles(config)
         ensure
           @loading = nil
         end
@@ -81,6 +82,37 @@ module Syskit
           config.phase_blocks(phase).each do |entry|
             phase == :requires ? run_block(entry) : run_lenient_block(entry)
           end
+        end
+      end
+
+      # Robot.actions blocks are Roby's (the robot's action interface): of
+      # them, only the profiles they name with use_profile are read, for
+      # App#robots_loading. What else the block does is not run past the
+      # first statement this reader does not know.
+      def record_used_profiles(config)
+        config.phase_blocks(:actions).each do |entry|
+          reader = UsedProfiles.new
+          begin
+            reader.instance_exec(&entry.block)
+          rescue StandardError, ScriptError
+            nil
+          end
+          config.loaded_files.merge(reader.files)
+        end
+      end
+
+      # What a Robot.actions block is run on (see #record_used_profiles).
+      class UsedProfiles
+        attr_reader :files
+
+        def initialize
+          @files = []
+        end
+
+        def use_profile(profile, *_tags, **_options)
+          location = profile.respond_to?(:syskit_profile) && profile.syskit_profile&.declared_at
+          @files << location.path if location
+          self
         end
       end
 

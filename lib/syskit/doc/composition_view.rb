@@ -40,7 +40,7 @@ module Syskit
 
       def connections
         model.port_connections.map do |c|
-          policy = Render::Output.policy(c.policy.empty? ? { 'type' => 'data' } : c.policy, +'')
+          policy = Render::Output.policy(c.policy.empty? ? Network::Policy::DATA : Network::Policy.of(c.policy), +'')
           Connection.new("#{c.from.child_name}.#{c.from.name}", "#{c.to.child_name}.#{c.to.name}", policy)
         end
       end

@@ -71,10 +71,21 @@ module Syskit
         port.class.new(self, port.orogen_port, name.to_s)
       end
 
-      # The port of the component model that +port+ (one of these
-      # requirements' ports) stands for.
+      # The port of the component +port+ (one of these requirements' ports)
+      # stands for, as Syskit's: itself without a selected service, else the
+      # port of the requirements without the service (#to_component_model)
+      # that the service's port maps to.
       def self_port_to_component_port(port)
-        model.find_port(port.name).to_component_port
+        return port unless service
+
+        mapped = model.find_port(port.name).to_component_port
+        mapped.class.new(to_component_model, mapped.orogen_port, mapped.name)
+      end
+
+      # What add_port_period said of the port +name+ (a
+      # NetworkGeneration::PortDynamics), nil when nothing was.
+      def find_port_dynamics(name)
+        port_dynamics[name.to_s]
       end
 
       # These requirements with the service +name+ of the component model
@@ -134,6 +145,15 @@ module Syskit
         return enum_for(__method__) unless composition?
 
         component_model.each_child(&)
+      end
+
+      # The selections in effect for these requirements' children, as one
+      # injection (Syskit's +resolved_dependency_injection+): a profile
+      # definition's profile's (its robot's devices, used profiles and
+      # own use), then its own; defaults resolved to explicit selections.
+      def resolved_dependency_injection
+        context = profile.respond_to?(:dependency_injection_context) ? profile.dependency_injection_context : nil
+        (context || DependencyInjectionContext::EMPTY).with(selections).current_state
       end
 
       # The same requirements without a selected service (Syskit's

@@ -148,7 +148,8 @@ module Syskit
       end
       alias inspect to_s
 
-      # Policies as plain data ('type' => 'buffer', 'size' => 10), checked.
+      # A policy as given (+type: :buffer, size: 10+), checked: a model keeps
+      # it as Syskit does; the plan writes it as data (Network::Policy.of).
       def self.policy(options, location)
         options = options.transform_keys(&:to_sym)
         unknown = options.keys - POLICY_KEYS
@@ -163,7 +164,7 @@ module Syskit
                                      location: location, hint: "use one of #{POLICY_TYPES.map(&:inspect).join(', ')}")
         end
 
-        options.to_h { |k, v| [k.to_s, v.is_a?(Symbol) ? v.to_s : v] }.freeze
+        options.freeze
       end
 
       # Connects each of +outputs+ to the input port of +other+ (a child, or

@@ -83,6 +83,13 @@ module Syskit
         task
       end
 
+      # A task standing for this model still to be planned (Syskit's
+      # +as_plan+, as its requirements give it: see
+      # InstanceRequirements#as_plan).
+      def as_plan(**arguments)
+        to_instance_requirements.as_plan(**arguments)
+      end
+
       # A Queries::ComponentMatcher finding the tasks of this model.
       def match
         Queries::ComponentMatcher.new.with_model(self)

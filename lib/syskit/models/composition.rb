@@ -87,10 +87,12 @@ module Syskit
       end
 
       # Adds a child and marks it as the composition's main task (its end
-      # is the composition's, at runtime).
+      # is the composition's, at runtime). One per composition, a parent
+      # model's included: a submodel does not replace it.
       def add_main(models, **options)
-        if own_main_child
-          raise DeclarationError.new("#{self} already has a main child (#{own_main_child.child_name})",
+        if (main = main_task)
+          inherited = " (from #{main.composition_model})" unless own_main_child
+          raise DeclarationError.new("#{self} already has a main child (#{main.child_name})#{inherited}",
                                      location: Location.of_caller, hint: 'use add for the other children')
         end
 

@@ -165,9 +165,12 @@ module Syskit
         child ? port.promote(child) : port
       end
 
+      # +where_port+ on the model, and on its tasks: the composition's own
+      # port, whose to_actual_port is the child's it is exported from.
       def define_port_reader(name)
         reader = "#{name}_port"
         define_singleton_method(reader) { find_port(name) } unless singleton_class.method_defined?(reader)
+        define_method(reader) { Syskit::Port.new(model.find_port(name), self) } unless method_defined?(reader)
       end
 
       # Ports of a child of a child composition are that composition's to

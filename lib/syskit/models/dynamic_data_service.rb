@@ -76,7 +76,7 @@ module Syskit
         evaluate(context, as)
         return [context.service, context.created_ports] if context.service
 
-        raise DeclarationError.new(
+        raise InvalidDynamicServiceBlock.new(
           "the block of dynamic service '#{name}' of #{component_model.name} provides nothing for '#{as}'",
           location: declared_at || location,
           hint: "call provides #{service_model}, 'service_port' => \"\#{name}_port\" (or driver_for) in the block"

@@ -12,9 +12,13 @@ module Syskit
       # +remove_when_unused:+ and +addition_requires_reconfiguration:+ say
       # when a running component is reconfigured: recorded (the old
       # +dynamic: true+ means no reconfiguration), no effect on a plan.
-      def dynamic_service(model, as: nil, dynamic: false, remove_when_unused: true,
+      def dynamic_service(model, as: nil, dynamic: nil, remove_when_unused: true,
                           addition_requires_reconfiguration: !dynamic, &block)
         location = Location.of_caller
+        unless dynamic.nil?
+          Compat::Roby.warn_deprecated('dynamic: of dynamic_service is deprecated, ' \
+                                       "write addition_requires_reconfiguration: #{!dynamic} (#{location})")
+        end
         unless model.is_a?(DataServiceModel) && as && block
           raise DeclarationError.new(
             'dynamic_service expects a service model, a name and a block',

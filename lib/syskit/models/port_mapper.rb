@@ -11,11 +11,15 @@ module Syskit
     # port the task does not have yet but can create (a dynamic_*_port
     # pattern of the right direction and type): see #created.
     class PortMapper
-      def initialize(task_model, srv_model, mappings, location, dynamic: false)
+      # +error_class+: what a mapping that cannot be made raises
+      # (InvalidProvides for a declaration, InvalidPortMapping for Syskit's
+      # +compute_port_mappings+).
+      def initialize(task_model, srv_model, mappings, location, dynamic: false, error_class: InvalidProvides)
         @task_model = task_model
         @srv_model = srv_model
+        @error_class = error_class
         @explicit = Models.normalize_mappings(srv_model, mappings, location,
-                                              owner: task_model.name, error_class: InvalidProvides)
+                                              owner: task_model.name, error_class: error_class)
         @location = location
         @dynamic = dynamic
         @created = []
@@ -58,7 +62,7 @@ module Syskit
         return create(srv_port, name) if !port && @dynamic && dynamic_pattern(srv_port, name)
 
         problem = port ? "is an #{port}" : 'does not exist'
-        raise InvalidProvides.new(
+        raise @error_class.new(
           "#{@task_model.name}'s port '#{name}', mapped to #{@srv_model}'s #{srv_port}, #{problem}",
           location: @location, hint: "map '#{srv_port.name}' to an #{srv_port.direction} port of type " \
                                      "#{srv_port.type}#{port_list(srv_port)}"
@@ -82,7 +86,7 @@ module Syskit
           next if pairs.size == 1 || pairs.all? { |srv_port, _| @explicit.key?(srv_port) }
 
           names = pairs.map(&:first).sort
-          raise InvalidProvides.new(
+          raise @error_class.new(
             "#{@srv_model}'s ports #{names.join(', ')} would all be bound to #{@task_model.name}'s port " \
             "'#{task_port}'",
             location: @location,
@@ -97,7 +101,7 @@ module Syskit
 
         same_direction = @task_model.ports.values.select { |p| p.direction == srv_port.direction }
         listed = same_direction.sort_by(&:name).map { |p| "#{p.name} (#{p.type})" }
-        InvalidProvides.new(
+        @error_class.new(
           "#{@task_model.name} has no #{srv_port.direction} port of type #{srv_port.type} " \
           "for #{@srv_model}'s port '#{srv_port.name}'" \
           "#{"; its #{srv_port.direction} ports: #{listed.join(', ')}" unless listed.empty?}",
@@ -128,7 +132,7 @@ module Syskit
               else
                 "declare #{@srv_model}'s port '#{srv_port.name}' as a plain '#{task_port.type}', as the task's is"
               end
-        InvalidProvides.new(
+        @error_class.new(
           "#{@task_model.name}'s #{task_port.direction} port '#{task_port.name}' is a #{task_port.type}, " \
           "not the #{srv_port.type} of #{@srv_model}'s port '#{srv_port.name}'",
           location: @location, hint: "#{fix} (ro_ptr(T) and T are different types to Syskit)"
@@ -137,7 +141,7 @@ module Syskit
 
       def ambiguous(srv_port, candidates)
         names = candidates.map(&:name).sort
-        InvalidProvides.new(
+        @error_class.new(
           "#{@task_model.name} has several #{srv_port.direction} ports of type #{srv_port.type} " \
           "for #{@srv_model}'s port '#{srv_port.name}': #{names.join(', ')}",
           location: @location, hint: "choose one explicitly: '#{srv_port.name}' => '#{names.first}'"

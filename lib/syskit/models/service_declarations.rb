@@ -41,6 +41,14 @@ module Syskit
         services.each_value(&)
       end
 
+      # +{service port name => component port name}+ binding the ports of
+      # +service_model+ to this model's (Syskit's +compute_port_mappings+),
+      # +explicit+ mappings first, as +provides+ binds them; an
+      # InvalidPortMapping when a port has no match or several.
+      def compute_port_mappings(service_model, explicit = {})
+        PortMapper.new(self, service_model, explicit, Location.of_caller, error_class: InvalidPortMapping).map
+      end
+
       # Declares that this component provides the data service +model+ under
       # the name +as+, with optional +'service_port' => 'component_port'+
       # mappings; +slave_of: 'name'+ makes it a slave of the service +name+

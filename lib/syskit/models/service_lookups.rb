@@ -31,11 +31,13 @@ module Syskit
         services_fulfilling(srv_model).map { |srv| srv.as(srv_model) }
       end
 
-      # +object+ itself if it is this model, a submodel of it or one of
-      # their services, nil otherwise (Syskit's +try_bind+).
+      # +object+ itself if it stands for this model (Syskit's +try_bind+):
+      # a model or a task that fullfills it, or a service of this model or
+      # of a submodel; nil otherwise.
       def try_bind(object)
-        component = object.is_a?(BoundDataService) ? object.task_model : object
-        object if component.is_a?(Class) && component <= self
+        return object if object.is_a?(BoundDataService) && object.task_model <= self
+
+        object if object.respond_to?(:fullfills?) && object.fullfills?(self)
       end
 
       # As #try_bind, but an error when +object+ does not stand for this model.
@@ -43,11 +45,21 @@ module Syskit
         found = try_bind(object)
         return found if found
 
-        raise DeclarationError.new("#{object.inspect} is not a #{name}",
-                                   location: Location.of_caller, hint: "give #{name} or a submodel of it")
+        raise DeclarationError.new("cannot bind #{name} to #{object}",
+                                   location: Location.of_caller, hint: "give #{name}, a submodel or a task of it")
       end
-      alias resolve bind
-      alias try_resolve try_bind
+
+      # Syskit's deprecated name of #bind.
+      def resolve(object)
+        Compat::Roby.warn_deprecated('resolve is deprecated, use Models::Component#bind instead')
+        bind(object)
+      end
+
+      # Syskit's deprecated name of #try_bind.
+      def try_resolve(object)
+        Compat::Roby.warn_deprecated('try_resolve is deprecated, use Models::Component#try_bind instead')
+        try_bind(object)
+      end
 
       # The component's port of a port of its own (Syskit's identity, beside
       # the one of bound services): +port+ itself.

@@ -79,7 +79,8 @@ module Syskit
       def composition_connection(from, to, declared)
         from_port = port_of(*from, :output, declared)
         to_port = port_of(*to, :input, declared)
-        policy = declared.policy.empty? ? Policy.for_port(to_port) : Policy.declared(declared.policy, to_port)
+        policy = declared.policy
+        policy = policy.empty? ? Policy.for_port(to_port) : Policy.declared(Policy.of(policy), to_port)
         Connection.new(from[0], from_port, to[0], to_port, policy, nil, declared.location)
       end
 

@@ -31,10 +31,11 @@ module Syskit
         @errors = []
       end
 
-      # The tasks sorted by (deployed) name, once: the order and the plan
-      # both list tasks by name.
+      # The task contexts sorted by (deployed) name, once: the order and
+      # the plan both list tasks by name. (A plain Syskit::Component is
+      # not deployed, configured or started: it has no name.)
       def tasks_by_name
-        @tasks_by_name ||= @tasks.sort_by(&:name)
+        @tasks_by_name ||= @tasks.grep(TaskContext).sort_by(&:name)
       end
 
       # Adds a task made for +requirement+ (for +device+, when it drives one).

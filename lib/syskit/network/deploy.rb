@@ -22,6 +22,10 @@ module Syskit
         used = {}.compare_by_identity
         stub = @context.stub_deployments
         @context.tasks.each do |task|
+          # Only task contexts run in a deployment (a plain
+          # Syskit::Component has none, as in Syskit).
+          next unless task.is_a?(TaskContext)
+
           requirement = task.requirements
           declared = declared(task, requirement.declared_deployment) unless stub
           deployed = declared || (stub ? stub_deployment(task) : choose(task, requirement))
@@ -60,7 +64,7 @@ module Syskit
       end
 
       def choose(task, requirement)
-        index = @context.robot_config.candidates_for(task.model.concrete_model)
+        index = candidates(task, task.model.concrete_model)
         return @context.error(none(task, requirement)) if index.empty?
 
         hints = requirement.deployment_hints
@@ -79,6 +83,48 @@ module Syskit
         return candidates.first if candidates.size == 1
 
         @context.error(several(task, requirement, candidates, index))
+      end
+
+      # The deployed tasks that may run +task+ as a task of +model+, as
+      # Syskit chooses them: those of the deployment group of the task's
+      # requirements (with their profile's), else those of its parents'
+      # (each up to its root), else the robot configuration's.
+      def candidates(task, model)
+        return @context.robot_config.candidates_for(model) unless groups?
+
+        own = group_of(task.requirements)&.candidates_for(model)
+        return own if own && !own.empty?
+
+        parents = task.each_parent_task.to_a
+        return @context.robot_config.candidates_for(model) if parents.empty?
+
+        found = parents.map { |parent| candidates(parent, model) }.uniq
+        found.size == 1 ? found.first : Models::DeploymentGroup::Candidates.new(found.map(&:list))
+      end
+
+      # Whether a requirement of the network or its profile has a
+      # deployment group: most networks deploy from the robot only.
+      def groups?
+        return @groups if defined?(@groups)
+
+        @groups = (@context.tasks + @context.compositions).any? { |t| group_of(t.requirements) }
+      end
+
+      # The deployment group of +requirements+ and of their profile, nil
+      # when both are empty.
+      def group_of(requirements)
+        return unless requirements
+
+        (@groups_of ||= {}.compare_by_identity).fetch(requirements) do
+          own = requirements.deployment_group
+          profile = requirements.profile
+          profile_group = profile.deployment_group if profile.respond_to?(:deployment_group)
+          group = own.empty? ? nil : own
+          unless profile_group.nil? || profile_group.empty?
+            group = (group&.dup || Models::DeploymentGroup.new).use_group(profile_group)
+          end
+          @groups_of[requirements] = group
+        end
       end
 
       # Candidates matching the hints: names are looked up, only regexps

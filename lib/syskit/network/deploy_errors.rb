@@ -38,7 +38,7 @@ module Syskit
       def none(task, requirement)
         name = requirement.device&.name || task.plan_name
         alternatives = library_deployments(task).map { |d| " or Syskit.conf.use_deployment '#{d}'" }.join
-        DeploymentError.new(
+        error = DeploymentError.new(
           "no deployed task can run #{task.model.name}, " \
           "#{requirement.device ? "the driver of #{requirement.device}" : "needed by #{task.plan_path}"}, " \
           "on #{@context.robot_config}",
@@ -46,6 +46,8 @@ module Syskit
           hint: "add to config/robots/#{@context.robot_config.name}.rb: " \
                 "#{deploy_statement(task.model, name)}#{alternatives}"
         )
+        error.task = task
+        error
       end
 
       # The deployments that oroGen libraries declare for +task+'s model

@@ -64,6 +64,17 @@ module Syskit
 
       private
 
+      # A profile's definition deployed on its own (+syskit_stub_and_deploy
+      # (Base.nav_def)+ in a test) is instantiated in its profile's
+      # selections (robot devices by device model, use, used profiles'),
+      # as when the profile is generated.
+      def base_of(requirement)
+        own = requirement.profile
+        return @base if @context.profile || !own.respond_to?(:dependency_injection_context)
+
+        own.dependency_injection_context
+      end
+
       def instantiate_root(requirement)
         requirement = InstanceRequirements.from(requirement) if requirement.is_a?(Robot::MasterDeviceInstance)
         unless requirement.is_a?(InstanceRequirements)
@@ -75,7 +86,7 @@ module Syskit
         @root = requirement
         return if @root_requirements.key?(requirement)
 
-        context = @base.with(requirement.selections)
+        context = base_of(requirement).with(requirement.selections)
         task = instantiate(requirement, context, root_name(requirement), nil)
         @context.roots << task
         @root_requirements[task.requirements] = true
@@ -121,7 +132,9 @@ module Syskit
         device = selected_device(model, context)
         return device_task(requirements, device, model: model) if device
 
-        unless model.driver_services.empty?
+        # Syskit's instanciate leaves a driver without its device (to be
+        # given, or stubbed): only a network refuses it.
+        unless model.driver_services.empty? || @placeholders
           return stub_driver(model, requirements) if @stub_abstract
 
           raise no_device(model, requirements, path, parent)
@@ -207,7 +220,9 @@ module Syskit
         model = requirements.models.find { |m| m.is_a?(Models::DeviceModel) }
         return stub_device_task(model, requirements, path) if model
 
-        stub = Test::StubModels.service_provider(requirements.models)
+        # A tag's placeholder stands for its services.
+        services = requirements.models.flat_map { |m| m.is_a?(Models::Placeholder) ? m.proxied_data_service_models : m }
+        stub = Test::StubModels.service_provider(services)
         component_task(stub, requirements.merge_selection(InstanceRequirements.new([stub])), @base, path, parent)
       end
 

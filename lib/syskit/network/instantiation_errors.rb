@@ -9,8 +9,9 @@ module Syskit
       # Nothing concrete is selected for what +requirements+ ask at +path+
       # (a child of +parent+, or a root); +model+: an abstract composition.
       def abstract_child(requirements, path, parent, location, model = nil)
-        what = model || requirements.models.join(', ')
         tag = requirements.name if requirements.name&.end_with?('_tag')
+        # A tag is shown by the services it stands for, then named.
+        what = model || (tag ? requirements.profile.find_tag(tag).models : requirements.models).join(', ')
         role = path.split('.').last
         where = parent ? "the child '#{role}' of #{parent.model} (#{path})" : path
         message = "#{where} needs a #{what}, which is abstract, and nothing selects a component for it" \

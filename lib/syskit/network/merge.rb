@@ -86,9 +86,19 @@ module Syskit
         group.each do |task|
           signature = inputs(task, inputs)
           target = kept.first_agreeing(signature)
-          target ? replaced[task] = target : kept.add(task, signature)
+          target ? merge_into(target, task, replaced) : kept.add(task, signature)
         end
         group.size - kept.size
+      end
+
+      # +task+ goes, +target+ stands for it: it may use the deployments of
+      # +task+'s requirements too (as Syskit merges deployment groups).
+      def merge_into(target, task, replaced)
+        replaced[task] = target
+        group = task.requirements.deployment_group
+        return if group.empty? || group.equal?(target.requirements.deployment_group)
+
+        target.requirements = target.requirements.dup.use_deployment_group(group)
       end
 
       # The connected input ports of +task+ that do not multiplex, with

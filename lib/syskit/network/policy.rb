@@ -57,6 +57,12 @@ module Syskit
         policy.merge('size' => sink_port.buffer_size).freeze
       end
 
+      # A policy as a model keeps it (+{ type: :buffer, size: 10 }+), as
+      # the plan writes it (+{ 'type' => 'buffer', 'size' => 10 }+).
+      def of(policy)
+        policy.to_h { |k, v| [k.to_s, v.is_a?(Symbol) ? v.to_s : v] }.freeze
+      end
+
       # Policies are values: one frozen hash per size.
       def buffer(size)
         (@buffers ||= {})[size] ||= { 'type' => 'buffer', 'size' => size }.freeze

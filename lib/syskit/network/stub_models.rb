@@ -16,7 +16,7 @@ module Syskit
       def device_driver(model)
         ports = model.ports.values.map { |p| Syskit::Orogen::Port.new(p.name, p.direction, p.type) }
         task_model("stub_driver_for_#{model_slug(model)}", ports: ports) do |task|
-          task.driver_for(model, as: 'dev')
+          task.driver_for(model, as: 'dev0')
         end
       end
 

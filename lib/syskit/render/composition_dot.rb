@@ -84,7 +84,8 @@ module Syskit
       def connection_edge(connection, out)
         out << '  ' << quoted_endpoint(endpoint(connection.from, 'o')) << ' -> '
         out << quoted_endpoint(endpoint(connection.to, 'i')) << ' [label="'
-        Output.policy(connection.policy.empty? ? { 'type' => 'data' } : connection.policy, out) << "\"];\n"
+        policy = connection.policy
+        Output.policy(policy.empty? ? Network::Policy::DATA : Network::Policy.of(policy), out) << "\"];\n"
       end
 
       def endpoint(port, prefix)

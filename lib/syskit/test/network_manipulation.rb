@@ -46,6 +46,12 @@ module Syskit
         @syskit_test_robot_config ||= Config::RobotConfig.new(Test.app, 'test')
       end
 
+      # Syskit's +default_deployment_group+: the deployments of the test
+      # (a robot configuration is a Models::DeploymentGroup).
+      def default_deployment_group
+        syskit_test_robot_config
+      end
+
       # Generates and deploys the network of +requirements+ (models,
       # requirements, or what answers +to_action+) with the test's
       # deployments and the requirements' own; returns the task of each

@@ -60,12 +60,23 @@ module Syskit
       end
 
       # Puts +new_task+ in the place of +task+: its mission and permanent
-      # marks, and its plan service (see #replaced).
+      # marks, its roles in the compositions it is a child of (whose
+      # connections then map onto +new_task+'s ports), and its plan service
+      # (see #replaced). +task+ leaves the plan.
       def replace_task(task, new_task)
+        replace(task, new_task)
+        @tasks.delete(task)
+        new_task
+      end
+
+      # Roby's +plan.replace(task, new_task)+: as #replace_task, +task+
+      # staying in the plan.
+      def replace(task, new_task)
         add(new_task)
         @mission_tasks << new_task if @mission_tasks.delete?(task)
         @permanent_tasks << new_task if @permanent_tasks.delete?(task)
-        @tasks.delete(task)
+        parents = task.respond_to?(:each_parent_task) ? task.each_parent_task.to_a : []
+        parents.each { |parent| parent.replace_child(task, new_task) }
         replaced(task, new_task)
       end
 

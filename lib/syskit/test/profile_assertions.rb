@@ -183,9 +183,27 @@ module Syskit
           return "#{label} is not self contained"
         end
         return "#{label}: cannot find a concrete implementation for #{syskit_abstract_names(abstract)}" if abstract.any?
-        return "#{label}: cannot deploy the following tasks" if errors.any?(DeploymentError)
+        return "#{label}: cannot deploy the following tasks#{syskit_undeployed(errors)}" if errors.any?(DeploymentError)
 
         "#{label} fails #{assertion}"
+      end
+
+      # The tasks without a deployed task, and what needs each (the child
+      # roles it fills, the device it drives), as Syskit lists them.
+      def syskit_undeployed(errors)
+        tasks = errors.grep(DeploymentError).filter_map(&:task).uniq
+        return '' if tasks.empty?
+
+        ": #{tasks.map { |task| syskit_undeployed_task(task) }.join('; ')}"
+      end
+
+      def syskit_undeployed_task(task)
+        needs = task.each_parent_task.flat_map do |parent|
+          parent.each_child.select { |child, _| child.equal?(task) }
+                .map { |_, info| "child #{info[:role]} of #{parent.model.name}" }
+        end
+        needs << "the driver of #{task.requirements.device}" if task.requirements&.device
+        "#{task.model.name}#{" (#{needs.join(', ')})" unless needs.empty?}"
       end
 
       # What is abstract, as Syskit names it: +profile:Name.x_tag+ for a

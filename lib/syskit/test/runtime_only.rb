@@ -22,6 +22,7 @@ module Syskit
         expect_execution_default_timeout= use_deployment use_ruby_tasks use_unmanaged_task
         execution_engine droby_remote_marshaller droby_dump droby_marshalled_and_unmarshalled
         assert_droby_compatible create_transaction
+        syskit_run_planner_with_full_deployment run_planners deploy_current_plan
       ].freeze
 
       METHODS.each do |name|
@@ -49,11 +50,32 @@ module Syskit
       end
 
       # Methods of Roby's plan that need it running (the plan of Syskit's
-      # harness holds tasks as data, see Test::Plan): each skips.
-      PLAN_METHODS = %i[execution_engine in_transaction].freeze
+      # harness holds tasks as data, see Test::Plan), or its relation
+      # graphs, which Roby's engine keeps: each skips.
+      PLAN_METHODS = %i[execution_engine in_transaction task_relation_graph_for].freeze
 
       PLAN_METHODS.each do |name|
         Plan.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "plan.#{name} #{REASON}" }
+      end
+
+      # Methods of Syskit's components that need them running (setting up,
+      # Roby's explicit fullfilled model of a task being planned): each
+      # skips.
+      COMPONENT_METHODS = %i[ready_for_setup? setup fullfilled_model=].freeze
+
+      COMPONENT_METHODS.each do |name|
+        next if Component.method_defined?(name)
+
+        Component.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "task.#{name} #{REASON}" }
+      end
+
+      # Methods of a task's ports that read or write its data: each skips.
+      PORT_METHODS = %i[reader writer].freeze
+
+      PORT_METHODS.each do |name|
+        next if Port.method_defined?(name)
+
+        Port.define_method(name) { |*_args, **_options, &_block| raise Minitest::Skip, "port.#{name} #{REASON}" }
       end
 
       # Methods of Syskit's tasks about a running component (whether it is

@@ -30,6 +30,7 @@ module Syskit
         return replacements[task] if replacements.key?(task)
 
         replacement = task.abstract? ? concrete_task(task) : task
+        stub_devices(replacement)
         replacements[task] = replacement
         @plan.replace_task(task, replacement) unless replacement.equal?(task)
         if replacement.is_a?(Composition)
@@ -41,9 +42,13 @@ module Syskit
         replacement
       end
 
-      # A task of a stub model standing for abstract +task+.
+      # A task of a stub model standing for abstract +task+: the driver of
+      # a stub device for a device model.
       def concrete_task(task)
         model = task.model
+        device_model = model.placeholder? && model.proxied_data_service_models.grep(Models::DeviceModel).first
+        return stub_devices(Network::StubModels.device_driver(device_model).new(task.arguments.to_h)) if device_model
+
         stub_model =
           if model.placeholder?
             base = model.proxied_component_model
@@ -53,6 +58,26 @@ module Syskit
             Network::StubModels.service_provider([], base: model)
           end
         stub_model.new(task.arguments.to_h)
+      end
+
+      # Gives a driver task a stub device of each model it drives that no
+      # argument gives it yet; returns the task.
+      def stub_devices(task)
+        task.model.driver_services.each do |srv|
+          name = srv.argument_name
+          next if task.arguments.set?(name)
+
+          task.arguments[name] = stub_device(srv.driven_device_model, task.model)
+        end
+        task
+      end
+
+      def stub_device(device_model, driver)
+        robot = (@robot ||= Robot::Definition.new(nil))
+        device = robot.add_device(Robot::MasterDeviceInstance, device_model,
+                                  "stub#{robot.each_master_device.count}", using: driver, options: {}, location: nil)
+        device.driver_model = driver
+        device
       end
     end
   end

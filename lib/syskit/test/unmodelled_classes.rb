@@ -33,6 +33,8 @@ module Syskit
         '::Concurrent::IVar' => RUNTIME,
         '::Concurrent::Event' => RUNTIME,
         'Compat::Roby::EventGenerator' => RUNTIME,
+        'Compat::Roby::StateSpace' => RUNTIME,
+        'Compat::Roby::Test::ExecutionExpectations::UnexpectedErrors' => RUNTIME,
         'DynamicPortBinding' => RUNTIME,
         'DynamicPortBinding::Accessor' => RUNTIME,
         'DynamicPortBinding::OutputReader' => RUNTIME,
@@ -41,7 +43,6 @@ module Syskit
         'DynamicPortBinding::BoundInputWriter' => RUNTIME,
         'Models::DynamicPortBinding' => RUNTIME,
         'Models::DynamicPortBinding::ValueResolver' => RUNTIME,
-        'Models::DeploymentGroup' => RUNTIME,
         'NetworkGeneration::Async' => RUNTIME,
         'InputWriter' => RUNTIME,
         'OutputReader' => RUNTIME,
@@ -52,8 +53,6 @@ module Syskit
         'NetworkGeneration::MergeSolver' => INTERNAL,
         'NetworkGeneration::SystemNetworkDeployer' => INTERNAL,
         'NetworkGeneration::SystemNetworkGenerator' => INTERNAL,
-        'NetworkGeneration::PortDynamics' => INTERNAL,
-        'NetworkGeneration::PortDynamics::Trigger' => INTERNAL,
         'NetworkGeneration::DataFlowDynamics' => INTERNAL
       }.freeze
 

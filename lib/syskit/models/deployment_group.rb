@@ -1,0 +1,299 @@
+# frozen_string_literal: true
+
+module Syskit
+  module Models
+    # Syskit's deployment groups: the deployed tasks a network may use,
+    # declared by a robot configuration (Config::RobotConfig is one), a
+    # profile or requirements:
+    #
+    #   use_deployment 'test_canbus'                   # a deployment of an .orogen file
+    #   use_deployment OroGen.gps_ublox.Task => 'gps'  # one task, named 'gps'
+    #
+    # The group of requirements or of a profile deploys the tasks of
+    # their network before the robot's (see Network::Deploy).
+    class DeploymentGroup
+      # Options of use_deployment that only matter to a running system
+      # (where and how processes are started): accepted, no effect on plans.
+      RUNTIME_OPTIONS = %i[on simulation loader process_managers read_only logger_name wait valgrind
+                           valgrind_options gdb gdb_options log_level output oro_logfile working_directory
+                           cmdline_args].freeze
+
+      attr_reader :deployments
+
+      # The group without deployments (what requirements have until a
+      # statement gives them some).
+      def self.empty
+        @empty ||= new.freeze
+      end
+
+      # +app+ resolves deployments and task models given by name (by
+      # default the loaded app, as Syskit's +DeploymentGroup.new+).
+      def initialize(app = nil)
+        @app = app
+        @deployments = []
+        @deployed_tasks = {}
+      end
+
+      # Deploys task instances, as Syskit's use_deployment does:
+      #
+      #   use_deployment 'test_canbus'                    # a deployment of an .orogen file
+      #   use_deployment 'test_canbus' => 'left_'         # ... its task names prefixed
+      #   use_deployment 'test_canbus', prefix: 'left_'   # the same
+      #   use_deployment OroGen.gps_ublox.Task => 'gps'   # one task, named gps
+      #   use_deployment 'gps_ublox::Task' => 'gps'       # the same, by model name
+      #
+      # Where and how processes start (+on:+, +valgrind:+, ...) does not
+      # change a plan: those options are accepted and ignored.
+      def use_deployment(*specs, prefix: nil, **options)
+        location = Location.of_caller
+        # Ruby passes a trailing `Model => 'name'` as keywords. Most
+        # statements give no option: their keywords are all mappings.
+        mappings = options
+        if options.any? { |key, _| key.is_a?(Symbol) }
+          mappings = options.reject { |key, _| key.is_a?(Symbol) }
+          check_options(options.keys.grep(Symbol), location)
+        end
+        specs.each { |spec| add_spec(spec, prefix, location) }
+        mappings.each { |spec, value| add_mapping(spec, value, prefix, location) }
+        self
+      end
+
+      # Every deployment an .orogen file declares (Syskit's
+      # use_deployments_from).
+      def use_deployments_from(*libraries, **options)
+        location = Location.of_caller
+        check_options(options.keys, location)
+        libraries.each do |name|
+          library = app.using_task_library(name.to_s, location: location)
+          library.deployments.each_value { |deployment| add(deployment, location) }
+        end
+        self
+      end
+
+      # Tasks started outside of Syskit's control, integrated in the
+      # network: planned as deployed tasks of their own name.
+      def use_unmanaged_task(mappings = {}, **options)
+        location = Location.of_caller
+        raise unmanaged_without_model(mappings, location) unless mappings.is_a?(Hash)
+
+        mappings = mappings.merge(options.reject { |key, _| key.is_a?(Symbol) })
+        check_options(options.keys.grep(Symbol), location)
+        mappings.each { |model, name| add_mapping(model, name, nil, location) }
+        self
+      end
+
+      # Ruby task contexts (see RubyTaskContext), each deployed as a task of
+      # its own name: +use_ruby_tasks Generator => 'setpoint'+. +on:+ (the
+      # process they run in) has no effect on plans.
+      def use_ruby_tasks(mappings = {}, on: nil, **more) # rubocop:disable Lint/UnusedMethodArgument
+        location = Location.of_caller
+        mappings.merge(more).each do |model, name|
+          raise not_a_ruby_task(model, name, location) unless model.is_a?(Class) && model < RubyTaskContext
+
+          add_mapping(model, name, nil, location)
+        end
+        self
+      end
+
+      # Adds the deployed tasks of +group+ that this one does not have (a
+      # deployment of the same name, deploying the same tasks, is the same).
+      def use_group(group)
+        location = Location.of_caller
+        group.deployments.each { |d| add(d, location) unless same_deployment?(d) }
+        self
+      end
+
+      def empty?
+        @deployments.empty?
+      end
+
+      # A copy, to which statements add without changing this group.
+      def initialize_copy(other)
+        super
+        @deployments = @deployments.dup
+        @deployed_tasks = @deployed_tasks.dup
+        @candidates = nil
+        @by_model = nil
+      end
+
+      # Deployed tasks by name.
+      def deployed_tasks
+        @deployed_tasks.values
+      end
+
+      # The deployed tasks that can run a task of +model+ (their model is it
+      # or a subclass of it), computed once per model: indexed by name for
+      # prefer_deployed_tasks('name'), listed by name when they must be
+      # scanned (regexp hints) or shown (errors).
+      class Candidates
+        attr_reader :by_name
+
+        def initialize(groups)
+          @by_name = {}
+          groups.each { |tasks| tasks.each { |t| @by_name[t.name] = t } }
+        end
+
+        def empty?
+          by_name.empty?
+        end
+
+        def list
+          @list ||= by_name.values.sort_by(&:name).freeze
+        end
+      end
+
+      def candidates_for(model)
+        @candidates ||= {}
+        @candidates[model] ||= begin
+          @by_model ||= deployed_tasks.group_by(&:model)
+          Candidates.new(@by_model.filter_map { |m, tasks| tasks if m <= model })
+        end
+      end
+
+      # Deployed tasks whose model is +model+ or a subclass of it, by name.
+      def deployed_tasks_for(model)
+        candidates_for(model).list
+      end
+
+      def to_s
+        "deployment group (#{@deployed_tasks.keys.join(', ')})"
+      end
+      alias inspect to_s
+
+      private
+
+      def app
+        @app || Syskit.app || raise(DeploymentError.new('deployments are named in an app: no app is loaded',
+                                                        location: Location.of_caller,
+                                                        hint: 'give the deployment model instead of its name'))
+      end
+
+      def unmanaged_without_model(given, location)
+        DeploymentError.new(
+          "use_unmanaged_task takes a task model and the name of its task, got #{given.inspect} alone",
+          location: location,
+          hint: "write Syskit.conf.use_unmanaged_task OroGen.lib.Task => '#{given.is_a?(String) ? given : 'name'}'"
+        )
+      end
+
+      def same_deployment?(deployment)
+        deployment.task_activities.all? do |task|
+          own = @deployed_tasks[task.name]
+          own && own.model.equal?(task.model) && own.deployment.name == deployment.name
+        end
+      end
+
+      def add(deployment, location)
+        @candidates = nil
+        @by_model = nil
+        @deployments << deployment
+        deployment.task_activities.each do |task|
+          if (other = @deployed_tasks[task.name])
+            raise DeploymentError.new(
+              "deployed task name '#{task.name}' is used twice (#{other} and #{task})",
+              location: location, hint: 'deployed task names must be unique on a robot: rename one of them'
+            )
+          end
+
+          @deployed_tasks[task.name] = task
+        end
+      end
+
+      def check_options(keys, location)
+        unknown = keys - RUNTIME_OPTIONS
+        return if unknown.empty?
+
+        raise DeploymentError.new(
+          "use_deployment does not know the option#{'s' if unknown.size > 1} #{unknown.map { |k| "#{k}:" }.join(', ')}",
+          location: location,
+          hint: 'options that change the plan: prefix:; accepted and ignored: ' \
+                "#{RUNTIME_OPTIONS.map { |o| "#{o}:" }.join(', ')}"
+        )
+      end
+
+      def add_spec(spec, prefix, location)
+        case spec
+        when String, Symbol then add(prefixed(named_deployment(spec.to_s, location), prefix), location)
+        when Models::Deployment, Models::ConfiguredDeployment then add(prefixed(spec.orogen_model, prefix), location)
+        when Hash then spec.each { |key, value| add_mapping(key, value, prefix, location) }
+        else raise usage_error(spec, location)
+        end
+      end
+
+      # +Model => 'name'+, +'lib::Task' => 'name'+ or +'deployment' => 'prefix'+.
+      def add_mapping(key, value, prefix, location)
+        unless (value.is_a?(String) || value.is_a?(Symbol)) && !value.to_s.empty?
+          raise DeploymentError.new(
+            "use_deployment #{key.inspect} => #{value.inspect}: the task name must be a non-empty string",
+            location: location, hint: "write use_deployment #{key.inspect} => 'task_name'"
+          )
+        end
+
+        model = key.is_a?(String) ? task_model_named(key, location) : key
+        return add(task_deployment(model, "#{prefix}#{value}", location), location) if model
+
+        add(prefixed(named_deployment(key, location), "#{prefix}#{value}"), location)
+      end
+
+      # The task model called +name+ ('lib::Task'), loading its library;
+      # nil when +name+ is not a task model name (but a deployment's).
+      def task_model_named(name, location)
+        library, = name.split('::', 2)
+        return unless name.include?('::') && app.orogen.available_library_names.include?(library)
+
+        app.using_task_library(library, location: location)
+        found = app.orogen.find_task_model(name)
+        return found if found
+
+        raise DeploymentError.new("task library '#{library}' has no task model '#{name}'",
+                                  location: location,
+                                  hint: "its task models: #{app.orogen.library(library).tasks.keys.sort.join(', ')}")
+      end
+
+      def prefixed(deployment, prefix)
+        prefix ? deployment.with_prefix(prefix.to_s) : deployment
+      end
+
+      def named_deployment(name, location)
+        found = app.orogen.find_deployment(name)
+        return found if found
+
+        app.orogen.libraries_declaring_deployment(name).each do |lib|
+          app.using_task_library(lib, location: location)
+        end
+        found = app.orogen.find_deployment(name)
+        return found if found
+
+        raise DeploymentError.new(
+          "no deployment named '#{name}'#{Naming.did_you_mean(name, app.orogen.all_deployment_names)}",
+          location: location,
+          hint: "deployments are declared in .orogen files (deployment '#{name}' do task('name', 'lib::Task') end), " \
+                "or made for one task with use_deployment OroGen.lib.Task => 'name'"
+        )
+      end
+
+      def task_deployment(model, name, location)
+        raise usage_error(model, location) unless model.is_a?(Class) && model <= Syskit::TaskContext && model.spec
+
+        deployment = Orogen::DeploymentSpec.new(name.to_s, location: location)
+        deployment.add_task(name.to_s, model, location: location)
+        deployment
+      end
+
+      def not_a_ruby_task(model, name, location)
+        DeploymentError.new("use_ruby_tasks expects ruby task models, got #{Arguments.shown(model)}",
+                            location: location,
+                            hint: 'deploy task contexts of .orogen files with ' \
+                                  "use_deployment #{model.inspect} => '#{name}'")
+      end
+
+      def usage_error(spec, location)
+        DeploymentError.new(
+          "use_deployment does not understand #{spec.inspect}",
+          location: location,
+          hint: "write use_deployment 'deployment_name' or use_deployment OroGen.lib.Task => 'task_name'"
+        )
+      end
+    end
+  end
+end

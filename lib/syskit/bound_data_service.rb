@@ -91,7 +91,7 @@ module Syskit
 
     # The task's port behind +port+, a port of this service.
     def self_port_to_component_port(port)
-      component.find_bound_port(model.task_port_for(service_model, port.name).name)
+      component.find_port(model.task_port_for(service_model, port.name).name)
     end
 
     # As #find_port, for an input (output) port of the service only.

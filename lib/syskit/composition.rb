@@ -140,9 +140,14 @@ module Syskit
     # exported from, down to the task that has it.
     def find_port(name)
       resolved = resolve_export(name.to_s)
-      resolved && resolved[0].find_bound_port(resolved[1])
+      resolved && resolved[0].find_port(resolved[1])
     end
-    alias find_bound_port find_port
+
+    # What the task the exported port +name+ comes from declares of it.
+    def find_orogen_port(name)
+      resolved = resolve_export(name.to_s)
+      resolved && resolved[0].find_orogen_port(resolved[1])
+    end
 
     # The task and port name the exported port +name+ is in the network.
     def resolve_export(name)

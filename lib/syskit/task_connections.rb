@@ -34,7 +34,7 @@ module Syskit
     # Its port +name+ of +direction+ (a Syskit::Port), or an
     # InvalidArgument located at +location+.
     def connected_port(direction, name, location)
-      port = find_bound_port(name)
+      port = find_port(name)
       return port if port && port.direction == direction
 
       known = ports.values.select { |p| p.direction == direction }.map(&:name).sort

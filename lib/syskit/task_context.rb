@@ -208,22 +208,24 @@ module Syskit
       model.ports.merge(created_ports)
     end
 
-    def find_port(name)
+    # What the oroGen model (or the pattern the port was created from)
+    # declares of the port +name+ (Orogen::Port), nil when there is none.
+    def find_orogen_port(name)
       created_ports[name.to_s] || model.ports[name.to_s]
     end
 
     # The port +name+ of this task (+task.out_port+), which knows what it
     # is connected to in the network; nil when there is no such port.
-    def find_bound_port(name)
-      port = find_port(name)
+    def find_port(name)
+      port = find_orogen_port(name)
       Port.new(Models::Port.for(model, port), self) if port
     end
 
-    # Its ports (see #find_bound_port), static and created.
+    # Its ports (see #find_port), static and created.
     def each_port
       return enum_for(__method__) unless block_given?
 
-      ports.each_key { |name| yield find_bound_port(name) }
+      ports.each_key { |name| yield find_port(name) }
     end
 
     # A port of this task is its own component port (Syskit's name).
@@ -243,7 +245,7 @@ module Syskit
     def create_port(direction, name, type, location: nil)
       name = name.to_s
       type = Models.resolve_type(type, location)
-      if (existing = find_port(name))
+      if (existing = find_orogen_port(name))
         return existing if existing.direction == direction && existing.type == type
 
         raise NetworkError.new("#{self} already has an #{existing}, cannot create an #{direction} port " \

@@ -64,5 +64,21 @@ module Syskit
       assert_match(/input_port on the oroGen model of imu::Task: its ports are declared in its .orogen file/,
                    error.message)
     end
+
+    def test_a_task_finds_its_ports_as_task_ports_and_their_declarations_apart
+      model = TaskContext.new_submodel do
+        output_port 'out', '/double'
+        dynamic_output_port(/^dev\w*$/, '/double')
+      end
+      task = model.new
+      assert_kind_of Port, task.find_port('out')
+      assert_equal task.out_port, task.find_port(:out)
+      assert_same task, task.find_port('out').component
+      assert_same model.spec.find_port('out'), task.find_orogen_port('out')
+      assert_nil task.find_port('none')
+      created = task.create_port(:output, 'dev0', '/double')
+      assert_same created, task.find_orogen_port('dev0')
+      assert_equal 'dev0', task.find_port('dev0').name
+    end
   end
 end

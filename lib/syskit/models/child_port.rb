@@ -43,7 +43,7 @@ module Syskit
         raise ArgumentError, "#{task} is no #{owner}: it cannot stand for #{child}" unless task.model.fullfills?(owner)
 
         port_name = Models.mapped_port_name(task.model, owner, owner_port) || name
-        task.find_bound_port(port_name) || raise(ArgumentError, "#{task} has no port '#{port_name}' for #{self}")
+        task.find_port(port_name) || raise(ArgumentError, "#{task} has no port '#{port_name}' for #{self}")
       end
 
       # The oroGen port it is (what an export of it keeps, see

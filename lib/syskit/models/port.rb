@@ -71,7 +71,7 @@ module Syskit
       # This port on +component+, a task of its component model (for a
       # composition, the port of the child task it exports).
       def bind(component)
-        component.find_bound_port(name) || raise(ArgumentError, "#{component} has no port '#{name}'")
+        component.find_port(name) || raise(ArgumentError, "#{component} has no port '#{name}'")
       end
 
       # #to_component_port, or itself when there is none.

@@ -208,7 +208,7 @@ module Syskit
         unless singleton_class.method_defined?(reader)
           define_singleton_method(reader) { find_input_port(name) || find_output_port(name) }
         end
-        define_method(reader) { find_bound_port(name) } unless method_defined?(reader)
+        define_method(reader) { find_port(name) } unless method_defined?(reader)
       end
 
       def add_service(...)

@@ -85,7 +85,7 @@ module Syskit
       end
 
       def port_of(task, name, direction, declared)
-        port = task.find_port(name)
+        port = task.find_orogen_port(name)
         return port if port&.direction == direction
 
         raise NetworkError.new("#{task} has no #{direction} port '#{name}' for the connection declared here",
@@ -95,7 +95,7 @@ module Syskit
       end
 
       def port(task, name, direction, device)
-        port = task.find_port(name)
+        port = task.find_orogen_port(name)
         return port if port&.direction == direction
 
         raise NetworkError.new("#{task} has no #{direction} port '#{name}' for #{device}",

@@ -106,7 +106,7 @@ module Syskit
       # have is fed by the same sources (a multiplexing port takes any).
       def inputs(task, inputs)
         inputs.fetch(task, {}).each_with_object({}) do |(port, sources), signature|
-          signature[port] = sources.sort unless task.find_port(port)&.multiplexes?
+          signature[port] = sources.sort unless task.find_orogen_port(port)&.multiplexes?
         end
       end
 

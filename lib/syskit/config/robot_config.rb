@@ -12,11 +12,13 @@ module Syskit
     # Models::DeploymentGroup); the file's phases and the runtime's
     # statements are its own.
     class RobotConfig < Models::DeploymentGroup
-      # Statements of Syskit.conf about a running system (process servers,
-      # older Syskit's +process_server+ included; simulators, logging, ruby
-      # tasks): accepted, with a "not modelled" warning each (see Compat).
-      NOT_MODELLED = %i[use_gazebo_world process_server register_process_server remove_process_server
-                        connect_to_orocos_process_server redirect_local_process_server disables_local_process_server
+      include ProcessServers
+
+      # Statements of Syskit.conf about a running system (how the local
+      # process server runs; simulators, logging, ruby tasks): accepted,
+      # with a "not modelled" warning each (see Compat). Process servers
+      # themselves are data (see ProcessServers).
+      NOT_MODELLED = %i[use_gazebo_world redirect_local_process_server disables_local_process_server
                         transformer_enabled= export_types= auto_restart_deployments_with_quarantines=
                         exception_transition_timeout= logs only_load_models=].freeze
 

@@ -13,7 +13,9 @@ module Syskit
     # their network before the robot's (see Network::Deploy).
     class DeploymentGroup
       # Options of use_deployment that only matter to a running system
-      # (where and how processes are started): accepted, no effect on plans.
+      # (how processes are started): accepted, no effect on plans. +on:+,
+      # the process server a deployment runs on, is recorded (see
+      # #process_server_of).
       RUNTIME_OPTIONS = %i[on simulation loader process_managers read_only logger_name wait valgrind
                            valgrind_options gdb gdb_options log_level output oro_logfile working_directory
                            cmdline_args].freeze
@@ -32,6 +34,13 @@ module Syskit
         @app = app
         @deployments = []
         @deployed_tasks = {}
+        @process_server_names = {}
+      end
+
+      # The name of the process server deployment +name+ runs on, as its
+      # statement's +on:+ gave it; nil when it said none.
+      def process_server_of(name)
+        @process_server_names[name]
       end
 
       # Deploys task instances, as Syskit's use_deployment does:
@@ -53,8 +62,10 @@ module Syskit
           mappings = options.reject { |key, _| key.is_a?(Symbol) }
           check_options(options.keys.grep(Symbol), location)
         end
-        specs.each { |spec| add_spec(spec, prefix, location) }
-        mappings.each { |spec, value| add_mapping(spec, value, prefix, location) }
+        running_on(options[:on], location) do
+          specs.each { |spec| add_spec(spec, prefix, location) }
+          mappings.each { |spec, value| add_mapping(spec, value, prefix, location) }
+        end
         self
       end
 
@@ -63,9 +74,11 @@ module Syskit
       def use_deployments_from(*libraries, **options)
         location = Location.of_caller
         check_options(options.keys, location)
-        libraries.each do |name|
-          library = app.using_task_library(name.to_s, location: location)
-          library.deployments.each_value { |deployment| add(deployment, location) }
+        running_on(options[:on], location) do
+          libraries.each do |name|
+            library = app.using_task_library(name.to_s, location: location)
+            library.deployments.each_value { |deployment| add(deployment, location) }
+          end
         end
         self
       end
@@ -78,19 +91,21 @@ module Syskit
 
         mappings = mappings.merge(options.reject { |key, _| key.is_a?(Symbol) })
         check_options(options.keys.grep(Symbol), location)
-        mappings.each { |model, name| add_mapping(model, name, nil, location) }
+        running_on(options[:on], location) { mappings.each { |model, name| add_mapping(model, name, nil, location) } }
         self
       end
 
       # Ruby task contexts (see RubyTaskContext), each deployed as a task of
-      # its own name: +use_ruby_tasks Generator => 'setpoint'+. +on:+ (the
-      # process they run in) has no effect on plans.
-      def use_ruby_tasks(mappings = {}, on: nil, **more) # rubocop:disable Lint/UnusedMethodArgument
+      # its own name: +use_ruby_tasks Generator => 'setpoint'+, on the
+      # process server +on:+ when given.
+      def use_ruby_tasks(mappings = {}, on: nil, **more)
         location = Location.of_caller
-        mappings.merge(more).each do |model, name|
-          raise not_a_ruby_task(model, name, location) unless model.is_a?(Class) && model < RubyTaskContext
+        running_on(on, location) do
+          mappings.merge(more).each do |model, name|
+            raise not_a_ruby_task(model, name, location) unless model.is_a?(Class) && model < RubyTaskContext
 
-          add_mapping(model, name, nil, location)
+            add_mapping(model, name, nil, location)
+          end
         end
         self
       end
@@ -99,7 +114,11 @@ module Syskit
       # deployment of the same name, deploying the same tasks, is the same).
       def use_group(group)
         location = Location.of_caller
-        group.deployments.each { |d| add(d, location) unless same_deployment?(d) }
+        group.deployments.each do |d|
+          add(d, location) unless same_deployment?(d)
+          server = group.process_server_of(d.name)
+          @process_server_names[d.name] ||= server if server
+        end
         self
       end
 
@@ -112,6 +131,7 @@ module Syskit
         super
         @deployments = @deployments.dup
         @deployed_tasks = @deployed_tasks.dup
+        @process_server_names = @process_server_names.dup
         @candidates = nil
         @by_model = nil
       end
@@ -167,6 +187,19 @@ module Syskit
                                                         location: Location.of_caller,
                                                         hint: 'give the deployment model instead of its name'))
       end
+
+      # Runs a statement's block, recording +on+ (a process server name, or
+      # nil) for the deployments it adds.
+      def running_on(on, location)
+        check_process_server(on, location) if on
+        before = @deployments.size
+        yield
+        @deployments.drop(before).each { |d| @process_server_names[d.name] = on.to_s } if on
+      end
+
+      # Groups of profiles and requirements take +on:+ as given; a robot's
+      # configuration checks it names a process server it declares.
+      def check_process_server(_name, _location); end
 
       def unmanaged_without_model(given, location)
         DeploymentError.new(

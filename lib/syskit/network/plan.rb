@@ -11,9 +11,11 @@ module Syskit
       # A task of the plan, named after its deployed task; +devices+ are the
       # devices it drives, each followed by its slaves (+stereo.left+);
       # +unmanaged+: its deployment is started outside of Syskit;
-      # +operations+: the operations its configure called, in call order.
+      # +operations+: the operations its configure called, in call order;
+      # +process_server+: where its deployment runs ({'name', 'host'}), when
+      # the robot configuration says (+on:+), else nil.
       Task = Struct.new(:name, :model, :deployment, :devices, :conf, :properties, :ports, :depends_on, :unmanaged,
-                        :operations)
+                        :operations, :process_server)
       # A call of an operation of a task's component, and its arguments as
       # plain data; +argument_names+ are those of the operation's declaration
       # (empty when the spec does not declare it).
@@ -150,7 +152,7 @@ module Syskit
           'ports' => task.ports.map { |p| port_hashes[p] ||= port_hash(p) },
           'depends_on' => task.depends_on, 'unmanaged' => task.unmanaged,
           'operations' => task.operations.map { |op| operation_hash(op) }
-        }
+        }.merge(task.process_server ? { 'process_server' => task.process_server } : {})
       end
 
       # The call; the argument names when the spec declares them, so that

@@ -20,7 +20,7 @@ module Syskit
           paths = {}
           Plan.new(
             profile: context.profile&.name, robot: context.robot_config&.name,
-            tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports) },
+            tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports, context.robot_config) },
             devices: device_entries(context, paths),
             connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
             order: context.order.map { |s| Step.new(s.step, s.task.name).freeze },
@@ -70,7 +70,7 @@ module Syskit
 
         # Entries are frozen as they are built, so the plan is a frozen value
         # without walking it again.
-        def task_entry(task, static_ports)
+        def task_entry(task, static_ports, robot_config)
           children = task.children
           deployment = task.deployed_task.deployment
           Task.new(
@@ -80,8 +80,16 @@ module Syskit
             task_ports(task, static_ports),                                     # ports
             children.empty? ? NO_DEPENDENCIES : children.map(&:name).sort!.freeze, # depends_on
             deployment.unmanaged?,                                              # unmanaged
-            operation_entries(task)                                             # operations
+            operation_entries(task),                                            # operations
+            process_server_entry(robot_config, deployment)                      # process_server
           ).freeze
+        end
+
+        # Where +deployment+ runs, when the robot configuration says (on:).
+        def process_server_entry(config, deployment)
+          name = config&.process_server_of(deployment.name)
+          server = name && config.process_server_named(name)
+          { 'name' => server.name, 'host' => server.host }.freeze if server
         end
 
         def operation_entries(task)

@@ -92,8 +92,12 @@ module Syskit
         def deployment(name, tasks, indent)
           return tasks.each { |t| node(t, shared_note(name), indent) } if tasks.size == 1
 
-          cluster("cluster_deployment_#{name}", "deployment #{name}", DEPLOYMENT_BOX, indent)
+          server = tasks.first.process_server
+          label = server ? "deployment #{name} on #{Output.process_server(server)}" : "deployment #{name}"
+          cluster("cluster_deployment_#{name}", label, DEPLOYMENT_BOX, indent)
+          @in_deployment_box = true
           tasks.each { |task| node(task, nil, "#{indent}  ") }
+          @in_deployment_box = false
           @out << indent << "}\n"
         end
 
@@ -153,7 +157,9 @@ module Syskit
         # Lines under a task's name: its deployment when shared, its CAN
         # filters, the ports left out.
         def notes(task, note, hidden)
-          lines = [note, *@filters[task.name]]
+          # A deployment's box says where it runs; a task alone says it.
+          server = task.process_server && !@in_deployment_box && "on #{Output.process_server(task.process_server)}"
+          lines = [note, server, *@filters[task.name]]
           lines << "+#{Naming.count(hidden, 'port')} not connected" if hidden.positive?
           lines.compact
         end

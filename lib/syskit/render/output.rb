@@ -25,6 +25,12 @@ module Syskit
       end
 
       # A connection's policy as people read it: "buffer 20" or "data".
+      # 'front (front.local)': a process server of the plan ({'name',
+      # 'host'}), its host when it is not its name.
+      def self.process_server(server)
+        server['host'] == server['name'] ? server['name'] : "#{server['name']} (#{server['host']})"
+      end
+
       def self.policy(policy, out)
         out << policy['type']
         policy['type'] == 'buffer' ? out << ' ' << policy['size'].to_s : out

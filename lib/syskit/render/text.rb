@@ -152,11 +152,18 @@ module Syskit
         times
       end
 
+      # Its deployment, where it runs when the robot says, and whether
+      # Syskit manages it.
+      def deployment_text(task, out)
+        out << task.deployment
+        out << ' on ' << Output.process_server(task.process_server) if task.process_server
+        task.unmanaged ? out << ', unmanaged' : out
+      end
+
       # The task's line, its devices and dependencies, then its properties
       # and ports.
       def task_text(task, out)
-        out << '  ' << task.name << '  ' << task.model << '  (deployment ' << task.deployment
-        out << ', unmanaged' if task.unmanaged
+        deployment_text(task, out << '  ' << task.name << '  ' << task.model << '  (deployment ')
         list(task.conf, out << ', conf ') << ")\n"
         list(task.devices, out << DEVICES) << "\n" unless task.devices.empty?
         list(task.depends_on, out << DEPENDS_ON) << "\n" unless task.depends_on.empty?

@@ -31,6 +31,16 @@ module Syskit
                         'imu::Task\\non\\ front\\ (front.local)'
         out, = run_cli('check', '--app', root)
         assert_equal "MyApp: 0 error(s), 0 warning(s)\n", out
+        assert_site_says_where_imu_runs(root)
+      end
+
+      # The site's profile page lists the task's deployment with its server.
+      def assert_site_says_where_imu_runs(root)
+        site = File.join(root, 'site')
+        _, err, status = run_cli('doc', '--app', root, '--output', site)
+        assert_equal 0, status, err
+        page = File.read(File.join(site, 'profiles', 'MyApp.Profiles.Base.html'))
+        assert_includes page, '<code>imu</code> on front (front.local)</td>'
       end
 
       def test_a_deployment_on_a_process_server_that_is_not_declared

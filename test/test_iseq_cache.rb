@@ -1,0 +1,45 @@
+# frozen_string_literal: true
+
+require 'helper'
+
+module Syskit
+  # bin/syskit keeps the gem's compiled code between runs (ISeqCache): a
+  # run from the cache prints what a run without it prints, and an entry
+  # that does not match its source is compiled again, never used.
+  class TestISeqCache < Minitest::Test
+    parallelize_me!
+
+    EXAMPLE = File.join(GEM_ROOT, 'examples', 'awesome_robot')
+
+    def plan(env)
+      out, err, status = syskit_process('plan', '--app', EXAMPLE, env: env)
+      assert status.success?, err
+      out
+    end
+
+    def test_runs_from_the_cache_print_what_runs_without_it_print
+      Dir.mktmpdir do |dir|
+        expected = plan('SYSKIT_NO_CACHE' => '1')
+        assert_empty Dir.children(dir)
+        assert_equal expected, plan('SYSKIT_CACHE_DIR' => dir)
+        entries = Dir[File.join(dir, '*', '*.iseq')].map { |f| File.basename(f) }
+        assert_includes entries, 'syskit-network-generator.rb.iseq'
+        assert_equal expected, plan('SYSKIT_CACHE_DIR' => dir)
+      end
+    end
+
+    def test_an_entry_that_does_not_match_its_source_is_compiled_again
+      Dir.mktmpdir do |dir|
+        expected = plan('SYSKIT_CACHE_DIR' => dir)
+        entries = Dir[File.join(dir, '*', '*.iseq')]
+        # Each entry takes the next one's content (another file's code,
+        # under another key), and one is cut short.
+        contents = entries.map { |e| File.binread(e) }
+        entries.zip(contents.rotate).each { |entry, content| File.binwrite(entry, content) }
+        File.binwrite(entries.first, contents.first.byteslice(0, 40))
+        assert_equal expected, plan('SYSKIT_CACHE_DIR' => dir)
+        assert_equal(contents, entries.map { |e| File.binread(e) })
+      end
+    end
+  end
+end

@@ -53,6 +53,11 @@ module Syskit
           assert_equal %w[test_probe], default_deployment_group.deployed_tasks.map(&:name)
         end
 
+        it('has the stubs process server, as Syskit does') do
+          use_deployment @task_m => 'stub_probe', on: 'stubs'
+          assert_equal 'stubs', default_deployment_group.process_server_of('stub_probe')
+        end
+
         it('skips deploying the plan of a running system') do
           assert_raises(Roby::Test::ExecutionExpectations::UnexpectedErrors) { deploy_current_plan }
         end
@@ -71,12 +76,9 @@ module Syskit
 
     def test_deployments_of_profiles_and_requirements_under_the_harness
       Dir.mktmpdir do |dir|
-        path = File.join(dir, 'test', 'test_deploy.rb')
-        FileUtils.mkdir_p(File.dirname(path))
-        File.write(path, DEPLOY_TEST)
-        out, err, = Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'),
-                                   'test/test_deploy.rb', chdir: dir, unsetenv_others: true)
-        assert_match(/8 runs, \d+ assertions, 0 failures, 0 errors, 2 skips/, out, err)
+        write_self_test(dir, 'test_deploy.rb', DEPLOY_TEST)
+        out, err, = ruby_process('test/test_deploy.rb', chdir: dir)
+        assert_match(/9 runs, \d+ assertions, 0 failures, 0 errors, 2 skips/, out, err)
       end
     end
   end

@@ -41,9 +41,12 @@ module Syskit
       end
 
       # The robot configuration of the test: what it deployed with
-      # #use_deployment.
+      # #use_deployment. As in Syskit's harness, it has the process server
+      # 'stubs' (on this machine), where stub deployments run.
       def syskit_test_robot_config
-        @syskit_test_robot_config ||= Config::RobotConfig.new(Test.app, 'test')
+        @syskit_test_robot_config ||= Config::RobotConfig.new(Test.app, 'test').tap do |config|
+          config.register_process_server('stubs', nil, host_id: 'localhost')
+        end
       end
 
       # Syskit's +default_deployment_group+: the deployments of the test

@@ -21,6 +21,18 @@ module Syskit
     FIXTURES = File.expand_path('fixtures', __dir__)
     GEM_ROOT = File.expand_path('..', __dir__)
 
+    # An app's file of data services that tests of services, placeholders
+    # and their bindings share: Pose, Cmd, and Odometry providing Pose.
+    SERVICE_FILES = {
+      'models/services/things.rb' => <<~RUBY
+        module MyApp
+          data_service_type('Pose') { output_port 'pose', '/double' }
+          data_service_type('Cmd') { input_port 'cmd', '/double' }
+          data_service_type('Odometry') { provides Pose }
+        end
+      RUBY
+    }.freeze
+
     # For tests of models made in Ruby (+TaskContext.new_submodel+): the
     # base app is loaded, and the models a test made are removed after it.
     module ModelsMadeInRuby
@@ -161,6 +173,21 @@ module Syskit
     def syskit_process(*args, chdir: GEM_ROOT, env: {})
       Open3.capture3(SelfTest.child_env.merge(env), RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), *args,
                      chdir: chdir, unsetenv_others: true)
+    end
+
+    # `ruby ARGS` with this checkout's lib/ first (Syskit's own test files,
+    # run as a Syskit developer runs them).
+    def ruby_process(*args, chdir:, env: {})
+      Open3.capture3(SelfTest.child_env.merge(env), RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'), *args,
+                     chdir: chdir, unsetenv_others: true)
+    end
+
+    # Writes +content+ as test/NAME under +dir+; returns its path.
+    def write_self_test(dir, name, content)
+      path = File.join(dir, 'test', name)
+      FileUtils.mkdir_p(File.dirname(path))
+      File.write(path, content)
+      path
     end
 
     # `rake ARGS` with this checkout's lib/ first, as tests of apps run it.

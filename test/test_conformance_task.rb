@@ -11,16 +11,10 @@ module Syskit
     # Processes only: run beside the in-process tests (see SelfTest::SuiteRunner).
     parallelize_me!
 
-    def write_test(dir, name, content)
-      path = File.join(dir, 'test', name)
-      FileUtils.mkdir_p(File.dirname(path))
-      File.write(path, content)
-    end
-
     def test_rake_conformance_counts_each_file_of_a_checkout
       Dir.mktmpdir do |dir|
-        write_test(dir, 'models/test_shape.rb', TestSelfHarness::SELF_TEST)
-        write_test(dir, 'robot/test_broken.rb', "require 'syskit/test/self'\nSyskit::NoSuchThing\n")
+        write_self_test(dir, 'models/test_shape.rb', TestSelfHarness::SELF_TEST)
+        write_self_test(dir, 'robot/test_broken.rb', "require 'syskit/test/self'\nSyskit::NoSuchThing\n")
         out, err, status = Open3.capture3(
           SelfTest.child_env.merge('SYSKIT_SOURCE' => dir, 'CASES' => File.join(dir, 'none.tsv')),
           RbConfig.ruby, '-S', 'rake', 'conformance', chdir: GEM_ROOT, unsetenv_others: true

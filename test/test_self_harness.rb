@@ -64,21 +64,9 @@ module Syskit
       end
     RUBY
 
-    def write_self_test(dir, name, content = SELF_TEST)
-      path = File.join(dir, 'test', name)
-      FileUtils.mkdir_p(File.dirname(path))
-      File.write(path, content)
-      path
-    end
-
-    def ruby_process(*args, chdir:, env: {})
-      Open3.capture3(SelfTest.child_env.merge(env), RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'), *args,
-                     chdir: chdir, unsetenv_others: true)
-    end
-
     def test_syskit_test_files_run_outside_an_app
       Dir.mktmpdir do |dir|
-        write_self_test(dir, 'test_shape.rb')
+        write_self_test(dir, 'test_shape.rb', SELF_TEST)
         report = File.join(dir, 'report.jsonl')
         out, err, = ruby_process('test/test_shape.rb', chdir: dir, env: { 'SYSKIT_CONFORMANCE_REPORT' => report })
         assert_match(/8 runs, \d+ assertions, 1 failures, 0 errors, 2 skips/, out, err)

@@ -51,11 +51,8 @@ module Syskit
 
     def test_bus_tasks_serve_the_devices_attached_to_them
       Dir.mktmpdir do |dir|
-        path = File.join(dir, 'test', 'test_buses.rb')
-        FileUtils.mkdir_p(File.dirname(path))
-        File.write(path, BUS_TEST)
-        out, err, = Open3.capture3(SelfTest.child_env, RbConfig.ruby, '-I', File.join(GEM_ROOT, 'lib'),
-                                   'test/test_buses.rb', chdir: dir, unsetenv_others: true)
+        write_self_test(dir, 'test_buses.rb', BUS_TEST)
+        out, err, = ruby_process('test/test_buses.rb', chdir: dir)
         assert_match(/2 runs, \d+ assertions, 0 failures, 0 errors, 0 skips/, out, err)
       end
     end

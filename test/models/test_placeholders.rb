@@ -7,15 +7,7 @@ module Syskit
   # Creation): what they derive from and fullfill, their cache, kinds of
   # placeholders of their own, merging them, and merging task models.
   class TestPlaceholders < Minitest::Test
-    FILES = {
-      'models/services/things.rb' => <<~RUBY
-        module MyApp
-          data_service_type('Pose') { output_port 'pose', '/double' }
-          data_service_type('Cmd') { input_port 'cmd', '/double' }
-          data_service_type('Odometry') { provides Pose }
-        end
-      RUBY
-    }.freeze
+    FILES = SelfTest::SERVICE_FILES
 
     Placeholder = Models::Placeholder
 

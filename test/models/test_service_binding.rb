@@ -8,15 +8,7 @@ module Syskit
   # service of a task, lookups by the service's port names, and binding
   # through placeholders and dynamic service instances.
   class TestServiceBinding < Minitest::Test
-    FILES = {
-      'models/services/things.rb' => <<~RUBY
-        module MyApp
-          data_service_type('Pose') { output_port 'pose', '/double' }
-          data_service_type('Cmd') { input_port 'cmd', '/double' }
-          data_service_type('Odometry') { provides Pose }
-        end
-      RUBY
-    }.freeze
+    FILES = SelfTest::SERVICE_FILES
 
     def setup
       super

@@ -28,6 +28,10 @@ Gem::Specification.new do |spec|
   spec.require_paths = ['lib']
 
   spec.add_dependency 'ffi', '~> 1.15'
+  # `syskit lsp` reads and writes the Language Server Protocol's messages
+  # (JSON-RPC with its Content-Length framing) with the library Ruby's own
+  # language servers use, rather than framing of its own.
+  spec.add_dependency 'language_server-protocol', '~> 3.17'
   spec.add_dependency 'thor', '~> 1.2'
 
   spec.metadata['rubygems_mfa_required'] = 'true'

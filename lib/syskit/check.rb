@@ -19,14 +19,23 @@ module Syskit
     # Problems are kept in the order they are found: loading first, then
     # each profile. A profile whose own files failed to load is not
     # generated: that would only repeat the loading problems.
-    def run
-      app.load(robots: :all, everything: true, models: true)
+    #
+    # With +load: false+, the app is taken as loaded already (as #load
+    # loads it; `syskit lsp` keeps it loaded between checks).
+    def run(load: true)
+      self.class.load(app) if load
       @problems.concat(app.problems)
       @problems << opaque_typekits_note unless app.opaque_typekits.empty?
       failed_files = app.errors.filter_map { |p| p.location&.path }.uniq
       app.profiles.values.sort_by(&:name).each { |profile| check_profile(profile, failed_files) }
       @problems = @problems.uniq(&:identity)
       self
+    end
+
+    # Loads +app+ as the check needs it: every model, task library, typekit
+    # and robot configuration.
+    def self.load(app)
+      app.load(robots: :all, everything: true, models: true)
     end
 
     # `check --strict`: every warning is reported as the error it becomes.

@@ -22,7 +22,8 @@ module Syskit
     LIBRARIES = {
       'version' => [], 'gen' => [], 'bus' => [],
       'diff' => %w[syskit syskit/cli/plan_files], 'check' => %w[syskit syskit/check set],
-      'doc' => %w[syskit syskit/doc], 'test' => %w[syskit syskit/test/runner]
+      'doc' => %w[syskit syskit/doc], 'test' => %w[syskit syskit/test/runner],
+      'lsp' => %w[syskit syskit/lsp set]
     }.freeze
 
     def self.libraries(command_name)
@@ -101,5 +102,6 @@ require 'syskit/cli/plan'
 require 'syskit/cli/check'
 require 'syskit/cli/doc'
 require 'syskit/cli/test'
+require 'syskit/cli/lsp'
 require 'syskit/cli/bus'
 require 'syskit/cli/gen'

@@ -10,9 +10,10 @@ module Syskit
 
     module_function
 
-    # The text of +path+.
+    # The text of +path+: the editor's unsaved text when +path+ is open in
+    # it (see #with_buffers), else the file's.
     def read(path)
-      bytes = File.binread(path)
+      bytes = buffer(path) || File.binread(path)
       bytes = bytes.byteslice(BOM.bytesize..) if bytes.start_with?(BOM)
       text = bytes.force_encoding(Encoding::UTF_8)
       return text if text.valid_encoding?
@@ -21,6 +22,24 @@ module Syskit
     rescue SystemCallError => e
       raise FileLoadError.new("cannot read #{File.basename(path)}: #{e.message}",
                               location: Location.new(path, 1), hint: 'make it a readable file')
+    end
+
+    # Runs the block with +buffers+ (path => text, as an editor holds the
+    # files it has open, saved or not) read instead of the files: `syskit
+    # lsp` checks what users are typing through the loading code `syskit
+    # check` runs on files. Paths are absolute.
+    def with_buffers(buffers)
+      before = @buffers
+      @buffers = buffers.transform_keys { |path| File.expand_path(path) }
+      yield
+    ensure
+      @buffers = before
+    end
+
+    # The text of +path+ in the buffers of #with_buffers, as bytes; nil when
+    # it is not open.
+    def buffer(path)
+      @buffers[File.expand_path(path)]&.b if @buffers
     end
 
     # Its lines.

@@ -7,7 +7,27 @@ module Syskit
     # or declares, each typekit it describes, and each configuration file,
     # checked against the task model it is named after.
     module Everything
+      # Reads the configuration file at +path+ again (`syskit lsp`: an editor
+      # changed it) without loading the rest again: the problems after the
+      # first +kept+ (those a check added after loading) and those located
+      # in the file are forgotten, the task model's configuration is read
+      # anew when next asked for, and the file is checked again. Returns the
+      # number of problems loading now accounts for.
+      def reread_conf_file(path, kept:)
+        path = File.expand_path(path)
+        @conf_files&.delete(File.basename(path, '.yml'))
+        problems.slice!(kept..)
+        problems.reject! { |p| p.location&.path == path }
+        @problem_keys = nil
+        collect_problems { check_conf_file(path) } if File.file?(path) && app_conf_file?(path)
+        problems.size
+      end
+
       private
+
+      def app_conf_file?(path)
+        File.dirname(path) == File.join(root, 'config', 'orogen') && path.end_with?('.yml')
+      end
 
       def load_everything
         load_app_libraries

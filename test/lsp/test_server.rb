@@ -1,0 +1,140 @@
+# frozen_string_literal: true
+
+require_relative '../helper'
+require 'syskit/lsp'
+require_relative 'lsp_client'
+
+module Syskit
+  # `syskit lsp` through the protocol, as an editor speaks it: bin/syskit lsp
+  # in a process of its own, on a copy of the example app.
+  class TestLSPServer < Minitest::Test
+    include SelfTest
+
+    def setup
+      @dir = Dir.mktmpdir('syskit-lsp')
+      FileUtils.cp_r(File.join(GEM_ROOT, 'examples', 'awesome_robot'), @dir)
+      @root = File.join(@dir, 'awesome_robot')
+      @client = SelfTest::LSPClient.new(env: SelfTest.child_env, chdir: @dir)
+      @initialized = @client.request('initialize', processId: Process.pid, rootUri: LSP::URI.of(@root),
+                                                   capabilities: {})
+      @client.notify('initialized')
+    end
+
+    def teardown
+      @client&.kill
+      FileUtils.rm_rf(@dir)
+    end
+
+    def file(relative)
+      File.join(@root, relative)
+    end
+
+    PROFILE = 'models/profiles/live/base.rb'
+
+    def test_it_advertises_what_it_answers_and_exits_as_asked
+      capabilities = @initialized[:result][:capabilities]
+      assert_equal 1, capabilities[:textDocumentSync][:change] # the whole text
+      assert capabilities[:textDocumentSync][:save][:includeText]
+      %i[hoverProvider definitionProvider documentSymbolProvider].each { |c| assert capabilities[c], c }
+      assert_includes capabilities[:completionProvider][:triggerCharacters], '.'
+      assert_equal 'syskit', @initialized[:result][:serverInfo][:name]
+      assert_equal 0, @client.close
+    end
+
+    def test_a_mistake_in_a_buffer_is_shown_at_its_line_with_its_hint_then_cleared_once_fixed
+      path = file(PROFILE)
+      text = File.read(path)
+      @client.open(path, text)
+      assert_equal [], @client.diagnostics_of(path)
+
+      @client.change(path, text.sub('Ublox::F9', 'Ublox::F8'))
+      diagnostic, = @client.diagnostics_of(path)
+      assert_diagnostic(diagnostic, line: text.lines.index { |l| l.include?('Ublox::F9') },
+                                    message: /uninitialized constant .*Ublox::F8/)
+      hint = diagnostic[:relatedInformation].first
+      assert_equal "hint: did you mean 'AwesomeRobot::Devices::GPS::Ublox::F9'?", hint[:message]
+      assert_equal LSP::URI.of(path), hint[:location][:uri]
+      assert_equal File.read(path), text, 'the file on disk is not touched'
+
+      @client.change(path, text, version: 3)
+      assert_equal [], @client.diagnostics_of(path)
+      assert_equal 0, @client.close
+    end
+
+    def assert_diagnostic(diagnostic, line:, message:, severity: 1)
+      assert_equal line, diagnostic[:range][:start][:line]
+      assert_equal severity, diagnostic[:severity]
+      assert_equal 'syskit', diagnostic[:source]
+      assert_match message, diagnostic[:message]
+    end
+
+    def test_a_file_that_breaks_the_loading_of_another_shows_the_error_where_the_cause_is
+      profile = file(PROFILE)
+      @client.open(profile)
+      assert_equal [], @client.diagnostics_of(profile)
+
+      # The profile requires the composition; the mistake is the composition's.
+      composition = file('models/compositions/drive.rb')
+      text = File.read(composition)
+      @client.open(composition, text.sub("add Devices::Roboteq::CANOpen, as: 'left'",
+                                         "add Devices::Roboteq::CANOpne, as: 'left'"))
+      diagnostic, = @client.diagnostics_of(composition)
+      assert_match(/CANOpne/, diagnostic[:message])
+      assert_equal text.lines.index { |l| l.include?("as: 'left'") }, diagnostic[:range][:start][:line]
+
+      @client.change(composition, text)
+      assert_equal [], @client.diagnostics_of(composition)
+    end
+
+    def test_an_unsaved_configuration_file_and_orogen_spec_are_checked_as_typed
+      conf = file('config/orogen/camera_gige::Task.yml')
+      text = File.read(conf)
+      @client.open(conf, text.sub('frame_rate: 20.0', 'frame_rat: 20.0'))
+      diagnostic, = @client.diagnostics_of(conf)
+      assert_match(/frame_rat/, diagnostic[:message])
+      assert_equal text.lines.index { |l| l.start_with?('frame_rate') }, diagnostic[:range][:start][:line]
+      @client.change(conf, text)
+      assert_equal [], @client.diagnostics_of(conf)
+
+      spec = file('models/orogen/camera_gige.orogen')
+      text = File.read(spec)
+      @client.open(spec, text.sub("property 'exposure', 'int', 10_000", "property 'exposure', 'int', 10_000,"))
+      diagnostic, = @client.diagnostics_of(spec)
+      assert_equal 1, diagnostic[:severity]
+      @client.notify('textDocument/didSave', textDocument: { uri: LSP::URI.of(spec) }, text: text)
+      assert_equal [], @client.diagnostics_of(spec)
+    end
+
+    # A model file that prints, or runs a command that prints: the protocol
+    # stays readable (the client checks every header), and what they print
+    # is in the server's log.
+    def test_what_files_print_goes_to_the_log_not_the_protocol
+      path = file('models/services/position.rb')
+      text = File.read(path)
+      @client.open(path, "puts 'hello'\n$stdout.write('more')\nSTDOUT.puts 'again'\nsystem('echo', 'child')\n#{text}")
+      assert_equal [], @client.diagnostics_of(path)
+      assert_equal 0, @client.close
+      assert_includes @client.stderr, 'hello'
+      assert_includes @client.stderr, 'child'
+    end
+
+    # A file that exits or recurses forever, a request the server does not
+    # answer or cannot read: each is answered, and the server goes on.
+    def test_files_that_exit_or_blow_up_and_bad_requests_do_not_stop_the_server
+      path = file('models/services/position.rb')
+      text = File.read(path)
+      @client.open(path, "#{text}\nexit 3\n")
+      assert_diagnostic(@client.diagnostics_of(path).first, line: text.lines.size + 1, message: /exit/)
+      @client.change(path, "def deep = deep\ndeep\n#{text}")
+      assert_diagnostic(@client.diagnostics_of(path).first, line: 0, message: /recursion|stack/)
+
+      unknown = @client.request('textDocument/formatting', textDocument: { uri: LSP::URI.of(path) })
+      assert_equal(-32_601, unknown[:error][:code])
+      bad = @client.request('textDocument/hover', {})
+      assert_nil bad[:result]
+      @client.change(path, text)
+      assert_equal [], @client.diagnostics_of(path)
+      assert_equal 0, @client.close
+    end
+  end
+end

@@ -6,8 +6,9 @@
 # `syskit plan --format json` and `syskit check` processes, and the scaling
 # exponents between sizes, with the CPU caches emptied before each phase and
 # back to back; then the bus replay beside its peers (bench/replay.rb) and
-# the CAN timing analysis (bench/can_timing.rb), and `syskit check` on
-# configuration files of many unknown properties (bench/conf_check.rb). Every figure printed is
+# the CAN timing analysis (bench/can_timing.rb), `syskit check` on
+# configuration files of many unknown properties (bench/conf_check.rb), and
+# how soon `syskit lsp` shows the diagnostics of a change (bench/lsp.rb). Every figure printed is
 # measured on this run, with the machine's load average.
 
 require 'json'
@@ -206,6 +207,9 @@ if $PROGRAM_NAME == __FILE__
   require_relative 'conf_check'
   puts
   Syskit::Bench::ConfCheck.run
+  require_relative 'lsp'
+  puts
+  Syskit::Bench::LSP.run
   puts
   puts "load average at the end: #{Syskit::Bench::Startup.load_average}"
 end

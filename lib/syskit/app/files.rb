@@ -66,7 +66,7 @@ module Syskit
           path = File.join(dir, file)
           return path if File.file?(path)
         end
-        nil
+        bundles.lazy.filter_map { |bundle| bundle.named_file(file) }.first
       end
 
       # Records that the code at +location+ requires +path+, a file of the

@@ -89,7 +89,7 @@ module Syskit
           next unless File.file?(path)
 
           origin = bundle.equal?(Syskit::App::BundleSearch::BUNDLED) ? 'bundled with syskit' : "of #{bundle}"
-          return Base.new(path: path, require_path: "#{File.basename(bundle.root)}/models/orogen/#{library}",
+          return Base.new(path: path, require_path: "#{bundle.require_name}/models/orogen/#{library}",
                           origin: origin)
         end
         nil

@@ -206,8 +206,7 @@ module Syskit
     # one).
     def extension_files(name, spec_path)
       beside = File.join(File.dirname(spec_path), "#{name}.rb")
-      own = bundles.reject { |b| b.equal?(BundleSearch::BUNDLED) }
-                   .map { |b| File.join(b.root, 'models', 'orogen', "#{name}.rb") }.select { |p| File.file?(p) }
+      own = bundles.reject { |b| b.equal?(BundleSearch::BUNDLED) }.filter_map { |b| b.file("models/orogen/#{name}.rb") }
       return own if beside.start_with?("#{BUNDLED_MODELS}/") && own.any?
 
       (own + [beside]).uniq.select { |p| File.file?(p) }
@@ -312,7 +311,7 @@ module Syskit
     # it without a require.
     def load_bundled_models
       can = bundles.select { |b| b.name == 'common_models' }
-                   .map { |b| File.join(b.root, 'models', 'devices', 'bus', 'can.rb') }.find { |p| File.file?(p) }
+                   .filter_map { |b| b.file('models/devices/bus/can.rb') }.first
       collect_problems { load_file(can) }
     end
 

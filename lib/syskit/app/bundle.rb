@@ -51,6 +51,13 @@ module Syskit
         File.dirname(root) if @dirs.nil?
       end
 
+      # The bundle's file at +relative+ ('models/devices/x.rb',
+      # 'config/orogen/lib::Task.yml'), nil when it has none.
+      def file(relative)
+        path = File.expand_path(relative, root)
+        path if owns?(path) && File.file?(path)
+      end
+
       # The first part of the names its files are required under from
       # other bundles ('common_models/models/devices/bus/can'): the name of
       # its directory, which the load path finds it by (see #parent_dir),
@@ -59,14 +66,12 @@ module Syskit
         @dirs.nil? ? File.basename(root) : name
       end
 
-      # The bundle's file that `require +file+` means when the bundle's
-      # parent directory is not on the load path: 'NAME/models/x.rb' and
-      # 'models/x.rb' of a bundle that is not all of its root; nil otherwise.
-      def named_file(file)
-        return if @dirs.nil?
-
-        path = File.expand_path(file.delete_prefix("#{require_name}/"), root)
-        path if owns?(path) && File.file?(path)
+      # The bundle's file that `require +name+` (with .rb) means when the
+      # bundle's parent directory is not on the load path: 'NAME/models/x.rb'
+      # and 'models/x.rb' of a bundle that is not all of its root; nil
+      # otherwise.
+      def named_file(name)
+        file(name.delete_prefix("#{require_name}/")) unless @dirs.nil?
       end
 
       def to_s

@@ -129,6 +129,11 @@ module Syskit
       assert_match(/device model/, query_at(hover, path, 'IMU', offset: 1))
     end
 
+    def test_lines_ruby_warns_about_print_nothing
+      text = File.read(@profile).sub("as: 'gps')", "as: 'gps').prefer_deployed_tasks(/gps]/)")
+      assert_output('', '') { assert_match(/device model/, query_at(query, @profile, 'F9, as:', text: text)) }
+    end
+
     def test_positions_are_in_utf16_code_units
       text = "x = 'é𝄞'; CommonModels::Devices::Bus::CAN\n"
       # é is one unit (two bytes), 𝄞 two units (four bytes).

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'ripper'
+require 'syskit/lsp/quietly'
 
 module Syskit
   module LSP
@@ -31,7 +32,7 @@ module Syskit
         @lineno = line + 1
         @line_text = text.to_s.lines[line].to_s.chomp
         @col = Cursor.byte_offset(@line_text, character)
-        @tokens = Ripper.lex(@line_text).map { |(_, c), type, tok| Token.new(c, type, tok) }
+        @tokens = LSP.quietly { Ripper.lex(@line_text) }.map { |(_, c), type, tok| Token.new(c, type, tok) }
       end
 
       # The byte offset of the UTF-16 position +character+ in +line+.

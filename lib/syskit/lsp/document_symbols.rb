@@ -92,8 +92,7 @@ module Syskit
       end
 
       def scopes
-        parser = Nesting.new(@text)
-        parser.parse
+        parser = Nesting.parse(@text)
         parser.error? ? [] : parser.scopes
       end
 

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'ripper'
+require 'syskit/lsp/quietly'
 
 module Syskit
   module LSP
@@ -15,8 +16,7 @@ module Syskit
       # The full names of the scopes around +lineno+ (1-based), innermost
       # first; empty when the text does not parse.
       def self.at(text, lineno)
-        parser = new(text.to_s)
-        parser.parse
+        parser = parse(text)
         return [] if parser.error?
 
         enclosing = parser.scopes.select { |s| lineno.between?(s.first_line, s.last_line) }.sort_by(&:first_line)
@@ -25,6 +25,13 @@ module Syskit
           names << (s.name.start_with?('::') ? s.name[2..] : [names.last, s.name].compact.join('::'))
         end
         names.reverse
+      end
+
+      # The parser, once it has read +text+ (without printing warnings).
+      def self.parse(text)
+        parser = new(text.to_s)
+        LSP.quietly { parser.parse }
+        parser
       end
 
       attr_reader :scopes

@@ -1,0 +1,207 @@
+# frozen_string_literal: true
+
+require 'syskit/lsp/cursor'
+require 'syskit/lsp/nesting'
+
+module Syskit
+  module LSP
+    # What the cursor designates in the loaded app, found from the text at
+    # the cursor (see Cursor) and the models, devices and definitions the
+    # app recorded. Hover and Definition both start from it.
+    #
+    # +kind+ is one of :model (a data service, device, bus, composition,
+    # task model or profile), :task_library, :device (a robot's device or
+    # bus), :definition (a profile's), :port (+owner+ is the child or model
+    # it is a port of) and :conf (+object+ is the task model whose
+    # configuration file has the section +name+).
+    Target = Struct.new(:kind, :object, :name, :owner)
+
+    # Resolves a Cursor to a Target.
+    class Resolver
+      # Statements whose string argument names the model they declare.
+      DECLARATIONS = %w[data_service_type device_type com_bus_type profile].freeze
+
+      attr_reader :app, :cursor
+
+      def initialize(app, cursor)
+        @app = app
+        @cursor = cursor
+      end
+
+      # The Target at the cursor, nil when it is on nothing the app knows.
+      def target
+        from_string || from_orogen || from_constant || from_identifier
+      end
+
+      # The profiles declared in the cursor's file, else all of them.
+      def profiles
+        all = app.profiles.values
+        own = all.select { |p| p.declared_at&.path == cursor.path }
+        own.empty? ? all : own
+      end
+
+      # The device or bus +name+ of the file's profiles' robots.
+      def device(name)
+        profiles.each do |profile|
+          found = profile.robot.find_device(name)
+          return found if found
+        end
+        nil
+      end
+
+      # The definition +name+ of the file's profiles.
+      def definition(name)
+        profiles.each do |profile|
+          found = profile.find_definition(name)
+          return found if found
+        end
+        nil
+      end
+
+      # The constant +path+ as Ruby looks it up from the cursor's line:
+      # in each module around it, innermost first, then at the top level.
+      # When the buffer does not parse, the saved file's modules are used.
+      def constant(path)
+        return lookup(Object, path.delete_prefix('::')) if path.start_with?('::')
+
+        scopes.each do |scope|
+          base = lookup(Object, scope)
+          found = base && lookup(base, path)
+          return found if found
+        end
+        lookup(Object, path)
+      end
+
+      # The modules around the cursor's line, innermost first.
+      def scopes
+        @scopes ||= begin
+          found = Nesting.at(cursor.text, cursor.lineno)
+          found = Nesting.at(File.read(cursor.path), cursor.lineno) if found.empty? && File.file?(cursor.path.to_s)
+          found
+        end
+      end
+
+      # The device or definition whose statement is the closest one above
+      # the cursor's line in its file (what a chained +with_conf+ is on).
+      def statement_above
+        candidates = profiles.flat_map { |p| p.robot.each_master_device.to_a + p.definitions.values }
+        candidates.select { |c| c.declared_at&.path == cursor.path && c.declared_at.lineno <= cursor.lineno }
+                  .max_by { |c| c.declared_at.lineno }
+      end
+
+      # The composition model whose class body holds the cursor.
+      def composition
+        scopes.lazy.map { |s| lookup(Object, s) }.find { |m| m.is_a?(Class) && m < Composition }
+      end
+
+      # The task model whose configuration a device or definition uses.
+      def conf_model(holder)
+        if holder.is_a?(Robot::MasterDeviceInstance)
+          holder.driver_model if holder.driver_resolved?
+        elsif holder
+          model = holder.component_model
+          model if model.respond_to?(:spec) && model.spec
+        end
+      end
+
+      private
+
+      def lookup(base, path)
+        path.split('::').reduce(base) do |mod, name|
+          return nil unless mod.is_a?(Module) && name.match?(/\A[A-Z]\w*\z/) && mod.const_defined?(name, false)
+          return nil if mod.autoload?(name)
+
+          mod.const_get(name, false)
+        end
+      end
+
+      def from_string
+        str = cursor.string
+        return unless str
+
+        case str.call
+        when 'using_task_library' then library(str.text)
+        when 'through' then device_target(str.text)
+        when 'device', 'com_bus' then device_target(str.text) if str.label == 'as'
+        when 'with_conf' then conf_target(str.text)
+        when *DECLARATIONS then declared_model(str.text)
+        when 'define' then definition_target(str.text)
+        end
+      end
+
+      def declared_model(name)
+        found = profile_of(constant(name))
+        Target.new(:model, found, name) if model?(found)
+      end
+
+      # A profile's module stands for its profile.
+      def profile_of(object)
+        profile_module = object.is_a?(Module) && object.singleton_class.include?(Actions::Profile::ModuleMethods)
+        profile_module ? object.syskit_profile : object
+      end
+
+      def library(name)
+        Target.new(:task_library, app.orogen.library(name), name) if app.orogen.loaded?(name)
+      end
+
+      def device_target(name)
+        found = device(name)
+        Target.new(:device, found, name) if found
+      end
+
+      def conf_target(section)
+        holder = statement_above
+        model = conf_model(holder)
+        Target.new(:conf, model, section, holder) if model
+      end
+
+      def definition_target(name)
+        found = definition(name)
+        Target.new(:definition, found, found.name) if found
+      end
+
+      def from_orogen
+        chain = cursor.orogen_chain
+        return unless chain
+
+        lib = library(chain[0])
+        return lib if chain.size == 1 || lib.nil?
+
+        model = app.orogen.find_task_model("#{chain[0]}::#{chain[1]}")
+        Target.new(:model, model, model.name) if model
+      end
+
+      def from_constant
+        path = cursor.constant_path
+        found = path && profile_of(constant(path))
+        Target.new(:model, found, path) if model?(found)
+      end
+
+      # Whether +object+ is something the site has a kind of page for.
+      def model?(object)
+        object.is_a?(Models::DataServiceModel) || object.is_a?(Actions::Profile) ||
+          (object.is_a?(Class) && object < AbstractComponent)
+      end
+
+      def from_identifier
+        word = cursor.identifier
+        case word
+        when /\A(\w+)_dev\z/ then device_target(Regexp.last_match(1))
+        when /\A(\w+)_def\z/ then definition_target(Regexp.last_match(1))
+        when /\A(\w+)_port\z/ then port_target(Regexp.last_match(1))
+        end
+      end
+
+      # A port of a composition's child (+follower_child.pose_port+), or
+      # of the composition around the cursor.
+      def port_target(name)
+        return unless composition
+
+        child_name = cursor.receiver&.delete_suffix('_child')
+        owner = child_name && cursor.receiver.end_with?('_child') ? composition.find_child(child_name) : composition
+        port = owner&.find_port(name)
+        Target.new(:port, port, name, owner) if port
+      end
+    end
+  end
+end

@@ -68,6 +68,88 @@ module Syskit
       assert_match message, diagnostic[:message]
     end
 
+    # The place of +needle+ in +text+ (+offset+ characters in), as a request's params.
+    def at(path, text, needle, offset: 0)
+      line = text.lines.index { |l| l.include?(needle) }
+      @client.position(path, line, text.lines[line].index(needle) + offset)
+    end
+
+    # The example's profile, opened and checked; its path and text.
+    def open_profile
+      path = file(PROFILE)
+      text = File.read(path)
+      @client.open(path, text)
+      @client.diagnostics_of(path)
+      [path, text]
+    end
+
+    def test_hover_answers_markdown
+      path, text = open_profile
+      hover = @client.request('textDocument/hover', at(path, text, 'F9, as:'))[:result][:contents]
+      assert_equal 'markdown', hover[:kind]
+      assert_match(/device model.*Ublox::F9/, hover[:value])
+    end
+
+    def test_definition_answers_the_declaration_s_file_and_line
+      path, text = open_profile
+      f9 = file('models/devices/gps/ublox/f9.rb')
+      definition, = @client.request('textDocument/definition', at(path, text, 'F9, as:'))[:result]
+      assert_equal LSP::URI.of(f9), definition[:uri]
+      assert_equal File.readlines(f9).index { |l| l.include?("device_type 'F9'") }, definition[:range][:start][:line]
+    end
+
+    def test_completion_answers_items_with_markdown_documentation
+      path, text = open_profile
+      completion = @client.request('textDocument/completion',
+                                   at(path, text, "using_task_library 'can_open'", offset: 20))[:result]
+      refute completion[:isIncomplete]
+      canbus = completion[:items].find { |item| item[:label] == 'canbus' }
+      assert_equal [9, 'task library'], canbus.values_at(:kind, :detail)
+      assert_equal 'markdown', canbus[:documentation][:kind]
+    end
+
+    def test_document_symbols_answer_the_outline
+      path, = open_profile
+      symbols = @client.request('textDocument/documentSymbol', textDocument: { uri: LSP::URI.of(path) })[:result]
+      assert_equal(['AwesomeRobot::Profiles::Live::Base'], symbols.map { |symbol| symbol[:name] })
+      assert_includes symbols.first[:children].map { |child| child[:name] }, 'gps'
+      assert_equal 0, @client.close
+    end
+
+    # A configuration file changed: the models stay loaded, and the
+    # answers are about the new file.
+    def test_completion_knows_a_section_added_to_a_configuration_buffer
+      path, text = open_profile
+      at_section = at(path, text, ".with_conf('default', 'aft')", offset: 23)
+      labels = -> { @client.request('textDocument/completion', at_section)[:result][:items].map { |i| i[:label] } }
+      assert_equal %w[default forward aft], labels.call
+      conf = file('config/orogen/camera_gige::Task.yml')
+      @client.open(conf, "#{File.read(conf)}--- name:night\nexposure: 20000\n")
+      @client.diagnostics_of(conf)
+      assert_equal %w[default forward aft night], labels.call
+    end
+
+    def test_queries_answer_on_the_buffer_after_a_change_and_nothing_on_a_file_not_open
+      path, text = open_profile
+      # Two lines more at the top: the positions are the buffer's.
+      changed = "# one\n# two\n#{text}"
+      @client.change(path, changed)
+      @client.diagnostics_of(path)
+      hover = @client.request('textDocument/hover', at(path, changed, 'F9, as:'))[:result]
+      assert_match(/Ublox::F9/, hover[:contents][:value])
+      # A device added: the app is loaded again, and the answers are the new app's.
+      spare = changed.sub("as: 'gps')", "as: 'gps')\ndevice(Devices::GPS::Ublox::F9, as: 'spare_gps')")
+      @client.change(path, spare, version: 3)
+      @client.diagnostics_of(path)
+      hover = @client.request('textDocument/hover', at(path, spare, 'spare_gps', offset: 1))[:result]
+      assert_match(/spare_gps/, hover&.dig(:contents, :value))
+
+      other = file('models/compositions/drive.rb')
+      assert_nil @client.request('textDocument/hover', @client.position(other, 0, 0))[:result]
+      assert_equal [], @client.request('textDocument/definition', @client.position(other, 0, 0))[:result]
+      assert_equal 0, @client.close
+    end
+
     def test_a_file_that_breaks_the_loading_of_another_shows_the_error_where_the_cause_is
       profile = file(PROFILE)
       @client.open(profile)

@@ -106,6 +106,17 @@ module Syskit
       session&.unload
     end
 
+    def test_each_file_is_served_by_the_app_containing_it_and_none_outside_apps
+      workspace = LSP::Workspace.new(log: StringIO.new)
+      session = workspace.session_for(path('models/profiles/base.rb'))
+      assert_equal @root, session.root
+      assert_same session, workspace.session_for(path('config/orogen/imu::Task.yml'))
+      outside = Dir.mktmpdir('syskit-outside')
+      assert_nil workspace.session_for(File.join(outside, 'notes.rb'))
+    ensure
+      FileUtils.rm_rf(outside) if outside
+    end
+
     private
 
     # The messages of `syskit check` on the app with +buffers+ for files,

@@ -23,12 +23,17 @@ module Syskit
       # (:load, :conf).
       attr_reader :last_check
 
+      # The number of checks so far: what was made from the app (the query
+      # capabilities' catalogs) is made again once it changes.
+      attr_reader :generation
+
       def initialize(root, log: $stderr)
         @root = root
         @buffers = {}
         @checked = {}
         @problems = []
         @log = log
+        @generation = 0
       end
 
       # The texts of the files open in the editor, by path.
@@ -122,6 +127,7 @@ module Syskit
       # way is a problem of the app rather than the end of the server.
       def checking(how)
         started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+        @generation += 1
         @problems = UserFile.with_buffers(@buffers) do
           @checked = @buffers.keys.to_h { |path| [path, current_text(path)] }
           yield

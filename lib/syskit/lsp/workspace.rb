@@ -21,9 +21,7 @@ module Syskit
       # The session of the app containing +path+, made on first use; nil
       # outside any app.
       def session_for(path)
-        root = App.find_root(File.dirname(path))
-        return unless root && !root.start_with?("#{CLI::GEM_ROOT}/bundles/")
-
+        root = App.find_root(File.dirname(path)) or return
         @sessions[root] ||= Session.new(root, log: @log)
       end
 

@@ -4,6 +4,7 @@
 # protocol's messages are read and written with the language_server-protocol
 # gem, as Ruby's own language servers do; each query capability is a small
 # class of its own, with no protocol code, answering on a loaded app.
+require 'io/wait'
 require 'language_server-protocol'
 require 'syskit/check'
 require 'syskit/lsp/uri'

@@ -5,6 +5,7 @@ require 'json'
 require 'open3'
 require 'timeout'
 require 'rbconfig'
+require 'stringio'
 require 'syskit/lsp/uri'
 
 module Syskit
@@ -50,6 +51,19 @@ module Syskit
 
       def notify(method, params = {})
         @writer.write(method: method, params: params)
+      end
+
+      # The notifications the block sends, written to the server at once
+      # (as an editor sends the changes of fast typing).
+      def at_once
+        writer = @writer
+        buffer = StringIO.new
+        @writer = Protocol::Transport::Io::Writer.new(buffer)
+        yield
+      ensure
+        @writer = writer
+        @stdin.write(buffer.string)
+        @stdin.flush
       end
 
       # The next notification +method+ that the block (if given) accepts;

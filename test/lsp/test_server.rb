@@ -129,6 +129,20 @@ module Syskit
       assert_equal %w[default forward aft night], labels.call
     end
 
+    # Changes faster than checks: only the last text waiting is checked.
+    def test_changes_sent_at_once_are_checked_once_on_the_last_text
+      path, text = open_profile
+      @client.at_once do
+        (2..5).each { |version| @client.change(path, text.sub('Ublox::F9', "Ublox::F#{version}"), version: version) }
+        @client.change(path, text.sub('Ublox::F9', 'Ublox::F10'), version: 6)
+      end
+      diagnostic, *others = @client.diagnostics_of(path)
+      assert_empty others
+      assert_match(/Ublox::F10\b/, diagnostic[:message])
+      @client.change(path, text, version: 7)
+      assert_equal [], @client.diagnostics_of(path)
+    end
+
     def test_queries_answer_on_the_buffer_after_a_change_and_nothing_on_a_file_not_open
       path, text = open_profile
       # Two lines more at the top: the positions are the buffer's.

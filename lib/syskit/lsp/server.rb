@@ -39,6 +39,8 @@ module Syskit
         @log = log
         @workspace = Workspace.new(log: log)
         @uris = {}
+        @input = input
+        @pending = {}
       end
 
       # Answers messages until the client says exit (or closes its end);
@@ -49,6 +51,8 @@ module Syskit
           @reader.read do |message|
             dispatch(message)
             return @shut_down ? 0 : 1 if @exiting
+
+            check_pending unless more_input?
           end
           return @shut_down ? 0 : 1
         rescue JSON::ParserError, NoMethodError => e
@@ -70,6 +74,7 @@ module Syskit
       end
 
       def answer(id, name, params)
+        check_pending
         handler = REQUESTS[name]
         return respond_error(id, ErrorCodes::METHOD_NOT_FOUND, "syskit lsp does not answer #{name}") unless handler
 
@@ -139,15 +144,39 @@ module Syskit
       end
 
       def did_close(params)
+        check_pending
         uri = params.dig(:textDocument, :uri)
         path = URI.path(uri) or return
         workspace.close(path) { |file, diagnostics| publish(file, diagnostics) }
       end
 
+      # The text is checked once the client has nothing more to say (see
+      # #check_pending).
       def changed(uri, text)
         path = URI.path(uri) or return
         @uris[path] = uri
-        workspace.update(path, text) { |file, diagnostics| publish(file, diagnostics) }
+        @pending.delete(path)
+        @pending[path] = text
+      end
+
+      # Checks the texts changed since the last check, each file's last
+      # text only: while users type, editors send a change per keystroke,
+      # faster than a check; those already superseded by the next one
+      # waiting to be read are not checked. Requests check first, so that
+      # they answer on what the editor shows.
+      def check_pending
+        changes = @pending
+        @pending = {}
+        changes.each do |path, text|
+          guarded('check') { workspace.update(path, text) { |file, diagnostics| publish(file, diagnostics) } }
+        end
+      end
+
+      # Whether another message is waiting to be read.
+      def more_input?
+        @input.ready?
+      rescue IOError
+        false
       end
 
       def publish(path, diagnostics)

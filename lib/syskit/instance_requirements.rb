@@ -121,6 +121,8 @@ module Syskit
       @doc = doc
       @port_dynamics = port_dynamics
       @open = open
+      # Held, as frozen ones (see Changes#held?): their lists are too.
+      freeze_deployments if open
       extend_readers
     end
 
@@ -188,8 +190,8 @@ module Syskit
     end
 
     # The deployed tasks to prefer (see #prefer_deployed_tasks), a list
-    # to add to (Syskit's tests append to it), frozen with the
-    # requirements; without hints of their own, the device's (frozen).
+    # to add to (Syskit's tests append to it), frozen when the requirements
+    # are held; without hints of their own, the device's (frozen).
     def deployment_hints
       own = @deployment_hints
       return own unless own.empty?
@@ -210,10 +212,10 @@ module Syskit
 
     # The deployed tasks these requirements' network may use before the
     # robot's (Syskit's deployment group, see #use_deployment): their own,
-    # to add deployments to, frozen with the requirements.
+    # to add deployments to, frozen when the requirements are held.
     def deployment_group
       group = @deployment_group
-      return group || Models::DeploymentGroup.empty if frozen?
+      return group || Models::DeploymentGroup.empty if held?
       return group if group && !group.frozen?
 
       @deployment_group = group ? group.dup : Models::DeploymentGroup.new

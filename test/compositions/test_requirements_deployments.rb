@@ -13,7 +13,7 @@ module Syskit
 
     def setup
       super
-      load_rig
+      load_rig({}, profile: "profile 'Base' do\n#{ROBOT.gsub(/^/, '  ')}end\n")
       @task_m = TaskContext.new_submodel(name: 'Cam')
     end
 
@@ -48,6 +48,19 @@ module Syskit
       assert_empty profile.plain_def.deployment_hints
       assert_equal %w[front], profile.front_def.deployment_hints
       assert_raises(FrozenError) { profile.front_def.deployment_hints << 'rear' }
+    end
+
+    # A profile's device action is held: it keeps the device's hints, and
+    # has nothing of its own to add to.
+    def test_a_device_action_has_no_hints_or_group_to_add_to
+      left = Rig::Profiles::Base.left_wheel_dev
+      assert_equal %w[left_wheel], left.deployment_hints
+      assert_raises(FrozenError) { left.deployment_hints << 'front' }
+      gps = Rig::Profiles::Base.gps_dev
+      assert_raises(FrozenError) { gps.deployment_hints << 'front' }
+      assert_raises(FrozenError) { gps.deployment_group.use_deployment(OroGen.rig.Tracker => 'gps_tracker') }
+      assert_empty Rig::Profiles::Base.gps_dev.deployment_hints
+      assert_equal %w[front], gps.prefer_deployed_tasks('front').deployment_hints
     end
 
     def test_a_task_made_alone_has_requirements_to_add_hints_to

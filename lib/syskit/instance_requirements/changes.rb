@@ -21,8 +21,7 @@ module Syskit
       # Frozen with their deployment hints and group: requirements a model
       # or a profile holds are not changed through them.
       def freeze
-        @deployment_hints.freeze
-        @deployment_group&.freeze
+        freeze_deployments
         super
       end
 
@@ -66,6 +65,11 @@ module Syskit
         end
         extend_readers
         self
+      end
+
+      def freeze_deployments
+        @deployment_hints.freeze
+        @deployment_group&.freeze
       end
 
       def extend_readers

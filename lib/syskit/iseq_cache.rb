@@ -64,7 +64,8 @@ module Syskit
         end
 
         entry = entry_of(path)
-        key = "#{RUBY_DESCRIPTION}\0#{path}\0#{source.bytesize}\n#{source}"
+        # As bytes: the path and the text may be in encodings that do not mix.
+        key = "#{RUBY_DESCRIPTION}\0".b << path.b << "\0#{source.bytesize}\n" << source.b
         cached = read(entry, key)
         return cached if cached
 

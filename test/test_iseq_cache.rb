@@ -65,6 +65,25 @@ module Syskit
       end
     end
 
+    # The key of an app file holds its path and its text: a path that is not
+    # UTF-8 and a text that is not ASCII still make one.
+    def test_an_app_file_whose_path_and_text_do_not_mix_is_kept
+      Dir.mktmpdir do |dir|
+        script = <<~'RUBY'
+          require 'syskit/iseq_cache'
+          Syskit::ISeqCache.install
+          source = "# caf\u00e9\n" + ("x = 1\n" * 20_000) + "x + 1\n"
+          path = File.join(ARGV[0], "caf\xE9.rb".b)
+          2.times { puts Syskit::ISeqCache.compile(source, path).eval }
+        RUBY
+        out, err, status = ruby_process('-e', script, dir, chdir: dir,
+                                                           env: { 'SYSKIT_CACHE_DIR' => File.join(dir, 'cache') })
+        assert status.success?, err
+        assert_equal "2\n2\n", out
+        assert_equal 1, Dir[File.join(dir, 'cache', '*', '*.iseq')].size
+      end
+    end
+
     def plan_of(app, cache)
       out, err, status = syskit_process('plan', '--app', app, env: { 'SYSKIT_CACHE_DIR' => cache })
       assert status.success?, err

@@ -117,20 +117,23 @@ module Syskit
       model.required_dynamic_services.each { |srv| yield srv.bind(self) }
     end
 
-    # The compositions this task is a child of (Roby's +each_parent_task+).
+    # The compositions this task is a child of (Roby's +each_parent_task+),
+    # in the order they became its parents.
     def each_parent_task(&)
       return enum_for(__method__) unless block_given?
 
-      (@parent_tasks || []).each(&)
+      @parent_tasks&.each_key(&)
     end
 
-    # Records +composition+ as a parent (see Composition#add_child).
+    # Records +composition+ as a parent (see Composition#add_child). Kept
+    # by identity in a hash: a task all compositions share (merged into
+    # one) has as many parents as there are compositions.
     def add_parent_task(composition)
-      (@parent_tasks ||= []) << composition unless @parent_tasks&.any? { |p| p.equal?(composition) }
+      (@parent_tasks ||= {}.compare_by_identity)[composition] = true
     end
 
     def remove_parent_task(composition)
-      @parent_tasks&.delete_if { |p| p.equal?(composition) }
+      @parent_tasks&.delete(composition)
     end
   end
 
@@ -181,10 +184,12 @@ module Syskit
     attr_reader :arguments
     # The requirements (a device action, a composition's child, what
     # InstanceRequirements#instanciate was given) the task was made for
-    # (Syskit's +requirements+); its configuration sections; where it
-    # stands in the network; where the requirements of the network's root
-    # it belongs to are declared (the definition).
-    attr_accessor :requirements, :conf, :plan_path, :root_location
+    # (Syskit's +requirements+); see #requirements.
+    attr_writer :requirements
+    # Its configuration sections; where it stands in the network; where the
+    # requirements of the network's root it belongs to are declared (the
+    # definition).
+    attr_accessor :conf, :plan_path, :root_location
     # What plans it, when it stands for requirements still to be planned
     # (see InstanceRequirements#as_plan).
     attr_accessor :planning_task
@@ -199,6 +204,23 @@ module Syskit
     # component providing +models+.
     def self.create_proxy_task_model(models, component_model: nil, as: nil)
       Models::Placeholder.for(models, component_model: component_model, as: as)
+    end
+
+    # The requirements the task was made for; a task made alone
+    # (+Model.new+) has empty ones, as in Syskit, to which its deployment
+    # hints can be added (see #deployment_hints).
+    def requirements
+      @requirements ||= InstanceRequirements.new
+    end
+
+    # The hints choosing its deployed task (see prefer_deployed_tasks): its
+    # requirements', else those of the compositions it is a child of, as
+    # Syskit merges them.
+    def deployment_hints
+      own = requirements.deployment_hints
+      return own unless own.empty?
+
+      each_parent_task.flat_map(&:deployment_hints).uniq
     end
 
     # Requirements that would give a task like this one: its model, with
@@ -219,7 +241,12 @@ module Syskit
     def abstract?
       return @abstract unless @abstract.nil?
 
-      model.abstract? || requirements&.abstract? || false
+      return true if model.abstract?
+
+      # The requirements of a task made alone require nothing: they do not
+      # make it abstract.
+      requirements = @requirements
+      requirements && !requirements.models.empty? ? requirements.abstract? : false
     end
 
     # Marks the task abstract (or not), whatever its model and

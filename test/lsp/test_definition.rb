@@ -21,18 +21,23 @@ module Syskit
       query_at(query, path, needle, **position).map { |l| [l.path.delete_prefix("#{SelfTest::GEM_ROOT}/"), l.lineno] }
     end
 
+    # +relative+ in syskit's own models, relative to the gem.
+    def bundled(relative)
+      File.join(App::BUNDLED_MODELS, relative).delete_prefix("#{SelfTest::GEM_ROOT}/")
+    end
+
     def test_a_model_constant_goes_to_its_declaration
       f9 = 'examples/awesome_robot/models/devices/gps/ublox/f9.rb'
       assert_equal [[f9, line_of(f9, "device_type 'F9'")]], definitions('F9, as:')
       watch = 'examples/awesome_robot/models/compositions/temperature_watch.rb'
       assert_equal [[watch, line_of(watch, 'class TemperatureWatch')]], definitions('TemperatureWatch', offset: 1)
-      assert_equal [['bundles/common_models/models/devices/bus/can.rb', 10]], definitions('CAN, as:')
+      assert_equal [[bundled('devices/bus/can.rb'), 10]], definitions('CAN, as:')
     end
 
     def test_a_task_library_goes_to_its_orogen_file_and_a_task_model_to_its_task
-      assert_equal [['bundles/common_models/models/orogen/canbus.orogen', 1]], definitions("'canbus'", offset: 2)
-      assert_equal [['bundles/common_models/models/orogen/canbus.orogen', 1]], definitions('canbus.Task)')
-      assert_equal [['bundles/common_models/models/orogen/canbus.orogen', 12]],
+      assert_equal [[bundled('orogen/canbus.orogen'), 1]], definitions("'canbus'", offset: 2)
+      assert_equal [[bundled('orogen/canbus.orogen'), 1]], definitions('canbus.Task)')
+      assert_equal [[bundled('orogen/canbus.orogen'), 12]],
                    definitions('canbus.Task)', offset: 8)
     end
 

@@ -55,10 +55,14 @@ module Syskit
       assert_equal [[profile, line_of(@profile, "define 'drive'")]], definitions("define 'drive'", offset: 9)
     end
 
-    def test_a_port_of_a_child_goes_to_the_child
+    def test_a_port_of_a_child_goes_to_its_declaration
       drive = example('models/compositions/drive.rb')
-      assert_equal [['examples/awesome_robot/models/compositions/drive.rb', line_of(drive, "as: 'follower'")]],
+      orogen = 'examples/awesome_robot/models/orogen/navigation.orogen'
+      assert_equal [[orogen, line_of(orogen, "input_port 'pose'")]],
                    definitions('follower_child.pose_port', drive, offset: 16)
+      service = 'examples/awesome_robot/models/services/position.rb'
+      assert_equal [[service, line_of(service, "output_port 'position_samples'")]],
+                   definitions('position_child.position_samples_port', drive, offset: 20)
     end
 
     def test_nothing_and_unknown_names_go_nowhere

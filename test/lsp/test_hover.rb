@@ -92,11 +92,16 @@ module Syskit
       assert_includes text, 'Declared at `config/orogen/camera_gige::Task.yml:4`'
     end
 
-    def test_a_port_of_a_composition_child
+    def test_a_port_of_a_composition_child_with_the_model_that_declares_it
       drive = example('models/compositions/drive.rb')
-      assert_equal '**input port** `pose` of child `follower`: `/base/samples/RigidBodyState`',
+      line = line_of(example('models/orogen/navigation.orogen'), "input_port 'pose'")
+      assert_equal '**input port** `pose` of child `follower` (`navigation::PathFollower`): ' \
+                   "`/base/samples/RigidBodyState`\n\nDeclared at `models/orogen/navigation.orogen:#{line}`",
                    hover('follower_child.pose_port', drive, offset: 16)
       assert_match(/\A\*\*output port\*\* `left_speed`/, hover('left_speed_port', drive))
+      service = hover('position_child.position_samples_port', drive, offset: 20)
+      assert_match(/\(`AwesomeRobot::Services::Position`\)/, service)
+      assert_includes service, 'Declared at `models/services/position.rb:5`'
     end
 
     def test_the_cursor_on_nothing_known_shows_nothing

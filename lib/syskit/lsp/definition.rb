@@ -10,7 +10,8 @@ module Syskit
     # recorded when the app was loaded: a model constant to its
     # declaration, a task library or OroGen.lib.Task to its .orogen file, a
     # section of with_conf to its header in config/orogen/*.yml, a device
-    # or bus name (through 'can0', gps_dev) to its device statement.
+    # or bus name (through 'can0', gps_dev) to its device statement, a
+    # port (+follower_child.pose_port+) to its declaration.
     #
     # Locations are Syskit::Location, with 1-based lines (line 1 for a
     # file as a whole).
@@ -38,8 +39,7 @@ module Syskit
           case target.kind
           when :model then model_location(target.object)
           when :task_library then Location.new(target.object.path, 1)
-          when :device, :definition then target.object.declared_at
-          when :port then target.owner.declared_at if target.owner.respond_to?(:child_name)
+          when :device, :definition, :port then target.object.declared_at
           when :conf then section_location(target.object, target.name)
           end
         [whole_file(location)].compact

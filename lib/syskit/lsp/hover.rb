@@ -93,9 +93,12 @@ module Syskit
          model ? "model `#{model.name}`" : '', declared(definition.declared_at)].reject(&:empty?).join("\n\n")
       end
 
+      # A port of a composition's child, of the model that declares it.
       def port(port, owner)
         of = owner.is_a?(Models::CompositionChild) ? "child `#{owner.child_name}`" : "`#{owner.name}`"
-        "**#{port.direction} port** `#{port.name}` of #{of}: `#{type_of(port)}`"
+        declarer = port.respond_to?(:owner) && port.owner.respond_to?(:name) ? " (`#{port.owner.name}`)" : ''
+        ["**#{port.direction} port** `#{port.name}` of #{of}#{declarer}: `#{type_of(port)}`",
+         declared(port.declared_at)].reject(&:empty?).join("\n\n")
       end
 
       def conf_section(model, name)

@@ -60,8 +60,26 @@ module Syskit
     def test_sections_of_the_driver_of_the_device_above_in_with_conf
       items = complete("            .with_conf('default', '", ".with_conf('default', 'aft')")
       assert_equal %w[default forward aft], labels(items)
-      assert_equal [12, 'section of camera_gige::Task.yml', 'exposure, frame_rate'],
+      assert_equal [12, 'section of camera_gige::Task', 'exposure, frame_rate'],
                    items.first.values_at(:kind, :detail, :documentation)
+    end
+
+    def test_configurations_of_the_composition_of_the_definition_above_in_with_conf
+      items = complete("          .with_conf('", ".with_conf('summer')")
+      assert_equal [{ label: 'summer', kind: 12, detail: 'configuration of AwesomeRobot::Compositions::TemperatureWatch',
+                      documentation: 'monitor: default, summer' }], items
+    end
+
+    def test_no_sections_when_the_configuration_file_cannot_be_read
+      root = my_app("device(MyApp::Devices::IMU, as: 'imu')\n  .with_conf('default')\n",
+                    'config/orogen/imu::Task.yml' => "--- name:default\nrate: [unclosed\n")
+      app = load_app(root, problems: true, robots: [], everything: true, models: true)
+      path = File.join(root, 'models/profiles/base.rb')
+      text = File.read(path)
+      line, character = position(text, "with_conf('default')", offset: 11)
+      assert_empty LSP::Completion.new(app).at(path, text, line, character)
+      assert_equal '**configuration** `default` of `imu::Task`: not declared',
+                   LSP::Hover.new(app).at(path, text, line, character + 1)
     end
 
     def test_inputs_of_the_children_in_connect_to

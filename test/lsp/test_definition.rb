@@ -48,6 +48,11 @@ module Syskit
                    definitions("with_conf('default', 'forward')", offset: 3)
     end
 
+    def test_with_conf_of_a_definition_goes_to_the_composition_s_configuration
+      watch = 'examples/awesome_robot/models/compositions/temperature_watch.rb'
+      assert_equal [[watch, line_of(watch, "conf 'summer'")]], definitions("with_conf('summer')", offset: 12)
+    end
+
     def test_a_bus_name_and_a_device_action_go_to_their_statement
       profile = 'examples/awesome_robot/models/profiles/live/base.rb'
       assert_equal [[profile, line_of(@profile, "as: 'can0'")]], definitions("through 'can0'", offset: 10)

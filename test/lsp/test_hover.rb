@@ -87,9 +87,22 @@ module Syskit
 
     def test_a_configuration_section
       text = hover("'forward')", offset: 3)
-      assert_match(/\A\*\*configuration section\*\* `forward` of `camera_gige::Task`/, text)
+      assert_match(/\A\*\*section\*\* `forward` of `camera_gige::Task`/, text)
       assert_includes text, 'Sets: `ip`'
       assert_includes text, 'Declared at `config/orogen/camera_gige::Task.yml:4`'
+    end
+
+    def test_a_named_configuration_of_a_definition_s_composition
+      text = hover("with_conf('summer')", offset: 12)
+      assert_match(/\A\*\*configuration\*\* `summer` of `AwesomeRobot::Compositions::TemperatureWatch`/, text)
+      assert_includes text, 'Sets: `monitor: default, summer`'
+      assert_match(%r{Declared at `models/compositions/temperature_watch.rb:\d+`}, text)
+    end
+
+    def test_a_section_nobody_declared_says_so
+      text = File.read(@profile).sub("'default', 'forward'", "'default', 'sideways'")
+      assert_equal '**configuration** `sideways` of `camera_gige::Task`: not declared',
+                   query_at(query, @profile, "'sideways'", text: text, offset: 2)
     end
 
     def test_a_port_of_a_composition_child_with_the_model_that_declares_it

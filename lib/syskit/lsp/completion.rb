@@ -93,11 +93,8 @@ module Syskit
 
       def sections(resolver, _match)
         model = resolver.conf_model(resolver.statement_above)
-        file = model && app.conf_file(model)
-        return [] unless file
-
-        file.sections.values.map do |section|
-          item(section.name, :value, "section of #{File.basename(section.path)}", section.settings.keys.join(', '))
+        ConfSections.of(app, model).map do |section|
+          item(section.name, :value, "#{section.kind} of #{model.name}", section.what.join(', '))
         end
       end
 

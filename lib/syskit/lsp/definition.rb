@@ -52,8 +52,7 @@ module Syskit
       end
 
       def section_location(model, name)
-        section = app.conf_file(model)&.sections&.[](name)
-        Location.new(section.path, [section.line, 1].max) if section
+        ConfSections.find(app, model, name)&.location
       end
 
       # The sections a with_conf call names, when the cursor is on
@@ -61,9 +60,8 @@ module Syskit
       def all_sections(resolver)
         cursor = resolver.cursor
         names = cursor.tokens.drop(cursor.index + 1).select { |t| t.type == :on_tstring_content }.map(&:text)
-        holder = resolver.statement_above
-        model = resolver.conf_model(holder)
-        model ? names.filter_map { |n| section_location(model, n) } : []
+        model = resolver.conf_model(resolver.statement_above)
+        names.filter_map { |n| section_location(model, n) }
       end
 
       def whole_file(location)

@@ -102,13 +102,13 @@ module Syskit
       end
 
       def conf_section(model, name)
-        file = app.conf_file(model)
-        section = file&.sections&.[](name)
-        return "**configuration section** `#{name}` of `#{model.name}`: not found" unless section
+        section = ConfSections.find(app, model, name)
+        return "**configuration** `#{name}` of `#{model.name}`: not declared" unless section
 
-        settings = section.settings.keys.map { |k| "`#{k}`" }
-        ["**configuration section** `#{name}` of `#{model.name}`", list('Sets', settings),
-         declared(Location.new(section.path, section.line))].reject(&:empty?).join("\n\n")
+        ["**#{section.kind}** `#{name}` of `#{model.name}`", list('Sets', section.what.map do |w|
+          "`#{w}`"
+        end), declared(section.location)]
+          .reject(&:empty?).join("\n\n")
       end
     end
   end

@@ -2,6 +2,7 @@
 
 require 'syskit/lsp/cursor'
 require 'syskit/lsp/nesting'
+require 'syskit/lsp/conf_sections'
 
 module Syskit
   module LSP
@@ -12,8 +13,8 @@ module Syskit
     # +kind+ is one of :model (a data service, device, bus, composition,
     # task model or profile), :task_library, :device (a robot's device or
     # bus), :definition (a profile's), :port (+owner+ is the child or model
-    # it is a port of) and :conf (+object+ is the task model whose
-    # configuration file has the section +name+).
+    # it is a port of) and :conf (+object+ is the model whose
+    # configuration +name+ is chosen, see ConfSections).
     Target = Struct.new(:kind, :object, :name, :owner)
 
     # Resolves a Cursor to a Target.
@@ -94,13 +95,14 @@ module Syskit
         scopes.lazy.map { |s| lookup(Object, s) }.find { |m| m.is_a?(Class) && m < Composition }
       end
 
-      # The task model whose configuration a device or definition uses.
+      # The model whose configurations a device or definition chooses
+      # among: a device's driver, a definition's task model or composition
+      # (see ConfSections).
       def conf_model(holder)
         if holder.is_a?(Robot::MasterDeviceInstance)
           holder.driver_model if holder.driver_resolved?
         elsif holder
-          model = holder.component_model
-          model if model.respond_to?(:spec) && model.spec
+          holder.component_model
         end
       end
 

@@ -93,6 +93,16 @@ module Syskit
                    labels(complete('      follower_child.', 'follower_child.left', drive)).sort
     end
 
+    def test_loaded_task_libraries_and_their_tasks_after_orogen
+      libraries = complete('          device(OroGen.', "device(Devices::GPS::Ublox::F9, as: 'gps')")
+      assert_includes labels(libraries), 'can_open'
+      refute_includes labels(libraries), 'logger'
+      tasks = complete('          device(OroGen.can_open.', "device(Devices::GPS::Ublox::F9, as: 'gps')")
+      assert_equal %w[SyncTask], labels(tasks)
+      assert_equal [7, 'task model'], tasks.first.values_at(:kind, :detail)
+      assert_empty complete('          device(OroGen.nope.', "device(Devices::GPS::Ublox::F9, as: 'gps')")
+    end
+
     def test_nothing_where_the_line_expects_nothing_known
       assert_empty complete('          robot ', 'robot do')
       assert_empty complete('      nope_child.', 'follower_child.left', example('models/compositions/drive.rb'))

@@ -14,6 +14,7 @@ module Syskit
     #                                of the driver of the device above
     #   x_port.connect_to |          the ports of the composition's children
     #   x_child.|                    the ports of the child x
+    #   OroGen.|  OroGen.lib.|       the loaded task libraries, their tasks
     #
     # Items are Hashes: label, kind (the protocol's CompletionItemKind),
     # detail and documentation.
@@ -27,7 +28,9 @@ module Syskit
         [/\busing_task_library\s*\(?\s*['"]\w*\z/, :libraries],
         [/\bwith_conf\s*\(?(?:\s*['"][^'"]*['"]\s*,)*\s*['"]\w*\z/, :sections],
         [/\bconnect_to\s*\(?\s*\w*\z/, :sinks],
-        [/\b(\w+)_child\.\w*\z/, :child_ports]
+        [/\b(\w+)_child\.\w*\z/, :child_ports],
+        [/\bOroGen\.(\w+)\.\w*\z/, :orogen_tasks],
+        [/\bOroGen\.\w*\z/, :orogen_libraries]
       ].freeze
 
       attr_reader :app
@@ -116,6 +119,20 @@ module Syskit
         found = before.match(/(\w+)_child\.(\w+)_port\.connect_to\s*\(?\s*\w*\z/)
         child = found && composition.find_child(found[1])
         child&.ports&.[](found[2])
+      end
+
+      def orogen_libraries(_resolver, _match)
+        app.orogen.loaded_library_names.sort.map do |name|
+          item(name, :module, 'task library', app.orogen.library(name).tasks.values.map(&:name).join(', '))
+        end
+      end
+
+      def orogen_tasks(_resolver, match)
+        return [] unless app.orogen.loaded?(match[1])
+
+        app.orogen.library(match[1]).tasks.values.map do |task|
+          item(task.name.split('::').last, :class, 'task model', catalog.entry_for(task)&.summary)
+        end
       end
 
       def child_ports(resolver, match)

@@ -152,6 +152,27 @@ module Syskit
       assert_output('', '') { assert_match(/device model/, query_at(query, @profile, 'F9, as:', text: text)) }
     end
 
+    # Rock's common_models keeps old names as autoloads of files that no
+    # longer define them; once something tried one, it is listed among
+    # the module's constants but has no value.
+    def test_a_constant_whose_autoload_failed_is_nothing
+      files = { 'models/services/ghost.rb' => "# defines nothing any more\n",
+                'models/services/old.rb' => <<~RUBY }
+                  module MyApp
+                    autoload :Ghost, 'models/services/ghost'
+                    begin
+                      MyApp::Ghost
+                    rescue NameError
+                    end
+                  end
+                RUBY
+      app = load_app(my_app(nil, files), problems: true, robots: [], everything: true, models: true)
+      path = File.join(app.root, 'models/services/old.rb')
+      hover = LSP::Hover.new(app)
+      assert_nil query_at(hover, path, 'MyApp::Ghost', offset: 8)
+      assert_match(/device model/, hover.at(path, 'MyApp::Devices::IMU', 0, 17))
+    end
+
     def test_positions_are_in_utf16_code_units
       text = "x = 'é𝄞'; CommonModels::Devices::Bus::CAN\n"
       # é is one unit (two bytes), 𝄞 two units (four bytes).

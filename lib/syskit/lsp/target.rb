@@ -115,6 +115,8 @@ module Syskit
 
           mod.const_get(name, false)
         end
+      rescue NameError # an autoload that failed
+        nil
       end
 
       def from_string

@@ -72,6 +72,25 @@ module Syskit
       assert_includes hover('temperature_sensor_dev'), 'through `can0`'
     end
 
+    def test_an_action_of_another_profile_by_its_receiver
+      other = <<~RUBY
+        require 'models/profiles/base'
+        module MyApp
+          module Profiles
+            profile 'Other' do
+              define 'imu_too', Base.imu_dev
+            end
+          end
+        end
+      RUBY
+      root = my_app("device(MyApp::Devices::IMU, as: 'imu')\n", 'models/profiles/other.rb' => other)
+      app = load_app(root, robots: [], everything: true, models: true)
+      path = File.join(root, 'models/profiles/other.rb')
+      assert_match(/\A\*\*device\*\* `imu` of `MyApp::Profiles::Base`/, query_at(LSP::Hover.new(app), path, 'imu_dev'))
+      assert_equal([[File.join(root, 'models/profiles/base.rb'), 9]],
+                   query_at(LSP::Definition.new(app), path, 'imu_dev').map { |l| [l.path, l.lineno] })
+    end
+
     def test_a_definition_by_its_action_and_its_name
       text = hover('watch_temperatures', offset: 2)
       assert_match(/\A\*\*definition\*\* `watch_temperatures_def` of `AwesomeRobot::Profiles::Live::Base`/, text)

@@ -34,8 +34,13 @@ module Syskit
         from_string || from_orogen || from_constant || from_identifier
       end
 
-      # The profiles declared in the cursor's file, else all of them.
+      # The profile the cursor's method is called on (+Base+ of
+      # Base.gps_dev), else the profiles declared in the cursor's file,
+      # else all of them.
       def profiles
+        receiver = cursor.receiver_constant && profile_of(constant(cursor.receiver_constant))
+        return [receiver] if receiver.is_a?(Actions::Profile)
+
         all = app.profiles.values
         own = all.select { |p| p.declared_at&.path == cursor.path }
         own.empty? ? all : own

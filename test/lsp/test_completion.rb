@@ -103,6 +103,14 @@ module Syskit
       assert_empty complete('          device(OroGen.nope.', "device(Devices::GPS::Ublox::F9, as: 'gps')")
     end
 
+    def test_deployments_in_use_deployment
+      robot = example('config/robots/default.rb')
+      items = complete("Syskit.conf.use_deployment '", "use_deployment 'motors'", robot)
+      assert_equal %w[cameras motors test_canbus], labels(items)
+      assert_equal [9, 'deployment', 'forward_camera (camera_gige::Task), aft_camera (camera_gige::Task)'],
+                   items.first.values_at(:kind, :detail, :documentation)
+    end
+
     def test_nothing_where_the_line_expects_nothing_known
       assert_empty complete('          robot ', 'robot do')
       assert_empty complete('      nope_child.', 'follower_child.left', example('models/compositions/drive.rb'))

@@ -60,6 +60,12 @@ module Syskit
       assert_equal [[profile, line_of(@profile, "define 'drive'")]], definitions("define 'drive'", offset: 9)
     end
 
+    def test_a_deployment_goes_to_its_declaration
+      orogen = 'examples/awesome_robot/models/orogen/camera_gige.orogen'
+      assert_equal [[orogen, line_of(orogen, "deployment 'cameras'")]],
+                   definitions("'cameras'", example('config/robots/default.rb'), offset: 2)
+    end
+
     def test_a_port_of_a_child_goes_to_its_declaration
       drive = example('models/compositions/drive.rb')
       orogen = 'examples/awesome_robot/models/orogen/navigation.orogen'

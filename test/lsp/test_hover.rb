@@ -98,6 +98,14 @@ module Syskit
       assert_includes text, 'Alarms on the engine and water temperatures.'
     end
 
+    def test_a_deployment_of_a_task_library_by_its_name
+      text = query_at(query, example('config/robots/default.rb'), "'cameras'", offset: 2)
+      assert_match(/\A\*\*deployment\*\* `cameras`/, text)
+      assert_includes text, 'Tasks: `forward_camera` (`camera_gige::Task`), `aft_camera` (`camera_gige::Task`)'
+      assert_includes text, 'Declared at `models/orogen/camera_gige.orogen:'
+      assert_nil query_at(query, example('config/robots/default.rb'), "=> 'gps'", offset: 5)
+    end
+
     def test_a_profile_by_its_name
       text = hover("profile 'Base'", offset: 10)
       assert_match(/\A\*\*profile\*\* `AwesomeRobot::Profiles::Live::Base`/, text)

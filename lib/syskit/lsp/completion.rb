@@ -15,6 +15,7 @@ module Syskit
     #   x_port.connect_to |          the ports of the composition's children
     #   x_child.|                    the ports of the child x
     #   OroGen.|  OroGen.lib.|       the loaded task libraries, their tasks
+    #   use_deployment '|            the deployments of the loaded libraries
     #
     # Items are Hashes: label, kind (the protocol's CompletionItemKind),
     # detail and documentation.
@@ -26,6 +27,7 @@ module Syskit
         [/\b(device|com_bus)\s*\(?\s*(?:[\w:]*)\z/, :models],
         [/\bthrough\s*\(?\s*['"]\w*\z/, :buses],
         [/\busing_task_library\s*\(?\s*['"]\w*\z/, :libraries],
+        [/\buse_deployment\s*\(?\s*['"]\w*\z/, :deployments],
         [/\bwith_conf\s*\(?(?:\s*['"][^'"]*['"]\s*,)*\s*['"]\w*\z/, :sections],
         [/\bconnect_to\s*\(?\s*\w*\z/, :sinks],
         [/\b(\w+)_child\.\w*\z/, :child_ports],
@@ -91,6 +93,13 @@ module Syskit
           loaded = app.orogen.loaded?(name) ? app.orogen.library(name) : nil
           tasks = loaded ? "Task models: #{loaded.tasks.values.map(&:name).join(', ')}" : 'not loaded yet'
           item(name, :module, 'task library', tasks)
+        end
+      end
+
+      def deployments(_resolver, _match)
+        app.orogen.deployment_names.map do |name|
+          tasks = app.orogen.find_deployment(name).task_activities.map { |t| "#{t.name} (#{t.model.name})" }
+          item(name, :module, 'deployment', tasks.join(', '))
         end
       end
 

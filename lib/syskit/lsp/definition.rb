@@ -39,7 +39,7 @@ module Syskit
           case target.kind
           when :model then model_location(target.object)
           when :task_library then Location.new(target.object.path, 1)
-          when :device, :definition, :port then target.object.declared_at
+          when :device, :definition, :port, :deployment then target.object.declared_at
           when :conf then section_location(target.object, target.name)
           end
         [whole_file(location)].compact

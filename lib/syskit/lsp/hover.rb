@@ -41,6 +41,7 @@ module Syskit
         when :task_library then task_library(target.object)
         when :device then device(target.object)
         when :definition then definition(target.object)
+        when :deployment then deployment(target.object)
         when :port then port(target.object, target.owner)
         when :conf then conf_section(target.object, target.name)
         end
@@ -91,6 +92,12 @@ module Syskit
         model = definition.component_model || definition.models.first
         ["**definition** `#{definition.name}_def` of `#{definition.profile.name}`", definition.doc.to_s.strip,
          model ? "model `#{model.name}`" : '', declared(definition.declared_at)].reject(&:empty?).join("\n\n")
+      end
+
+      def deployment(deployment)
+        tasks = deployment.task_activities.map { |t| "`#{t.name}` (`#{t.model.name}`)" }
+        ["**deployment** `#{deployment.name}`", list('Tasks', tasks), declared(deployment.declared_at)]
+          .reject(&:empty?).join("\n\n")
       end
 
       # A port of a composition's child, of the model that declares it.

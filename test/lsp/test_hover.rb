@@ -106,6 +106,16 @@ module Syskit
       assert_nil query_at(query, example('config/robots/default.rb'), "=> 'gps'", offset: 5)
     end
 
+    def test_the_statements_of_an_orogen_file
+      orogen = example('models/orogen/camera_gige.orogen')
+      assert_match(/\A\*\*task model\*\* `camera_gige::Task`/,
+                   query_at(query, orogen, "task_context 'Task'", offset: 15))
+      assert_match(/\A\*\*task model\*\* `camera_gige::Task`/,
+                   query_at(query, orogen, "'camera_gige::Task'", offset: 3))
+      assert_match(/\A\*\*deployment\*\* `cameras`/, query_at(query, orogen, "deployment 'cameras'", offset: 13))
+      assert_nil query_at(query, orogen, "task('forward_camera'", offset: 7)
+    end
+
     def test_a_profile_by_its_name
       text = hover("profile 'Base'", offset: 10)
       assert_match(/\A\*\*profile\*\* `AwesomeRobot::Profiles::Live::Base`/, text)

@@ -51,8 +51,25 @@ module Syskit
         when 'with_conf' then conf_target(str.text)
         when *DECLARATIONS then declared_model(str.text)
         when 'define' then definition_target(str.text)
-        when 'use_deployment' then deployment_target(str.text)
+        when 'use_deployment', 'deployment' then deployment_target(str.text)
+        else orogen_statement(str)
         end
+      end
+
+      # In an .orogen file: the task of +task_context 'Task'+, the model of
+      # +task('name', 'lib::Task')+.
+      def orogen_statement(str)
+        name = case str.call
+               when 'task_context' then "#{orogen_file_library&.name}::#{str.text}"
+               when 'task' then str.text
+               end
+        model = name&.include?('::') && app.orogen.find_task_model(name)
+        Target.new(:model, model, model.name) if model
+      end
+
+      # The loaded task library whose .orogen file is the cursor's.
+      def orogen_file_library
+        app.orogen.loaded_library_names.map { |n| app.orogen.library(n) }.find { |l| l.path == cursor.path }
       end
 
       def declared_model(name)

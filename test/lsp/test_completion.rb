@@ -60,8 +60,26 @@ module Syskit
     def test_sections_of_the_driver_of_the_device_above_in_with_conf
       items = complete("            .with_conf('default', '", ".with_conf('default', 'aft')")
       assert_equal %w[default forward aft], labels(items)
-      assert_equal [12, 'section of camera_gige::Task.yml', 'exposure, frame_rate'],
+      assert_equal [12, 'section of camera_gige::Task', 'exposure, frame_rate'],
                    items.first.values_at(:kind, :detail, :documentation)
+    end
+
+    def test_configurations_of_the_composition_of_the_definition_above_in_with_conf
+      items = complete("          .with_conf('", ".with_conf('summer')")
+      assert_equal [{ label: 'summer', kind: 12, detail: 'configuration of AwesomeRobot::Compositions::TemperatureWatch',
+                      documentation: 'monitor: default, summer' }], items
+    end
+
+    def test_no_sections_when_the_configuration_file_cannot_be_read
+      root = my_app("device(MyApp::Devices::IMU, as: 'imu')\n  .with_conf('default')\n",
+                    'config/orogen/imu::Task.yml' => "--- name:default\nrate: [unclosed\n")
+      app = load_app(root, problems: true, robots: [], everything: true, models: true)
+      path = File.join(root, 'models/profiles/base.rb')
+      text = File.read(path)
+      line, character = position(text, "with_conf('default')", offset: 11)
+      assert_empty LSP::Completion.new(app).at(path, text, line, character)
+      assert_equal '**configuration** `default` of `imu::Task`: not declared',
+                   LSP::Hover.new(app).at(path, text, line, character + 1)
     end
 
     def test_inputs_of_the_children_in_connect_to
@@ -73,6 +91,24 @@ module Syskit
       assert_equal %w[left_child.speed_command_port right_child.speed_command_port], labels(speeds)
       assert_equal %w[left_speed_port pose_port right_speed_port],
                    labels(complete('      follower_child.', 'follower_child.left', drive)).sort
+    end
+
+    def test_loaded_task_libraries_and_their_tasks_after_orogen
+      libraries = complete('          device(OroGen.', "device(Devices::GPS::Ublox::F9, as: 'gps')")
+      assert_includes labels(libraries), 'can_open'
+      refute_includes labels(libraries), 'logger'
+      tasks = complete('          device(OroGen.can_open.', "device(Devices::GPS::Ublox::F9, as: 'gps')")
+      assert_equal %w[SyncTask], labels(tasks)
+      assert_equal [7, 'task model'], tasks.first.values_at(:kind, :detail)
+      assert_empty complete('          device(OroGen.nope.', "device(Devices::GPS::Ublox::F9, as: 'gps')")
+    end
+
+    def test_deployments_in_use_deployment
+      robot = example('config/robots/default.rb')
+      items = complete("Syskit.conf.use_deployment '", "use_deployment 'motors'", robot)
+      assert_equal %w[cameras motors test_canbus], labels(items)
+      assert_equal [9, 'deployment', 'forward_camera (camera_gige::Task), aft_camera (camera_gige::Task)'],
+                   items.first.values_at(:kind, :detail, :documentation)
     end
 
     def test_nothing_where_the_line_expects_nothing_known

@@ -72,11 +72,48 @@ module Syskit
       assert_includes hover('temperature_sensor_dev'), 'through `can0`'
     end
 
+    def test_an_action_of_another_profile_by_its_receiver
+      other = <<~RUBY
+        require 'models/profiles/base'
+        module MyApp
+          module Profiles
+            profile 'Other' do
+              define 'imu_too', Base.imu_dev
+            end
+          end
+        end
+      RUBY
+      root = my_app("device(MyApp::Devices::IMU, as: 'imu')\n", 'models/profiles/other.rb' => other)
+      app = load_app(root, robots: [], everything: true, models: true)
+      path = File.join(root, 'models/profiles/other.rb')
+      assert_match(/\A\*\*device\*\* `imu` of `MyApp::Profiles::Base`/, query_at(LSP::Hover.new(app), path, 'imu_dev'))
+      assert_equal([[File.join(root, 'models/profiles/base.rb'), 9]],
+                   query_at(LSP::Definition.new(app), path, 'imu_dev').map { |l| [l.path, l.lineno] })
+    end
+
     def test_a_definition_by_its_action_and_its_name
       text = hover('watch_temperatures', offset: 2)
       assert_match(/\A\*\*definition\*\* `watch_temperatures_def` of `AwesomeRobot::Profiles::Live::Base`/, text)
       assert_includes text, 'model `AwesomeRobot::Compositions::TemperatureWatch`'
       assert_includes text, 'Alarms on the engine and water temperatures.'
+    end
+
+    def test_a_deployment_of_a_task_library_by_its_name
+      text = query_at(query, example('config/robots/default.rb'), "'cameras'", offset: 2)
+      assert_match(/\A\*\*deployment\*\* `cameras`/, text)
+      assert_includes text, 'Tasks: `forward_camera` (`camera_gige::Task`), `aft_camera` (`camera_gige::Task`)'
+      assert_includes text, 'Declared at `models/orogen/camera_gige.orogen:'
+      assert_nil query_at(query, example('config/robots/default.rb'), "=> 'gps'", offset: 5)
+    end
+
+    def test_the_statements_of_an_orogen_file
+      orogen = example('models/orogen/camera_gige.orogen')
+      assert_match(/\A\*\*task model\*\* `camera_gige::Task`/,
+                   query_at(query, orogen, "task_context 'Task'", offset: 15))
+      assert_match(/\A\*\*task model\*\* `camera_gige::Task`/,
+                   query_at(query, orogen, "'camera_gige::Task'", offset: 3))
+      assert_match(/\A\*\*deployment\*\* `cameras`/, query_at(query, orogen, "deployment 'cameras'", offset: 13))
+      assert_nil query_at(query, orogen, "task('forward_camera'", offset: 7)
     end
 
     def test_a_profile_by_its_name
@@ -87,16 +124,34 @@ module Syskit
 
     def test_a_configuration_section
       text = hover("'forward')", offset: 3)
-      assert_match(/\A\*\*configuration section\*\* `forward` of `camera_gige::Task`/, text)
+      assert_match(/\A\*\*section\*\* `forward` of `camera_gige::Task`/, text)
       assert_includes text, 'Sets: `ip`'
       assert_includes text, 'Declared at `config/orogen/camera_gige::Task.yml:4`'
     end
 
-    def test_a_port_of_a_composition_child
+    def test_a_named_configuration_of_a_definition_s_composition
+      text = hover("with_conf('summer')", offset: 12)
+      assert_match(/\A\*\*configuration\*\* `summer` of `AwesomeRobot::Compositions::TemperatureWatch`/, text)
+      assert_includes text, 'Sets: `monitor: default, summer`'
+      assert_match(%r{Declared at `models/compositions/temperature_watch.rb:\d+`}, text)
+    end
+
+    def test_a_section_nobody_declared_says_so
+      text = File.read(@profile).sub("'default', 'forward'", "'default', 'sideways'")
+      assert_equal '**configuration** `sideways` of `camera_gige::Task`: not declared',
+                   query_at(query, @profile, "'sideways'", text: text, offset: 2)
+    end
+
+    def test_a_port_of_a_composition_child_with_the_model_that_declares_it
       drive = example('models/compositions/drive.rb')
-      assert_equal '**input port** `pose` of child `follower`: `/base/samples/RigidBodyState`',
+      line = line_of(example('models/orogen/navigation.orogen'), "input_port 'pose'")
+      assert_equal '**input port** `pose` of child `follower` (`navigation::PathFollower`): ' \
+                   "`/base/samples/RigidBodyState`\n\nDeclared at `models/orogen/navigation.orogen:#{line}`",
                    hover('follower_child.pose_port', drive, offset: 16)
       assert_match(/\A\*\*output port\*\* `left_speed`/, hover('left_speed_port', drive))
+      service = hover('position_child.position_samples_port', drive, offset: 20)
+      assert_match(/\(`AwesomeRobot::Services::Position`\)/, service)
+      assert_includes service, 'Declared at `models/services/position.rb:5`'
     end
 
     def test_the_cursor_on_nothing_known_shows_nothing
@@ -132,6 +187,27 @@ module Syskit
     def test_lines_ruby_warns_about_print_nothing
       text = File.read(@profile).sub("as: 'gps')", "as: 'gps').prefer_deployed_tasks(/gps]/)")
       assert_output('', '') { assert_match(/device model/, query_at(query, @profile, 'F9, as:', text: text)) }
+    end
+
+    # Rock's common_models keeps old names as autoloads of files that no
+    # longer define them; once something tried one, it is listed among
+    # the module's constants but has no value.
+    def test_a_constant_whose_autoload_failed_is_nothing
+      files = { 'models/services/ghost.rb' => "# defines nothing any more\n",
+                'models/services/old.rb' => <<~RUBY }
+                  module MyApp
+                    autoload :Ghost, 'models/services/ghost'
+                    begin
+                      MyApp::Ghost
+                    rescue NameError
+                    end
+                  end
+                RUBY
+      app = load_app(my_app(nil, files), problems: true, robots: [], everything: true, models: true)
+      path = File.join(app.root, 'models/services/old.rb')
+      hover = LSP::Hover.new(app)
+      assert_nil query_at(hover, path, 'MyApp::Ghost', offset: 8)
+      assert_match(/device model/, hover.at(path, 'MyApp::Devices::IMU', 0, 17))
     end
 
     def test_positions_are_in_utf16_code_units

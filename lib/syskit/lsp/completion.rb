@@ -14,6 +14,8 @@ module Syskit
     #                                of the driver of the device above
     #   x_port.connect_to |          the ports of the composition's children
     #   x_child.|                    the ports of the child x
+    #   OroGen.|  OroGen.lib.|       the loaded task libraries, their tasks
+    #   use_deployment '|            the deployments of the loaded libraries
     #
     # Items are Hashes: label, kind (the protocol's CompletionItemKind),
     # detail and documentation.
@@ -25,9 +27,12 @@ module Syskit
         [/\b(device|com_bus)\s*\(?\s*(?:[\w:]*)\z/, :models],
         [/\bthrough\s*\(?\s*['"]\w*\z/, :buses],
         [/\busing_task_library\s*\(?\s*['"]\w*\z/, :libraries],
+        [/\buse_deployment\s*\(?\s*['"]\w*\z/, :deployments],
         [/\bwith_conf\s*\(?(?:\s*['"][^'"]*['"]\s*,)*\s*['"]\w*\z/, :sections],
         [/\bconnect_to\s*\(?\s*\w*\z/, :sinks],
-        [/\b(\w+)_child\.\w*\z/, :child_ports]
+        [/\b(\w+)_child\.\w*\z/, :child_ports],
+        [/\bOroGen\.(\w+)\.\w*\z/, :orogen_tasks],
+        [/\bOroGen\.\w*\z/, :orogen_libraries]
       ].freeze
 
       attr_reader :app
@@ -91,13 +96,17 @@ module Syskit
         end
       end
 
+      def deployments(_resolver, _match)
+        app.orogen.deployment_names.map do |name|
+          tasks = app.orogen.find_deployment(name).task_activities.map { |t| "#{t.name} (#{t.model.name})" }
+          item(name, :module, 'deployment', tasks.join(', '))
+        end
+      end
+
       def sections(resolver, _match)
         model = resolver.conf_model(resolver.statement_above)
-        file = model && app.conf_file(model)
-        return [] unless file
-
-        file.sections.values.map do |section|
-          item(section.name, :value, "section of #{File.basename(section.path)}", section.settings.keys.join(', '))
+        ConfSections.of(app, model).map do |section|
+          item(section.name, :value, "#{section.kind} of #{model.name}", section.what.join(', '))
         end
       end
 
@@ -119,6 +128,20 @@ module Syskit
         found = before.match(/(\w+)_child\.(\w+)_port\.connect_to\s*\(?\s*\w*\z/)
         child = found && composition.find_child(found[1])
         child&.ports&.[](found[2])
+      end
+
+      def orogen_libraries(_resolver, _match)
+        app.orogen.loaded_library_names.sort.map do |name|
+          item(name, :module, 'task library', app.orogen.library(name).tasks.values.map(&:name).join(', '))
+        end
+      end
+
+      def orogen_tasks(_resolver, match)
+        return [] unless app.orogen.loaded?(match[1])
+
+        app.orogen.library(match[1]).tasks.values.map do |task|
+          item(task.name.split('::').last, :class, 'task model', catalog.entry_for(task)&.summary)
+        end
       end
 
       def child_ports(resolver, match)

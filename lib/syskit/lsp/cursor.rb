@@ -62,16 +62,14 @@ module Syskit
       # ('Devices::GPS' on GPS of Devices::GPS::Ublox), nil when the
       # cursor is not on a constant. A leading :: is kept.
       def constant_path
-        return unless token&.type == :on_const && !orogen_chain
+        path_ending_at(index) if token&.type == :on_const && !orogen_chain
+      end
 
-        parts = [token.text]
+      # The constant path of the receiver of the method under the cursor
+      # (+Base+ of Base.gps_dev), nil when it is not a constant.
+      def receiver_constant
         i = index
-        while @tokens[i - 1]&.text == '::' && i >= 2 && @tokens[i - 2].type == :on_const
-          parts.unshift(@tokens[i - 2].text)
-          i -= 2
-        end
-        parts.unshift('') if top_level?(i)
-        parts.join('::')
+        path_ending_at(i - 2) if i && i >= 2 && @tokens[i - 1].type == :on_period && @tokens[i - 2].type == :on_const
       end
 
       # ['lib'] or ['lib', 'Task'] when the cursor is on the library or the
@@ -127,6 +125,18 @@ module Syskit
         i -= 1 if %i[on_tstring_beg on_tstring_end].include?(@tokens[i].type) && @tokens[i].end_col == col
         i += 1 if @tokens[i].type == :on_tstring_beg && @tokens[i + 1]&.type == :on_tstring_content
         i if @tokens[i] && (@tokens[i].type == :on_tstring_content || string_start?(i))
+      end
+
+      # The constant path whose last name is the token at +index+.
+      def path_ending_at(index)
+        parts = [@tokens[index].text]
+        i = index
+        while @tokens[i - 1]&.text == '::' && i >= 2 && @tokens[i - 2].type == :on_const
+          parts.unshift(@tokens[i - 2].text)
+          i -= 2
+        end
+        parts.unshift('') if top_level?(i)
+        parts.join('::')
       end
 
       # Whether the constant path starting at token +index+ is ::Name.

@@ -10,7 +10,8 @@ module Syskit
     # recorded when the app was loaded: a model constant to its
     # declaration, a task library or OroGen.lib.Task to its .orogen file, a
     # section of with_conf to its header in config/orogen/*.yml, a device
-    # or bus name (through 'can0', gps_dev) to its device statement.
+    # or bus name (through 'can0', gps_dev) to its device statement, a
+    # port (+follower_child.pose_port+) to its declaration.
     #
     # Locations are Syskit::Location, with 1-based lines (line 1 for a
     # file as a whole).
@@ -38,8 +39,7 @@ module Syskit
           case target.kind
           when :model then model_location(target.object)
           when :task_library then Location.new(target.object.path, 1)
-          when :device, :definition then target.object.declared_at
-          when :port then target.owner.declared_at if target.owner.respond_to?(:child_name)
+          when :device, :definition, :port, :deployment then target.object.declared_at
           when :conf then section_location(target.object, target.name)
           end
         [whole_file(location)].compact
@@ -52,8 +52,7 @@ module Syskit
       end
 
       def section_location(model, name)
-        section = app.conf_file(model)&.sections&.[](name)
-        Location.new(section.path, [section.line, 1].max) if section
+        ConfSections.find(app, model, name)&.location
       end
 
       # The sections a with_conf call names, when the cursor is on
@@ -61,9 +60,8 @@ module Syskit
       def all_sections(resolver)
         cursor = resolver.cursor
         names = cursor.tokens.drop(cursor.index + 1).select { |t| t.type == :on_tstring_content }.map(&:text)
-        holder = resolver.statement_above
-        model = resolver.conf_model(holder)
-        model ? names.filter_map { |n| section_location(model, n) } : []
+        model = resolver.conf_model(resolver.statement_above)
+        names.filter_map { |n| section_location(model, n) }
       end
 
       def whole_file(location)

@@ -41,6 +41,7 @@ module Syskit
         when :task_library then task_library(target.object)
         when :device then device(target.object)
         when :definition then definition(target.object)
+        when :deployment then deployment(target.object)
         when :port then port(target.object, target.owner)
         when :conf then conf_section(target.object, target.name)
         end
@@ -93,19 +94,28 @@ module Syskit
          model ? "model `#{model.name}`" : '', declared(definition.declared_at)].reject(&:empty?).join("\n\n")
       end
 
+      def deployment(deployment)
+        tasks = deployment.task_activities.map { |t| "`#{t.name}` (`#{t.model.name}`)" }
+        ["**deployment** `#{deployment.name}`", list('Tasks', tasks), declared(deployment.declared_at)]
+          .reject(&:empty?).join("\n\n")
+      end
+
+      # A port of a composition's child, of the model that declares it.
       def port(port, owner)
         of = owner.is_a?(Models::CompositionChild) ? "child `#{owner.child_name}`" : "`#{owner.name}`"
-        "**#{port.direction} port** `#{port.name}` of #{of}: `#{type_of(port)}`"
+        declarer = port.respond_to?(:owner) && port.owner.respond_to?(:name) ? " (`#{port.owner.name}`)" : ''
+        ["**#{port.direction} port** `#{port.name}` of #{of}#{declarer}: `#{type_of(port)}`",
+         declared(port.declared_at)].reject(&:empty?).join("\n\n")
       end
 
       def conf_section(model, name)
-        file = app.conf_file(model)
-        section = file&.sections&.[](name)
-        return "**configuration section** `#{name}` of `#{model.name}`: not found" unless section
+        section = ConfSections.find(app, model, name)
+        return "**configuration** `#{name}` of `#{model.name}`: not declared" unless section
 
-        settings = section.settings.keys.map { |k| "`#{k}`" }
-        ["**configuration section** `#{name}` of `#{model.name}`", list('Sets', settings),
-         declared(Location.new(section.path, section.line))].reject(&:empty?).join("\n\n")
+        ["**#{section.kind}** `#{name}` of `#{model.name}`", list('Sets', section.what.map do |w|
+          "`#{w}`"
+        end), declared(section.location)]
+          .reject(&:empty?).join("\n\n")
       end
     end
   end

@@ -2,6 +2,8 @@
 
 require 'syskit/lsp/cursor'
 require 'syskit/lsp/nesting'
+require 'syskit/lsp/conf_sections'
+require 'syskit/lsp/lookups'
 
 module Syskit
   module LSP
@@ -11,13 +13,16 @@ module Syskit
     #
     # +kind+ is one of :model (a data service, device, bus, composition,
     # task model or profile), :task_library, :device (a robot's device or
-    # bus), :definition (a profile's), :port (+owner+ is the child or model
-    # it is a port of) and :conf (+object+ is the task model whose
-    # configuration file has the section +name+).
+    # bus), :definition (a profile's), :deployment (a task library's),
+    # :port (+owner+ is the child or model it is a port of) and :conf
+    # (+object+ is the model whose configuration +name+ is chosen, see
+    # ConfSections).
     Target = Struct.new(:kind, :object, :name, :owner)
 
     # Resolves a Cursor to a Target.
     class Resolver
+      include Lookups
+
       # Statements whose string argument names the model they declare.
       DECLARATIONS = %w[data_service_type device_type com_bus_type profile].freeze
 
@@ -33,87 +38,7 @@ module Syskit
         from_string || from_orogen || from_constant || from_identifier
       end
 
-      # The profiles declared in the cursor's file, else all of them.
-      def profiles
-        all = app.profiles.values
-        own = all.select { |p| p.declared_at&.path == cursor.path }
-        own.empty? ? all : own
-      end
-
-      # The device or bus +name+ of the file's profiles' robots.
-      def device(name)
-        profiles.each do |profile|
-          found = profile.robot.find_device(name)
-          return found if found
-        end
-        nil
-      end
-
-      # The definition +name+ of the file's profiles.
-      def definition(name)
-        profiles.each do |profile|
-          found = profile.find_definition(name)
-          return found if found
-        end
-        nil
-      end
-
-      # The constant +path+ as Ruby looks it up from the cursor's line:
-      # in each module around it, innermost first, then at the top level.
-      # When the buffer does not parse, the saved file's modules are used.
-      def constant(path)
-        return lookup(Object, path.delete_prefix('::')) if path.start_with?('::')
-
-        scopes.each do |scope|
-          base = lookup(Object, scope)
-          found = base && lookup(base, path)
-          return found if found
-        end
-        lookup(Object, path)
-      end
-
-      # The modules around the cursor's line, innermost first.
-      def scopes
-        @scopes ||= begin
-          found = Nesting.at(cursor.text, cursor.lineno)
-          found = Nesting.at(File.read(cursor.path), cursor.lineno) if found.empty? && File.file?(cursor.path.to_s)
-          found
-        end
-      end
-
-      # The device or definition whose statement is the closest one above
-      # the cursor's line in its file (what a chained +with_conf+ is on).
-      def statement_above
-        candidates = profiles.flat_map { |p| p.robot.each_master_device.to_a + p.definitions.values }
-        candidates.select { |c| c.declared_at&.path == cursor.path && c.declared_at.lineno <= cursor.lineno }
-                  .max_by { |c| c.declared_at.lineno }
-      end
-
-      # The composition model whose class body holds the cursor.
-      def composition
-        scopes.lazy.map { |s| lookup(Object, s) }.find { |m| m.is_a?(Class) && m < Composition }
-      end
-
-      # The task model whose configuration a device or definition uses.
-      def conf_model(holder)
-        if holder.is_a?(Robot::MasterDeviceInstance)
-          holder.driver_model if holder.driver_resolved?
-        elsif holder
-          model = holder.component_model
-          model if model.respond_to?(:spec) && model.spec
-        end
-      end
-
       private
-
-      def lookup(base, path)
-        path.split('::').reduce(base) do |mod, name|
-          return nil unless mod.is_a?(Module) && name.match?(/\A[A-Z]\w*\z/) && mod.const_defined?(name, false)
-          return nil if mod.autoload?(name)
-
-          mod.const_get(name, false)
-        end
-      end
 
       def from_string
         str = cursor.string
@@ -126,18 +51,30 @@ module Syskit
         when 'with_conf' then conf_target(str.text)
         when *DECLARATIONS then declared_model(str.text)
         when 'define' then definition_target(str.text)
+        when 'use_deployment', 'deployment' then deployment_target(str.text)
+        else orogen_statement(str)
         end
+      end
+
+      # In an .orogen file: the task of +task_context 'Task'+, the model of
+      # +task('name', 'lib::Task')+.
+      def orogen_statement(str)
+        name = case str.call
+               when 'task_context' then "#{orogen_file_library&.name}::#{str.text}"
+               when 'task' then str.text
+               end
+        model = name&.include?('::') && app.orogen.find_task_model(name)
+        Target.new(:model, model, model.name) if model
+      end
+
+      # The loaded task library whose .orogen file is the cursor's.
+      def orogen_file_library
+        app.orogen.loaded_library_names.map { |n| app.orogen.library(n) }.find { |l| l.path == cursor.path }
       end
 
       def declared_model(name)
         found = profile_of(constant(name))
         Target.new(:model, found, name) if model?(found)
-      end
-
-      # A profile's module stands for its profile.
-      def profile_of(object)
-        profile_module = object.is_a?(Module) && object.singleton_class.include?(Actions::Profile::ModuleMethods)
-        profile_module ? object.syskit_profile : object
       end
 
       def library(name)
@@ -153,6 +90,11 @@ module Syskit
         holder = statement_above
         model = conf_model(holder)
         Target.new(:conf, model, section, holder) if model
+      end
+
+      def deployment_target(name)
+        found = app.orogen.find_deployment(name)
+        Target.new(:deployment, found, name) if found
       end
 
       def definition_target(name)

@@ -117,6 +117,23 @@ module Syskit
       FileUtils.rm_rf(outside) if outside
     end
 
+    def test_unsaved_robot_configuration_and_settings_are_checked_as_typed
+      robot = path('config/robots/default.rb')
+      assert @session.update(robot, "#{File.read(robot)}Syskit.conf.use_deployment OroGen.imu.Tsak => 'other'\n")
+      problem, = @session.problems
+      assert_equal Location.new(robot, 3), problem.location
+      assert_match(/Tsak/, problem.message)
+      @session.close(robot)
+      assert_equal [], @session.problems
+
+      settings = path('config/syskit.yml')
+      assert @session.update(settings, "name: MyApp\nacronyms: IMU\n")
+      problem, = @session.problems
+      assert_equal settings, problem.location.path
+      assert @session.update(settings, File.read(settings))
+      assert_equal [], @session.problems
+    end
+
     private
 
     # The messages of `syskit check` on the app with +buffers+ for files,

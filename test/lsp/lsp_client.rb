@@ -53,6 +53,12 @@ module Syskit
         @writer.write(method: method, params: params)
       end
 
+      # Writes +bytes+ as they are (what no client should send).
+      def send_raw(bytes)
+        @stdin.write(bytes)
+        @stdin.flush
+      end
+
       # The notifications the block sends, written to the server at once
       # (as an editor sends the changes of fast typing).
       def at_once

@@ -41,6 +41,25 @@ module Syskit
       assert_equal 0, @client.close
     end
 
+    # Started at a terminal rather than by an editor: it says what it is.
+    def test_at_a_terminal_it_says_it_is_for_editors
+      require 'pty'
+      PTY.spawn(SelfTest.child_env, RbConfig.ruby, File.join(GEM_ROOT, 'bin', 'syskit'), 'lsp',
+                unsetenv_others: true) do |reader, writer, pid|
+        assert_match(/speaks the Language Server Protocol.*editor\.md/, reader.gets)
+        writer.write("\x04") # Ctrl-D: the end of its input
+        Process.wait(pid)
+      end
+    end
+
+    def test_input_that_is_not_a_message_is_skipped_and_said_in_the_log
+      @client.send_raw("hello\r\n\r\n")
+      @client.send_raw("Content-Length: 2\r\n\r\n[]")
+      assert_equal 'syskit', @client.request('initialize', capabilities: {})[:result][:serverInfo][:name]
+      assert_equal 0, @client.close
+      assert_equal 2, @client.stderr.scan('syskit lsp: skipped input that is not a protocol message').size
+    end
+
     def test_a_mistake_in_a_buffer_is_shown_at_its_line_with_its_hint_then_cleared_once_fixed
       path = file(PROFILE)
       text = File.read(path)

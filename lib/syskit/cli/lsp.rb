@@ -16,6 +16,10 @@ module Syskit
       print) goes to stderr, which editors keep as the server's log.
     TEXT
     def lsp
+      if $stdin.tty?
+        warn 'syskit lsp speaks the Language Server Protocol on stdin/stdout: editors start it ' \
+             '(see doc/guides/editor.md). Ctrl-D ends it.'
+      end
       # stdout is the protocol's: what the app's files (or anything they
       # run) print goes to stderr instead, and nothing they do reads the
       # protocol's input.

@@ -55,9 +55,10 @@ module Syskit
             check_pending unless more_input?
           end
           return @shut_down ? 0 : 1
-        rescue JSON::ParserError, NoMethodError => e
-          # A message the client framed wrong: skipped, the next one read.
-          @log.puts "syskit lsp: unreadable message skipped (#{e.message})"
+        rescue JSON::ParserError, NoMethodError, ::TypeError => e
+          # What the client framed wrong (no Content-Length header, not JSON,
+          # not an object): skipped, the next message read.
+          @log.puts "syskit lsp: skipped input that is not a protocol message (#{e.class})"
         end
       end
 

@@ -39,6 +39,8 @@ module Syskit
       assert_equal 'syskit', diagnostic['source']
       assert_equal 1, diagnostic['severity'] # vim.diagnostic.severity.ERROR
       assert_match(/uninitialized constant .*Ublox::F8/, diagnostic['message'])
+      # Where the guide says the hint is.
+      assert_equal "hint: did you mean 'AwesomeRobot::Devices::GPS::Ublox::F9'?", diagnostic['hint']
     end
 
     private

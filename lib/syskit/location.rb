@@ -69,9 +69,14 @@ module Syskit
     end
 
     # The text of the line, for messages that quote what was written
-    # (read only when an error is reported); nil when it cannot be read.
+    # (read only when an error is reported; from the editor's buffer when
+    # `syskit lsp` checks one, see UserFile.with_buffers); nil when it
+    # cannot be read.
     def source_line
       return unless lineno&.positive?
+
+      buffer = UserFile.buffer(path) if defined?(UserFile)
+      return buffer.force_encoding(Encoding::UTF_8).lines[lineno - 1] if buffer
 
       File.foreach(path).with_index(1) { |line, i| return line if i == lineno }
       nil

@@ -134,6 +134,15 @@ module Syskit
       assert_equal [], @session.problems
     end
 
+    # Errors that quote the line they are at quote the buffer's.
+    def test_the_line_an_error_quotes_is_the_buffer_s
+      driver = path('models/orogen/imu.rb')
+      @session.update(driver, "GONE = nil; require 'models/devices/imu'\nSyskit.extend_model OroGen.imu.Task do\n  " \
+                              "driver_for GONE, as: 'imu'\nend\n")
+      problem = @session.problems.find { |p| p.location == Location.new(driver, 3) }
+      assert_match(/\AGONE is nil here/, problem&.hint)
+    end
+
     private
 
     # The messages of `syskit check` on the app with +buffers+ for files,

@@ -143,7 +143,40 @@ module Syskit
       assert_match(/\AGONE is nil here/, problem&.hint)
     end
 
+    # A file of a bundle the app uses, opened (from a definition, say): it
+    # is the app's session that serves it, and checks its changes.
+    def test_a_file_of_a_bundle_the_app_uses_is_served_and_checked_by_the_app
+      shared, profile = app_using_a_bundle
+      workspace = LSP::Workspace.new(log: StringIO.new)
+      workspace.update(profile, File.read(profile)) { nil }
+      session = workspace.session_for(profile)
+      assert_equal [], session.problems
+
+      assert_same session, workspace.session_for(shared)
+      # An app beside it is not one of its bundles: it has its own.
+      other = write_app({ 'config/syskit.yml' => "name: Other\n" }, name: 'other')
+      refute_same session, workspace.session_for(File.join(other, 'models', 'x.rb'))
+      assert_equal :load, session.kind_of(shared)
+      assert session.update(shared, "module Shared\n  device_type 'Thing'\n  nope\nend\n")
+      assert_equal [Location.new(shared, 3)], session.problems.map(&:location)
+    ensure
+      session&.unload
+    end
+
     private
+
+    # The app made to use a bundle beside it, 'shared', whose
+    # models/devices/thing.rb its profile requires: that file and the
+    # profile's.
+    def app_using_a_bundle
+      shared = File.join(File.dirname(@root), 'shared', 'models', 'devices', 'thing.rb')
+      FileUtils.mkdir_p(File.dirname(shared))
+      File.write(shared, "module Shared\n  device_type 'Thing'\nend\n")
+      File.write(path('config/syskit.yml'), "name: MyApp\nacronyms: [IMU, CAN]\nbundles: [../shared]\n")
+      profile = path('models/profiles/base.rb')
+      File.write(profile, "require 'models/devices/thing'\n#{File.read(profile)}")
+      [shared, profile]
+    end
 
     # The messages of `syskit check` on the app with +buffers+ for files,
     # loaded from scratch.

@@ -9,7 +9,8 @@ module Syskit
     # - a configuration file (config/orogen/*.yml): that file is read and
     #   checked again, and the profiles generated again, on the models
     #   already loaded;
-    # - a Ruby file of the app, an .orogen spec or the app's settings: the
+    # - a Ruby file of the app (or of a bundle it uses), an .orogen spec or
+    #   the app's settings: the
     #   app is unloaded and loaded again (a file's constants and the
     #   models they made cannot be taken back one by one);
     # - anything else (a test, a README): nothing.
@@ -76,14 +77,21 @@ module Syskit
 
       # :conf, :load or nil: what a change of +path+ needs (see the class).
       def kind_of(path)
-        return unless path.start_with?("#{root}/")
-
-        relative = path.delete_prefix("#{root}/")
+        base = roots.find { |dir| path.start_with?("#{dir}/") } or return
+        relative = path.delete_prefix("#{base}/")
         return :conf if relative.match?(%r{\Aconfig/orogen/[^/]+\.yml\z})
         return :load if relative.end_with?('.orogen')
         return :load if relative.end_with?('.rb') && relative.start_with?('models/', 'config/', 'lib/')
 
         :load if App::ROOT_FILES.include?(relative) || relative.match?(%r{\Aconfig/[^/]+\.yml\z})
+      end
+
+      # The directories of the files the app reads: its own and, once it
+      # was loaded, its bundles' (a file of common_models opened from a
+      # definition is served by the app that uses it, and its changes
+      # checked on it).
+      def roots
+        @roots || [root]
       end
 
       private
@@ -107,6 +115,7 @@ module Syskit
         @app = nil
         checking(:load) do
           @app = App.new(root)
+          @roots = [root, *@app.bundle_roots].uniq
           Check.load(@app)
           @kept = @app.problems.size
           Check.new(@app).run(load: false).problems

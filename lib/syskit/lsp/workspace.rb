@@ -18,11 +18,14 @@ module Syskit
         @texts[path]
       end
 
-      # The session of the app containing +path+, made on first use; nil
+      # The session of the app containing +path+, made on first use; for a
+      # file of a bundle (common_models), the session of an app that uses
+      # that bundle, unless the bundle has a session of its own; nil
       # outside any app.
       def session_for(path)
         root = App.find_root(File.dirname(path)) or return
-        @sessions[root] ||= Session.new(root, log: @log)
+        @sessions[root] || @sessions.values.find { |session| session.roots.include?(root) } ||
+          (@sessions[root] = Session.new(root, log: @log))
       end
 
       # The editor opened or changed +path+ to +text+: yields the

@@ -210,6 +210,16 @@ module Syskit
       assert_match(/device model/, hover.at(path, 'MyApp::Devices::IMU', 0, 17))
     end
 
+    def test_a_text_that_is_not_utf8_is_read_with_its_invalid_bytes_replaced
+      text = "# caf\xE9\nx = '\xE9'; CommonModels::Devices::Bus::CAN\n".dup.force_encoding('UTF-8')
+      refute text.valid_encoding?
+      assert_nil query.at(@profile, text, 0, 5)
+      assert_match(/bus model/, query.at(@profile, text, 1, text.lines[1].index('CAN') + 1))
+      assert_empty LSP::Definition.new(example_app).at(@profile, text, 0, 5)
+      assert_empty LSP::Completion.new(example_app).at(@profile, text, 0, 5)
+      assert_kind_of Array, LSP::DocumentSymbols.new(example_app).of(@profile, text)
+    end
+
     def test_positions_are_in_utf16_code_units
       text = "x = 'é𝄞'; CommonModels::Devices::Bus::CAN\n"
       # é is one unit (two bytes), 𝄞 two units (four bytes).

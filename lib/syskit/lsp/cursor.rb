@@ -26,11 +26,13 @@ module Syskit
 
       attr_reader :path, :text, :lineno, :col, :line_text, :tokens
 
+      # A +text+ that is not valid UTF-8 (a file read from disk, in
+      # Latin-1) is read with its invalid bytes replaced.
       def initialize(path, text, line, character)
         @path = path
-        @text = text
+        @text = text.to_s.scrub
         @lineno = line + 1
-        @line_text = text.to_s.lines[line].to_s.chomp
+        @line_text = @text.lines[line].to_s.chomp
         @col = Cursor.byte_offset(@line_text, character)
         @tokens = LSP.quietly { Ripper.lex(@line_text) }.map { |(_, c), type, tok| Token.new(c, type, tok) }
       end

@@ -31,9 +31,9 @@ module Syskit
 
       # The symbols of +path+, whose buffer is +text+, in line order.
       def of(path, text)
-        @lines = text.to_s.lines.map(&:chomp)
+        @text = text.to_s.scrub
+        @lines = @text.lines.map(&:chomp)
         @scopes = nil
-        @text = text.to_s
         path = File.expand_path(path)
         MODEL_KINDS.flat_map { |key, kind| symbols_of(key, kind, path) }
                    .sort_by { |s| s[:range][:start][:line] }

@@ -38,6 +38,11 @@ module Syskit
 
     attr_reader :deployed_task
 
+    # Whether the task is one that runs already, that Syskit only reads
+    # from (a configured deployment's +read_only:+ tasks), as Syskit's
+    # argument: false unless set.
+    argument :read_only, default: false
+
     # The name the task goes by before it is deployed: its device's, or
     # its place in a composition (+arm_control_position2twist+).
     def plan_name
@@ -51,7 +56,6 @@ module Syskit
       @children = []
       @child_tasks = []
       @connections = NO_CONNECTIONS
-      @conf = Robot::MasterDeviceInstance::DEFAULT_CONF
       assign_arguments(arguments)
     end
 

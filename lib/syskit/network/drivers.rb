@@ -38,7 +38,7 @@ module Syskit
         arguments = device.driver_arguments
         arguments = requirement.arguments.merge(arguments) unless requirement.arguments.empty?
         task = model.new(arguments)
-        task.conf = requirement.conf
+        Instantiate.assign_conf(task, requirement)
         create_slave_ports(task, device)
         @context.add_task(task, device, requirement)
       end

@@ -36,10 +36,17 @@ module Syskit
           Composition.new(
             composition.name, composition.model.short_name,
             (requirement.to_s if requirement.name && !composition.parent),
-            freeze_plain(composition.arguments.sort.to_h { |k, v| [k.to_s, plain_argument(v)] }),
+            composition_arguments(composition),
             composition.conf, composition.children_by_role.transform_values(&:name).freeze,
             export_entries(composition), composition.parent&.name
           ).freeze
+        end
+
+        # The composition's arguments, defaults included, but its sections
+        # (which the entry has on their own).
+        def composition_arguments(composition)
+          arguments = composition.arguments.except(:conf)
+          freeze_plain(arguments.sort.to_h { |k, v| [k.to_s, plain_argument(v)] })
         end
 
         def export_entries(composition)
@@ -106,6 +113,7 @@ module Syskit
         # An operation's argument as plain data (typed values through their type).
         def plain_argument(value)
           case value
+          when Compat::Roby::DefaultArgument then plain_argument(value.value)
           when Types::StructValue then value.class.type.to_plain(value)
           when Array then value.map { |v| plain_argument(v) }
           when Hash then value.to_h { |k, v| [k.to_s, plain_argument(v)] }

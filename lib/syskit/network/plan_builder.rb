@@ -144,13 +144,24 @@ module Syskit
         end
 
         # The model's static ports, then those the task's configure created.
+        # The state port every task context has (oroGen's extended state
+        # support) is left out unless it is connected, as Syskit's network
+        # views show only connected ports.
         def task_ports(task, static_ports)
-          ports = static_ports[task.model] ||= task.model.ports.each_value.map do |p|
-            port_entry(p)
+          ports = static_ports[task.model] ||= task.model.ports.each_value.filter_map do |p|
+            port_entry(p) unless Orogen::TaskSpec.state_port?(p)
           end.sort_by!(&:name).freeze
-          return ports if task.created_ports.empty?
+          extra = task.created_ports.each_value.map { |p| port_entry(p) }
+          state = task.model.ports[Orogen::TaskSpec::STATE_PORT]
+          extra << port_entry(state) if state && state_port_connected?(task, state)
+          return ports if extra.empty?
 
-          (ports + task.created_ports.each_value.map { |p| port_entry(p) }).sort_by!(&:name).freeze
+          (ports + extra).sort_by!(&:name).freeze
+        end
+
+        def state_port_connected?(task, state)
+          Orogen::TaskSpec.state_port?(state) &&
+            task.connections.any? { |c| c.from_task.equal?(task) && c.from_port.name == state.name }
         end
 
         def device_entry(device, task, paths)

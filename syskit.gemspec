@@ -21,7 +21,7 @@ Gem::Specification.new do |spec|
 
   # The guides (doc/**/*.md) are read at run time too: syskit doc makes a
   # page of each, in the order the README lists them.
-  spec.files = Dir['lib/**/*.rb', 'bundles/**/*', 'templates/**/*', 'bin/*', 'doc/**/*.md', 'README.md',
+  spec.files = Dir['lib/**/*.rb', 'models/**/*', 'templates/**/*', 'bin/*', 'doc/**/*.md', 'README.md',
                    'CHANGELOG.md', 'LICENSE']
   spec.bindir = 'bin'
   spec.executables = ['syskit']

@@ -35,7 +35,8 @@ module Syskit
         end
 
         it('deploys a network with the deployments of its requirements, which merged tasks keep') do
-          group = Syskit::Models::DeploymentGroup.new.use_deployment(@task_m => 'own_probe')
+          group = Syskit::Models::DeploymentGroup.new
+          group.use_deployment(@task_m => 'own_probe')
           @profile.define 'survey', @cmp_m
           assert_can_deploy(@cmp_m.to_instance_requirements.use_deployment_group(group))
           assert_can_deploy(@profile.survey_def, together_with: @task_m.to_instance_requirements.use_deployment_group(group))

@@ -182,14 +182,16 @@ module Syskit
     attr_reader :arguments
     # The requirements (a device action, a composition's child, what
     # InstanceRequirements#instanciate was given) the task was made for
-    # (Syskit's +requirements+); where it stands in the network; where the
-    # requirements of the network's root it belongs to are declared (the
-    # definition).
-    attr_accessor :requirements, :plan_path, :root_location
+    # (Syskit's +requirements+); see #requirements.
+    attr_writer :requirements
+    # Where it stands in the network; where the requirements of the
+    # network's root it belongs to are declared (the definition).
+    attr_accessor :plan_path, :root_location
 
     # Its configuration sections (+task.conf+), an argument as in Syskit:
     # +new(conf: %w[default slow])+ or +task.conf = [...]+ set it.
     argument :conf, default: %w[default].freeze
+
     # What plans it, when it stands for requirements still to be planned
     # (see InstanceRequirements#as_plan).
     attr_accessor :planning_task
@@ -203,6 +205,23 @@ module Syskit
     # component providing +models+.
     def self.create_proxy_task_model(models, component_model: nil, as: nil)
       Models::Placeholder.for(models, component_model: component_model, as: as)
+    end
+
+    # The requirements the task was made for; a task made alone
+    # (+Model.new+) has empty ones, as in Syskit, to which its deployment
+    # hints can be added (see #deployment_hints).
+    def requirements
+      @requirements ||= InstanceRequirements.new
+    end
+
+    # The hints choosing its deployed task (see prefer_deployed_tasks): its
+    # requirements', else those of the compositions it is a child of, as
+    # Syskit merges them.
+    def deployment_hints
+      own = requirements.deployment_hints
+      return own unless own.empty?
+
+      each_parent_task.flat_map(&:deployment_hints).uniq
     end
 
     # Requirements that would give a task like this one: its model, with
@@ -225,7 +244,12 @@ module Syskit
     def abstract?
       return @abstract unless @abstract.nil?
 
-      model.abstract? || requirements&.abstract? || false
+      return true if model.abstract?
+
+      # The requirements of a task made alone require nothing: they do not
+      # make it abstract.
+      requirements = @requirements
+      requirements && !requirements.models.empty? ? requirements.abstract? : false
     end
 
     # Marks the task abstract (or not), whatever its model and

@@ -30,8 +30,12 @@ module Syskit
 
     attr_reader :root, :name, :acronyms, :types, :orogen, :profiles, :problems, :bundles
 
-    # Whether +dir+ is an app (see ROOT_DIRS and ROOT_FILES).
+    # Whether +dir+ is an app (see ROOT_DIRS and ROOT_FILES). The gem itself
+    # never is: its models/ directory is the bundled common_models (see
+    # BundleSearch::BUNDLED), not an app's.
     def self.root?(dir)
+      return false if File.identical?(dir, BundleSearch::BUNDLED.root)
+
       ROOT_DIRS.any? { |d| File.directory?(File.join(dir, d)) } ||
         ROOT_FILES.any? { |f| File.file?(File.join(dir, f)) }
     end
@@ -51,6 +55,8 @@ module Syskit
       inside = File.directory?(path) && find_root(path)
       what = if !File.exist?(path) then 'there is no such directory'
              elsif !File.directory?(path) then 'it is a file, not a directory'
+             elsif File.identical?(path, BundleSearch::BUNDLED.root)
+               "it is the syskit gem itself (its models/ are the gem's own common_models)"
              elsif inside then "it is inside the app at #{inside}"
              else 'it is not a Syskit app'
              end
@@ -200,8 +206,7 @@ module Syskit
     # one).
     def extension_files(name, spec_path)
       beside = File.join(File.dirname(spec_path), "#{name}.rb")
-      own = bundles.reject { |b| b.equal?(BundleSearch::BUNDLED) }
-                   .map { |b| File.join(b.root, 'models', 'orogen', "#{name}.rb") }.select { |p| File.file?(p) }
+      own = bundles.reject { |b| b.equal?(BundleSearch::BUNDLED) }.filter_map { |b| b.file("models/orogen/#{name}.rb") }
       return own if beside.start_with?("#{BUNDLED_MODELS}/") && own.any?
 
       (own + [beside]).uniq.select { |p| File.file?(p) }
@@ -306,7 +311,7 @@ module Syskit
     # it without a require.
     def load_bundled_models
       can = bundles.select { |b| b.name == 'common_models' }
-                   .map { |b| File.join(b.root, 'models', 'devices', 'bus', 'can.rb') }.find { |p| File.file?(p) }
+                   .filter_map { |b| b.file('models/devices/bus/can.rb') }.first
       collect_problems { load_file(can) }
     end
 

@@ -20,8 +20,12 @@ module Syskit
   #   OroGen.gps.Task.with_conf('default', 'rtk').prefer_deployed_tasks(/gps/)
   #   Base.gps_dev                       # a device's driver
   #
-  # A frozen value: every statement returns a changed copy. A profile's
-  # definitions and device actions are requirements with a +name+.
+  # As Syskit's, requirements change: a statement changes the requirements
+  # it is called on and returns them, their deployment hints and group are
+  # theirs to add to, and +dup+ gives a copy to change. Frozen ones (what
+  # models, profiles and injections hold) give a changed copy instead (see
+  # Changes). A profile's definitions and device actions are requirements
+  # with a +name+.
   class InstanceRequirements
     include Statements
     include Readers
@@ -105,9 +109,10 @@ module Syskit
       @arguments = arguments.frozen? ? arguments : arguments.dup.freeze
       @conf = conf&.freeze
       @conf_location = conf_location
-      @deployment_hints = deployment_hints&.freeze
+      @deployment_hints = deployment_hints ? deployment_hints.dup : []
       @deployment = deployment
-      @deployment_group = deployment_group
+      # A group still open to changes is another's: these get their own.
+      @deployment_group = deployment_group&.frozen? ? deployment_group : deployment_group&.dup
       @selections = selections
       @specialization_hints = specialization_hints
       @declared_at = declared_at
@@ -116,6 +121,8 @@ module Syskit
       @doc = doc
       @port_dynamics = port_dynamics
       @open = open
+      # Held, as frozen ones (see Changes#held?): their lists are too.
+      freeze_deployments if open
       extend_readers
     end
 
@@ -182,13 +189,20 @@ module Syskit
       !@conf.nil?
     end
 
+    # The deployed tasks to prefer (see #prefer_deployed_tasks), a list
+    # to add to (Syskit's tests append to it), frozen when the requirements
+    # are held; without hints of their own, the device's (frozen).
     def deployment_hints
-      @deployment_hints || device&.deployment_hints || NO_HINTS
+      own = @deployment_hints
+      return own unless own.empty?
+
+      hints = device&.deployment_hints
+      hints.nil? || hints.empty? ? own : hints.dup.freeze
     end
 
     # Where the deployment hints were given, for errors about them.
     def deployment_hints_location
-      (@deployment_hints ? declared_at : device&.deployment_hints_location) || declared_at
+      (@deployment_hints.empty? ? device&.deployment_hints_location : declared_at) || declared_at
     end
 
     # The deployment given with deployed_as (a device's own when it has one).
@@ -197,9 +211,14 @@ module Syskit
     end
 
     # The deployed tasks these requirements' network may use before the
-    # robot's (Syskit's deployment group, see #use_deployment).
+    # robot's (Syskit's deployment group, see #use_deployment): their own,
+    # to add deployments to, frozen when the requirements are held.
     def deployment_group
-      @deployment_group || Models::DeploymentGroup.empty
+      group = @deployment_group
+      return group || Models::DeploymentGroup.empty if held?
+      return group if group && !group.frozen?
+
+      @deployment_group = group ? group.dup : Models::DeploymentGroup.new
     end
 
     # Each required model, then what they provide.
@@ -277,29 +296,14 @@ module Syskit
     alias inspect to_s
     alias short_name to_s
 
-    # Merges +other+ (a selection for a child) over these requirements (the
-    # child's own): the selection's models, device and service, its
-    # arguments and sections when it gives some, both injections.
-    def merge_selection(other)
-      InstanceRequirements.new(
-        other.raw_models,
-        device: other.device, service: other.service, profile: other.profile, name: other.name,
-        arguments: other.arguments.empty? ? arguments : other.arguments,
-        conf: other.conf_given? ? other.conf : @conf,
-        conf_location: other.conf_given? ? other.conf_location : conf_location,
-        deployment_hints: other.raw_hints || @deployment_hints,
-        deployment: other.deployment || deployment, selections: merged_selections(other),
-        deployment_group: merged_deployment_group(other),
-        specialization_hints: specialization_hints + other.specialization_hints,
-        declared_at: other.declared_at || declared_at, instance: other.instance,
-        port_dynamics: port_dynamics.merge(other.port_dynamics)
-      )
-    end
-
     protected
 
+    # An empty group is no group, whether the requirements made theirs yet.
     def compared
-      (FIELDS - %i[declared_at conf_location doc]).map { |f| instance_variable_get(:"@#{f}") }
+      (FIELDS - %i[declared_at conf_location doc]).map do |f|
+        value = instance_variable_get(:"@#{f}")
+        f == :deployment_group && value&.empty? ? nil : value
+      end
     end
 
     # A definition's or a device's action, by the name of its profile.
@@ -311,35 +315,6 @@ module Syskit
       return "#{service.task_model.name}.#{service.name}_srv" if service
 
       models.map { |m| m.respond_to?(:short_name) ? m.short_name : m.to_s }.join(',')
-    end
-
-    def raw_hints
-      @deployment_hints
-    end
-
-    def raw_models
-      @models
-    end
-
-    def raw_deployment_group
-      @deployment_group
-    end
-
-    private
-
-    def merged_deployment_group(other)
-      return @deployment_group unless other.raw_deployment_group
-      return other.raw_deployment_group unless @deployment_group
-
-      @deployment_group.dup.use_group(other.raw_deployment_group)
-    end
-
-    def merged_selections(other)
-      return selections if other.selections.empty?
-      return other.selections if selections.empty?
-
-      DependencyInjection.of(selections.explicit.merge(other.selections.explicit),
-                             selections.defaults | other.selections.defaults, other.selections.declared_at)
     end
   end
 end

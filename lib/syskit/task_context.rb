@@ -96,12 +96,14 @@ module Syskit
     end
 
     # The hints choosing its deployed task (see prefer_deployed_tasks): its
-    # requirements', else those of the devices it drives.
+    # requirements', else those of the devices it drives, else its
+    # parents' (see AbstractComponent#deployment_hints).
     def deployment_hints
-      own = requirements&.deployment_hints
-      return own if own && !own.empty?
+      own = requirements.deployment_hints
+      return own unless own.empty?
 
-      devices.flat_map(&:deployment_hints).uniq
+      from_devices = devices.flat_map(&:deployment_hints).uniq
+      from_devices.empty? ? super : from_devices
     end
 
     # The event emitted when the task enters the state +name+ (see

@@ -75,12 +75,18 @@ module Syskit
     end
 
     def location_of(exception, path, root = nil)
-      prefixes = [root, *Syskit.app&.bundle_roots].compact.uniq.map { |r| "#{File.expand_path(r)}/" }
+      prefix = root && "#{File.expand_path(root)}/"
       found = (exception.backtrace_locations || []).find do |loc|
         file = loc.absolute_path || loc.path
-        file == path || (prefixes.any? { |prefix| file.start_with?(prefix) } && !file.start_with?(Location::GEM_LIB))
+        file == path || (app_file?(file, prefix) && !file.start_with?(Location::GEM_LIB))
       end
       Location.from(found) || Location.of_exception(exception)
+    end
+
+    # Whether +file+ is under +prefix+ (the root given) or a file of the
+    # active app or its bundles (of the gem's own, its models/ only).
+    def app_file?(file, prefix)
+      (prefix && file.start_with?(prefix)) || Syskit.app&.environment_file?(file)
     end
 
     def syntax_error(exception, path)

@@ -70,6 +70,23 @@ module Syskit
       assert_equal ['tracker.rear -> follower.pose'], connection_lines(plan).uniq
     end
 
+    # A child reached from requirements (+convoy.lead_child+, whose
+    # composition model is the requirements) selects that child's task.
+    def test_a_child_reached_from_requirements_selects_its_task
+      app = chain_app(<<~RUBY)
+        require 'models/compositions/chain'
+        profile 'Base' do
+          convoy = Compositions::Convoy.use('lead.src' => OroGen.rig.Tracker.rear_pose_srv)
+          define 'convoy', convoy.use('tail' => convoy.lead_child)
+        end
+      RUBY
+      lead = Rig::Profiles::Base.convoy_def.lead_child
+      assert_kind_of InstanceRequirements, lead.composition_model
+      plan = plan_of(app, 'convoy_def')
+      assert_equal plan.find_composition('convoy.lead').name, plan.find_composition('convoy').children['tail']
+      assert_equal ['tracker.rear -> follower.pose'], connection_lines(plan).uniq
+    end
+
     def test_a_sibling_s_service_is_selected_through_that_service
       app = chain_app(<<~RUBY, followers: 2)
         require 'models/compositions/chain'

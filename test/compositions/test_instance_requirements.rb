@@ -30,9 +30,19 @@ module Syskit
       assert_equal ['tracker.rear -> follower.pose'], connection_lines(plan_of(app, 'watch_def'))
     end
 
+    # As Syskit's, a child reached from requirements has them as its
+    # composition model; it is the composition's child otherwise.
     def test_the_children_of_requirements
       tracker_app
-      assert_same Rig::Compositions::Watch.pose_child, Rig::Profiles::Base.watch_def.pose_child
+      watch = Rig::Profiles::Base.watch_def
+      child = watch.pose_child
+      assert_same watch, child.composition_model
+      assert_equal 'pose', child.child_name
+      assert_same Rig::Compositions::Watch.pose_child.requirements, child.requirements
+      assert_equal child, watch.find_child('pose')
+      refute_equal Rig::Compositions::Watch.pose_child, child
+      assert_same Rig::Compositions::Watch, Rig::Compositions::Watch.pose_child.composition_model
+      assert_equal child, child.pose_port.component_model
       refute_respond_to Rig::Profiles::Base.tracker_def, :pose_child
     end
 

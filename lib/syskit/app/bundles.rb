@@ -1,17 +1,9 @@
 # frozen_string_literal: true
 
+require 'syskit/app/bundle'
+
 module Syskit
   class App
-    # A bundle: a directory with models/ and config/. An app is the first
-    # bundle of its own list, then come the bundles it depends on, then the
-    # gem's own small common_models (the CAN bus model, the canbus library
-    # and a few typekits), which any real common_models bundle precedes.
-    Bundle = Struct.new(:name, :root) do
-      def to_s
-        "bundle #{name} (#{root})"
-      end
-    end
-
     # Finds the bundles an app depends on, as Rock does: by name, in the
     # directories of SYSKIT_BUNDLE_PATH and ROCK_BUNDLE_PATH (each one a
     # bundle, or a directory of bundles), or by path. An app names them in
@@ -46,8 +38,12 @@ module Syskit
         [found, errors]
       end
 
-      # The gem's own bundle, searched last.
-      BUNDLED = Bundle.new('common_models', File.expand_path('../../../bundles/common_models', __dir__)).freeze
+      # The gem's own bundle, searched last: the models/ directory at the
+      # top of the gem (the CAN bus model, the canbus, iodrivers_base and
+      # logger task libraries and a few typekits), required as Rock's
+      # common_models ('common_models/models/devices/bus/can'). Only that
+      # directory is the bundle's: the rest of the gem is never app code.
+      BUNDLED = Bundle.new('common_models', File.expand_path('../../..', __dir__), dirs: ['models']).freeze
 
       private
 
@@ -109,13 +105,13 @@ module Syskit
         check_entry(entry, location)
         if entry.include?('/')
           root = File.expand_path(entry, from)
-          return Bundle.new(File.basename(root), root) if bundle?(root)
+          return bundle_at(File.basename(root), root) if bundle?(root)
 
           raise not_a_bundle(entry, root, location) if File.directory?(root)
         else
           found = candidates(entry).select { |dir| File.directory?(dir) }
           root = found.find { |dir| bundle?(dir) }
-          return Bundle.new(entry, root) if root
+          return bundle_at(entry, root) if root
           # Rock's common_models: the gem's own small one stands for it.
           return if entry == BUNDLED.name
           raise not_a_bundle(entry, found.first, location) if found.any?
@@ -146,6 +142,12 @@ module Syskit
 
       def candidates(name)
         @dirs.flat_map { |dir| File.basename(dir) == name ? [dir] : [File.join(dir, name)] }
+      end
+
+      # The bundle +name+ at +root+; this gem's own when +root+ is the gem
+      # (a checkout named as a bundle): its models/ only, never its lib/.
+      def bundle_at(name, root)
+        File.identical?(root, BUNDLED.root) ? BUNDLED : Bundle.new(name, root)
       end
 
       def bundle?(dir)

@@ -50,7 +50,7 @@ module Syskit
       # that reading one raised.
       def read_conf_file(model_name)
         file = "#{model_name}.yml"
-        paths = bundle_roots.map { |r| File.join(r, 'config', 'orogen', file) }.select { |p| File.file?(p) }
+        paths = bundles.filter_map { |bundle| bundle.file(File.join('config', 'orogen', file)) }
         paths.reverse.reduce(nil) { |base, path| Config::ConfFile.new(path, base: base) }
       rescue Syskit::Error => e
         e

@@ -29,14 +29,13 @@ module Syskit
 
       # Directories on $LOAD_PATH while the app is active: 'models/devices/x'
       # and 'devices/x' resolve from the app and its bundles (searched
-      # first); 'common_models/models/x' (bundles requiring each other's
-      # files, and the seed's NMEA2000 example) through their parents,
-      # searched last.
+      # first, see Bundle#load_path); 'common_models/models/x' (bundles
+      # requiring each other's files, and the seed's NMEA2000 example)
+      # through their parents, searched last (the gem's own bundle has
+      # none: App::Files#required_file finds its files by name).
       def load_path
-        roots = @app.bundle_roots
-        # A bundle's lib/ holds the Ruby code its models require, as in Rock.
-        first = roots.flat_map { |root| [root, File.join(root, 'models'), File.join(root, 'lib')] }
-        [first, roots.map { |root| File.dirname(root) }.uniq - first]
+        first = @app.bundles.flat_map(&:load_path)
+        [first, @app.bundles.filter_map(&:parent_dir).uniq - first]
       end
 
       # The directories of #load_path while the app is active, in the order
@@ -95,7 +94,7 @@ module Syskit
       # Whether +path+ belongs to the app or one of its bundles (and is
       # forgotten on unload).
       def owned_file?(path)
-        @app.bundle_roots.any? { |root| path.start_with?("#{root}/") }
+        @app.bundles.any? { |bundle| bundle.owns?(path) }
       end
 
       private

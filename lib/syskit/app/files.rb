@@ -66,7 +66,7 @@ module Syskit
           path = File.join(dir, file)
           return path if File.file?(path)
         end
-        nil
+        bundles.lazy.filter_map { |bundle| bundle.named_file(file) }.first
       end
 
       # Records that the code at +location+ requires +path+, a file of the
@@ -103,7 +103,7 @@ module Syskit
           kept = segments.drop(dropped)
           kept.size.downto(2) do |n|
             path = File.join('models', *kept.first(n).map { |s| Naming.underscore(s) })
-            return path if bundle_roots.any? { |r| File.file?(File.join(r, "#{path}.rb")) }
+            return path if bundles.any? { |bundle| bundle.file("#{path}.rb") }
           end
         end
         nil
@@ -205,7 +205,7 @@ module Syskit
       private
 
       def bundle_files(require_path)
-        bundle_roots.map { |root| File.join(root, "#{require_path}.rb") }.select { |file| File.file?(file) }
+        bundles.filter_map { |bundle| bundle.file("#{require_path}.rb") }
       end
 
       # The names Ruby's require may know +file+ by: its real path and its

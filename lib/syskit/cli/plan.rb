@@ -23,8 +23,8 @@ module Syskit
       PROFILE is the profile's name or its end (Live::Base), or the path form
       of gen profile (live/base); Base is Profiles::Base when there is one.
       Without PROFILE, the app's first profile.
-      Without --app, the app containing the current directory, else (in a
-      checkout of syskit) the example app.
+      Without --app, the app containing the current directory (outside an
+      app, the command says so).
 
       --format svg draws the dot graph with graphviz (which must be installed).
       The picture shows the ports the plan connects; --all-ports shows every

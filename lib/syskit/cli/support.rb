@@ -5,8 +5,6 @@ require 'syskit/errors'
 
 module Syskit
   class CLI < Thor
-    GEM_ROOT = File.expand_path('../../..', __dir__)
-
     # What the command classes (syskit, syskit gen, syskit bus) share:
     # finding the app and the profile, and printing errors as
     # `file:line: message` then `  hint: ...`, with Ruby's backtrace only
@@ -81,7 +79,7 @@ module Syskit
         return App.check_root(options[:app]) if options[:app]
 
         found = App.find_root(Dir.pwd)
-        return found if found && !found.start_with?("#{GEM_ROOT}/bundles/")
+        return found if found
 
         raise Error.new("#{Dir.pwd} is not in a Syskit app", hint: "pass --app DIR, or cd into an app; #{App::APP_HINT}")
       end

@@ -27,8 +27,12 @@ module Syskit
       # that is not here.
       def require_instead(name, location)
         current = current_require(name)
-        found = $LOAD_PATH.resolve_feature_path(current)
-        DSL.app!.problems << (found ? loaded_instead(name, current, location) : not_found(name, current, location))
+        app = DSL.app!
+        file = app.required_file(current)
+        found = file || $LOAD_PATH.resolve_feature_path(current)
+        app.problems << (found ? loaded_instead(name, current, location) : not_found(name, current, location))
+        return app.load_file(file) if file
+
         found ? Kernel.require(current) : false
       end
 

@@ -69,7 +69,7 @@ module Syskit
       def origin_of(path)
         return nil unless path
 
-        bundle = app.bundles.find { |b| path.start_with?("#{b.root}/") }
+        bundle = app.bundles.find { |b| b.owns?(path) }
         return 'SYSKIT_OROGEN_PATH' unless bundle
         return nil if bundle.root == app.root
 

@@ -83,7 +83,7 @@ module Syskit
       def location(loc)
         return '' unless loc
 
-        root = site.app.bundle_roots.find { |r| loc.path.start_with?("#{r}/") }
+        root = site.app.bundles.find { |b| b.owns?(loc.path) }&.root
         %(<code class="location">#{h(loc.to_s(root))}</code>)
       end
 

@@ -23,7 +23,7 @@ module Syskit
       def self.find_app(app_dir, pwd: Dir.pwd)
         root = app_dir ? File.expand_path(app_dir, pwd) : Syskit::App.find_root(pwd)
         where = app_dir ? "'#{app_dir}'" : pwd
-        return root if root && root != GEM_ROOT && Syskit::App.root?(root)
+        return root if root && Syskit::App.root?(root)
 
         in_gem = root == GEM_ROOT || "#{File.expand_path(app_dir || pwd)}/".start_with?("#{GEM_ROOT}/")
         what = in_gem ? 'is in the syskit gem itself, not' : 'is not'

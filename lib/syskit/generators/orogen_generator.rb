@@ -85,11 +85,11 @@ module Syskit
       # (require 'common_models/models/orogen/canbus').
       def base_extension(app)
         app.bundles.drop(1).each do |bundle|
-          path = File.join(bundle.root, 'models', 'orogen', "#{library}.rb")
-          next unless File.file?(path)
+          path = bundle.file("models/orogen/#{library}.rb")
+          next unless path
 
           origin = bundle.equal?(Syskit::App::BundleSearch::BUNDLED) ? 'bundled with syskit' : "of #{bundle}"
-          return Base.new(path: path, require_path: "#{File.basename(bundle.root)}/models/orogen/#{library}",
+          return Base.new(path: path, require_path: "#{bundle.require_name}/models/orogen/#{library}",
                           origin: origin)
         end
         nil

@@ -8,11 +8,21 @@ module Syskit
     # profile's device action), when it returns a changed copy. +dup+
     # gives a copy to change. Part of InstanceRequirements.
     module Changes
-      # A copy to change (Syskit's +dup+): its statements change it.
+      # A copy to change (Syskit's +dup+): its statements change it, and
+      # its deployment hints and group are its own.
       def initialize_copy(other)
         super
         @open = false
+        @deployment_hints = @deployment_hints.dup
+        @deployment_group = @deployment_group&.dup
         extend_readers
+      end
+
+      # Frozen with their deployment hints and group: requirements a model
+      # or a profile holds are not changed through them.
+      def freeze
+        freeze_deployments
+        super
       end
 
       # Whether statements give a changed copy rather than changing these
@@ -49,11 +59,17 @@ module Syskit
         return copy(**changes) if held?
 
         changes.each do |field, value|
-          value = value.dup.freeze if !value.frozen? && %i[arguments models conf deployment_hints].include?(field)
+          value = value.dup.freeze if !value.frozen? && %i[arguments models conf].include?(field)
+          value = value.dup if field == :deployment_hints
           instance_variable_set(:"@#{field}", value)
         end
         extend_readers
         self
+      end
+
+      def freeze_deployments
+        @deployment_hints.freeze
+        @deployment_group&.freeze
       end
 
       def extend_readers

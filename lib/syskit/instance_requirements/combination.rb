@@ -4,7 +4,7 @@ module Syskit
   class InstanceRequirements
     # What Syskit's requirements answer about the components that fill
     # them, and how two requirements combine: +fullfilled_model+, +merge+,
-    # +bind+/+try_bind+. Part of InstanceRequirements.
+    # +merge_selection+, +bind+/+try_bind+. Part of InstanceRequirements.
     module Combination
       # Syskit's summary of what fills these requirements: [the component
       # model (Syskit::Component when only services are required), the
@@ -53,6 +53,25 @@ module Syskit
         task
       end
 
+      # Merges +other+ (a selection for a child) over these requirements (the
+      # child's own): the selection's models, device and service, its
+      # arguments, sections and hints when it gives some, both injections
+      # and deployment groups.
+      def merge_selection(other)
+        InstanceRequirements.new(
+          other.raw_models,
+          device: other.device, service: other.service, profile: other.profile, name: other.name,
+          arguments: other.arguments.empty? ? arguments : other.arguments,
+          conf: other.conf_given? ? other.conf : @conf,
+          conf_location: other.conf_given? ? other.conf_location : conf_location,
+          deployment_hints: merged_hints(other), deployment: other.deployment || deployment,
+          selections: merged_selections(other), deployment_group: merged_deployment_group(other),
+          specialization_hints: specialization_hints + other.specialization_hints,
+          declared_at: other.declared_at || declared_at, instance: other.instance,
+          port_dynamics: port_dynamics.merge(other.port_dynamics)
+        )
+      end
+
       # These requirements as an action (see Actions::Models::Action).
       def to_action_model(doc = nil)
         Actions::Models::Action.new(self, doc)
@@ -62,6 +81,40 @@ module Syskit
 
       def abstract_flag
         @abstract
+      end
+
+      def raw_hints
+        @deployment_hints
+      end
+
+      def raw_models
+        @models
+      end
+
+      def raw_deployment_group
+        @deployment_group
+      end
+
+      private
+
+      def merged_hints(other)
+        other.raw_hints.empty? ? @deployment_hints : other.raw_hints
+      end
+
+      def merged_deployment_group(other)
+        theirs = other.raw_deployment_group
+        return @deployment_group if theirs.nil? || theirs.empty?
+        return theirs if @deployment_group.nil? || @deployment_group.empty?
+
+        @deployment_group.dup.use_group(theirs)
+      end
+
+      def merged_selections(other)
+        return selections if other.selections.empty?
+        return other.selections if selections.empty?
+
+        DependencyInjection.of(selections.explicit.merge(other.selections.explicit),
+                               selections.defaults | other.selections.defaults, other.selections.declared_at)
       end
     end
   end

@@ -129,15 +129,16 @@ module Syskit
         )
       end
 
-      # The child +name+ of the composition model (as +Cmp.use(...).x_child+);
-      # an ArgumentError when the requirements are not a composition's.
+      # The child +name+ of the composition model (as +Cmp.use(...).x_child+),
+      # reached from these requirements (its +composition_model+, as in
+      # Syskit); an ArgumentError when they are not a composition's.
       def find_child(name)
         unless composition?
           raise DeclarationError.new("#{self} is not a composition: it has no child '#{name}'",
                                      location: Location.of_caller, hint: 'ask a composition model for its children')
         end
 
-        component_model.find_child(name)
+        component_model.find_child(name)&.attach(self)
       end
 
       # Enumerates the children of the composition model.

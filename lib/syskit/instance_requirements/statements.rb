@@ -4,9 +4,9 @@ module Syskit
   class InstanceRequirements
     # The statements that say what is asked of requirements, as profiles,
     # compositions and tests write them (+with_conf+, +with_arguments+,
-    # +use+, +prefer_deployed_tasks+, +deployed_as+...): requirements are
-    # frozen, each statement returns a changed copy (see
-    # InstanceRequirements#copy). Part of InstanceRequirements.
+    # +use+, +prefer_deployed_tasks+, +deployed_as+...): each changes the
+    # requirements and returns them, or a changed copy of frozen ones (see
+    # Changes#change). Part of InstanceRequirements.
     module Statements
       # Configuration sections, replacing ['default'] as in Syskit;
       # +location+: where they are chosen, for errors about them.
@@ -35,7 +35,7 @@ module Syskit
                                      location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
         end
 
-        change(deployment_hints: deployment_hints + hints, declared_at: Location.of_caller)
+        change(deployment_hints: deployment_hints | hints, declared_at: Location.of_caller)
       end
 
       # A deployment of its own (see Robot::MasterDevice#deployed_as).

@@ -121,9 +121,11 @@ module Syskit
       # Whether this model is +model+ (or a submodel of it) or provides it;
       # given a list, whether it fullfills each of them. A placeholder is
       # fullfilled by what provides all it stands for, a specialization by
-      # a model of its task model having its required dynamic services.
+      # a model of its task model having its required dynamic services;
+      # requirements, by one that fullfills each model they require.
       def fullfills?(model)
         return model.all? { |m| fullfills?(m) } if model.is_a?(Array)
+        return fullfills?(model.models) if model.is_a?(InstanceRequirements)
         return self <= model || fullfills_placeholder_or_specialization?(model) if model.is_a?(Class)
         return self <= model if model.is_a?(Compat::Roby::TaskServiceModel)
 

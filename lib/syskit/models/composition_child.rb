@@ -54,6 +54,25 @@ module Syskit
                                                                            parent_model: parent_model)
       end
 
+      # The same child, reached from +owner+ (requirements on its
+      # composition model: +Cmp.use(...).x_child+), which is then its
+      # #composition_model, as Syskit's +attach+.
+      def attach(owner)
+        attached = clone(freeze: false)
+        attached.instance_variable_set(:@composition_model, owner)
+        # Its ports and children are its own, reached from +owner+ too.
+        attached.instance_variable_set(:@ports, nil)
+        attached.instance_variable_set(:@children, nil)
+        attached
+      end
+
+      # The same role of the same composition model (or requirements), as
+      # Syskit compares children.
+      def ==(other)
+        other.instance_of?(self.class) && other.composition_model == composition_model &&
+          other.child_name == child_name
+      end
+
       # As a selection (+use('x' => first_child)+), the child itself, with
       # no particular service (see ChildReference).
       def referenced_child

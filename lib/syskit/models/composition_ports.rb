@@ -98,7 +98,7 @@ module Syskit
       # Whether +port+ is a port of a child of this composition (or of one
       # of the models it refines).
       def child_port?(port)
-        port.respond_to?(:composition_model) && self <= port.composition_model && !port.child.reached_through
+        port.respond_to?(:composition_model) && fullfills?(port.composition_model) && !port.child.reached_through
       end
 
       # Syskit's +connect(out_port => in_port, ...)+ form.

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/models/deployment_group/lookups'
+
 module Syskit
   module Models
     # Syskit's deployment groups: the deployed tasks a network may use,
@@ -12,6 +14,8 @@ module Syskit
     # The group of requirements or of a profile deploys the tasks of
     # their network before the robot's (see Network::Deploy).
     class DeploymentGroup
+      include Lookups
+
       # Options of use_deployment that only matter to a running system
       # (how processes are started): accepted, no effect on plans. +on:+,
       # the process server a deployment runs on, is recorded (see
@@ -35,6 +39,7 @@ module Syskit
         @deployments = []
         @deployed_tasks = {}
         @process_server_names = {}
+        @lookups = {}
       end
 
       # The name of the process server deployment +name+ runs on, as its
@@ -52,7 +57,8 @@ module Syskit
       #   use_deployment 'gps_ublox::Task' => 'gps'       # the same, by model name
       #
       # Where and how processes start (+on:+, +valgrind:+, ...) does not
-      # change a plan: those options are accepted and ignored.
+      # change a plan: those options are accepted and ignored. As each
+      # statement of a group, it returns the deployments it added.
       def use_deployment(*specs, prefix: nil, **options)
         location = Location.of_caller
         # Ruby passes a trailing `Model => 'name'` as keywords. Most
@@ -66,7 +72,6 @@ module Syskit
           specs.each { |spec| add_spec(spec, prefix, location) }
           mappings.each { |spec, value| add_mapping(spec, value, prefix, location) }
         end
-        self
       end
 
       # Every deployment an .orogen file declares (Syskit's
@@ -80,7 +85,6 @@ module Syskit
             library.deployments.each_value { |deployment| add(deployment, location) }
           end
         end
-        self
       end
 
       # Tasks started outside of Syskit's control, integrated in the
@@ -92,7 +96,6 @@ module Syskit
         mappings = mappings.merge(options.reject { |key, _| key.is_a?(Symbol) })
         check_options(options.keys.grep(Symbol), location)
         running_on(options[:on], location) { mappings.each { |model, name| add_mapping(model, name, nil, location) } }
-        self
       end
 
       # Ruby task contexts (see RubyTaskContext), each deployed as a task of
@@ -107,7 +110,6 @@ module Syskit
             add_mapping(model, name, nil, location)
           end
         end
-        self
       end
 
       # Adds the deployed tasks of +group+ that this one does not have (a
@@ -126,53 +128,26 @@ module Syskit
         @deployments.empty?
       end
 
+      # Frozen with what it lists (its lookups are still computed).
+      def freeze
+        @deployments.freeze
+        @deployed_tasks.freeze
+        @process_server_names.freeze
+        super
+      end
+
       # A copy, to which statements add without changing this group.
       def initialize_copy(other)
         super
         @deployments = @deployments.dup
         @deployed_tasks = @deployed_tasks.dup
         @process_server_names = @process_server_names.dup
-        @candidates = nil
-        @by_model = nil
+        @lookups = {}
       end
 
       # Deployed tasks by name.
       def deployed_tasks
         @deployed_tasks.values
-      end
-
-      # The deployed tasks that can run a task of +model+ (their model is it
-      # or a subclass of it), computed once per model: indexed by name for
-      # prefer_deployed_tasks('name'), listed by name when they must be
-      # scanned (regexp hints) or shown (errors).
-      class Candidates
-        attr_reader :by_name
-
-        def initialize(groups)
-          @by_name = {}
-          groups.each { |tasks| tasks.each { |t| @by_name[t.name] = t } }
-        end
-
-        def empty?
-          by_name.empty?
-        end
-
-        def list
-          @list ||= by_name.values.sort_by(&:name).freeze
-        end
-      end
-
-      def candidates_for(model)
-        @candidates ||= {}
-        @candidates[model] ||= begin
-          @by_model ||= deployed_tasks.group_by(&:model)
-          Candidates.new(@by_model.filter_map { |m, tasks| tasks if m <= model })
-        end
-      end
-
-      # Deployed tasks whose model is +model+ or a subclass of it, by name.
-      def deployed_tasks_for(model)
-        candidates_for(model).list
       end
 
       def to_s
@@ -189,12 +164,14 @@ module Syskit
       end
 
       # Runs a statement's block, recording +on+ (a process server name, or
-      # nil) for the deployments it adds.
+      # nil) for the deployments it adds; returns them.
       def running_on(on, location)
         check_process_server(on, location) if on
         before = @deployments.size
         yield
-        @deployments.drop(before).each { |d| @process_server_names[d.name] = on.to_s } if on
+        added = @deployments.drop(before)
+        added.each { |d| @process_server_names[d.name] = on.to_s } if on
+        added
       end
 
       # Groups of profiles and requirements take +on:+ as given; a robot's
@@ -217,9 +194,8 @@ module Syskit
       end
 
       def add(deployment, location)
-        @candidates = nil
-        @by_model = nil
         @deployments << deployment
+        @lookups.clear
         deployment.task_activities.each do |task|
           if (other = @deployed_tasks[task.name])
             raise DeploymentError.new(

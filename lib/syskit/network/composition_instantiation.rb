@@ -63,7 +63,7 @@ module Syskit
       def waits_for_sibling?(composition, selection)
         references(selection).any? do |ref|
           ref = ref.referenced_child.outermost_child
-          owner = @building.reverse.find { |c| c.model <= ref.composition_model }
+          owner = @building.reverse.find { |c| c.model.fullfills?(ref.composition_model) }
           owner.equal?(composition) && !composition.has_role?(ref.child_name)
         end
       end
@@ -142,7 +142,7 @@ module Syskit
           missing_child(child, owner)
         end
 
-        @building.reverse.find { |c| c.model <= child.composition_model } ||
+        @building.reverse.find { |c| c.model.fullfills?(child.composition_model) } ||
           raise(NetworkError.new("#{child} is selected, but no enclosing composition has that child",
                                  location: child.declared_at, hint: 'select a child of an enclosing composition'))
       end

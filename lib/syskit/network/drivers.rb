@@ -26,7 +26,7 @@ module Syskit
       def instantiate(requirement)
         device = requirement.device
         resolve(device)
-        model = device.driver_model
+        model = device.driver_model.component_model
         services = model.driver_services_for(device.model)
         if services.empty?
           raise NetworkError.new("#{model.name} has no driver service for #{device.model}, so #{device} " \

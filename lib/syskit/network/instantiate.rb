@@ -192,9 +192,11 @@ module Syskit
         )
       end
 
+      # The sections and the arguments given (not those binding the device).
       def describe_use(requirements)
         parts = ["sections #{requirements.conf.join(', ')}"]
-        parts << "arguments #{requirements.arguments}" unless requirements.arguments.empty?
+        given = requirements.arguments.reject { |_, value| value.equal?(requirements.device) }
+        parts << "arguments #{given}" unless given.empty?
         parts.join(' and ')
       end
 
@@ -247,7 +249,7 @@ module Syskit
         device = robot.add_device(Robot::MasterDeviceInstance, srv.driven_device_model,
                                   "#{srv.name}_stub#{robot.each_master_device.count}",
                                   using: model, options: {}, location: requirements.declared_at)
-        device.driver_model = model
+        device.driver_model = srv
         device_task(requirements, device, model: model)
       end
 

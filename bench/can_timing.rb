@@ -12,6 +12,7 @@ require 'rbconfig'
 require 'tmpdir'
 require 'syskit'
 require 'syskit/can/timing'
+require_relative 'growth'
 
 module Syskit
   module Bench
@@ -145,12 +146,13 @@ module Syskit
         print_exponents(io, results)
       end
 
-      # log2(t(2n) / t(n)): 1.0 is linear, 2.0 quadratic.
+      # log(t(m) / t(n)) / log(m / n) between consecutive sizes.
       def print_exponents(io, results)
-        pairs = results.each_cons(2).map do |(small, a), (large, b)|
-          "#{small} -> #{large} #{format('%.2f', Math.log(b[:time] / a[:time]) / Math.log(large.to_f / small))}"
+        exponents = results.each_cons(2).to_h do |(small, a), (large, b)|
+          ["#{small} -> #{large}", Growth.exponent(small, a[:time], large, b[:time])]
         end
-        io.puts "  scaling exponent (1.0 is linear, 2.0 quadratic): #{pairs.join(', ')}"
+        pairs = exponents.map { |name, e| "#{name} #{format('%.2f', e)}" }
+        io.puts "  scaling exponent (1.0 is linear, 2.0 quadratic): #{pairs.join(', ')}; #{Growth.verdict(exponents)}"
       end
 
       def print_targets(io, in_process, process)

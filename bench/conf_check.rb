@@ -12,6 +12,7 @@ require 'fileutils'
 require 'open3'
 require 'rbconfig'
 require 'tmpdir'
+require_relative 'growth'
 
 module Syskit
   module Bench
@@ -34,7 +35,9 @@ module Syskit
         times.each do |n, (s, bytes)|
           io.puts format('  %<n>10d  %<mb>7.1f  %<s>7.2f', n: n, mb: bytes / 1e6, s: s)
         end
-        io.puts "  fitted scaling exponent (1.0 is linear, 2.0 quadratic): #{format('%.2f', exponent(times))}"
+        fitted = exponent(times)
+        io.puts "  fitted scaling exponent (1.0 is linear, 2.0 quadratic): #{format('%.2f', fitted)}; " \
+                "#{Growth.verdict('fitted' => fitted)}"
         largest, (seconds, _bytes) = times.max_by(&:first)
         io.puts format('  %<n>d properties: %<s>.2f s, target %<t>.1f s  %<ok>s',
                        n: largest, s: seconds, t: TARGET, ok: seconds < TARGET ? 'ok' : 'SLOW')

@@ -16,15 +16,46 @@ require 'tmpdir'
 require_relative 'synthetic_app'
 require_relative 'worker'
 require_relative 'startup'
+require_relative 'growth'
+require_relative 'replay'
+require_relative 'can_timing'
+require_relative 'conf_check'
 
 module Syskit
+  # rake bench: see the top of this file.
   module Bench
+    # The parts of `rake bench`, in the order they run; `rake bench
+    # ONLY=replay,startup` (or SYSKIT_BENCH_ONLY) runs some of them.
+    PARTS = {
+      'startup' => -> { Startup.run },
+      'generation' => -> { Generation.run },
+      'compositions' => -> { Generation.run(compositions: true) },
+      'replay' => -> { Replay.run },
+      'timing' => -> { CanTiming.run },
+      'conf' => -> { ConfCheck.run }
+    }.freeze
+
+    # The parts named in +only+ (comma-separated), all without it.
+    def self.parts(only)
+      return PARTS if only.nil? || only.empty?
+
+      names = only.split(',').map(&:strip)
+      unknown = names - PARTS.keys
+      abort "rake bench: unknown part(s) #{unknown.join(', ')}; the parts: #{PARTS.keys.join(', ')}" if unknown.any?
+      PARTS.slice(*names)
+    end
+
     # Runs the generation benchmark and prints its table.
     module Generation
       SIZES = (ENV['SYSKIT_BENCH_SIZES'] || '1000,2000,5000,10000').split(',').map { |s| Integer(s) }
-      # The whole `syskit plan --format json` process on the largest robot
-      # without compositions, in seconds.
-      PLAN_TARGET = 0.6
+      # The whole `syskit plan --format json` process on robots without
+      # compositions, in seconds, by devices (issue 40).
+      PLAN_TARGETS = { 1000 => 0.2, 10_000 => 1.0 }.freeze
+      # Objects allocated per device while loading and per task by the
+      # first generation of a process (the slope between the smallest and
+      # largest robots), as measured when issue 40 was filed (commit
+      # 7d54c4f, the same measure); its target is half of each.
+      OBJECTS_BEFORE = { 'load objects per device' => 83.7, 'generate objects per task' => 63.7 }.freeze
       PHASES = Worker::PHASES
       RENDERERS = Worker::RENDERERS.keys
       # Each size's worker is asked for ROUNDS rounds of runs, in turn, and
@@ -54,17 +85,44 @@ module Syskit
         end
         print_table(out, rows)
         print_exponents(out, rows)
-        print_target(out, rows) unless compositions
+        unless compositions
+          print_targets(out, rows)
+          print_objects(out, rows)
+        end
         rows
       end
 
-      def print_target(out, rows)
-        largest = rows.max_by { |r| r['devices'] }
-        out.puts format('syskit plan --format json of %<n>s devices, whole process: %<s>.2f s (CPU %<cpu>.2f s), ' \
-                        'target %<t>.1f s: %<ok>s; syskit check: %<check>.2f s (CPU %<check_cpu>.2f s)',
-                        n: delimited(largest['devices']), s: largest['process'], cpu: largest['process cpu'],
-                        t: PLAN_TARGET, ok: largest['process'] < PLAN_TARGET ? 'ok' : 'SLOWER',
-                        check: largest['check'], check_cpu: largest['check cpu'])
+      # The whole processes of the sizes that have a target.
+      def print_targets(out, rows)
+        rows.sort_by { |r| r['devices'] }.each do |row|
+          target = PLAN_TARGETS[row['devices']]
+          next unless target
+
+          out.puts format('syskit plan --format json of %<n>s devices, whole process: %<s>.2f s (CPU %<cpu>.2f s), ' \
+                          'peak RSS %<rss>.0f MB, target %<t>.1f s: %<ok>s; syskit check: %<check>.2f s ' \
+                          '(CPU %<check_cpu>.2f s)',
+                          n: delimited(row['devices']), s: row['process'], cpu: row['process cpu'],
+                          rss: row['rss_mb'], t: target, ok: row['process'] < target ? 'ok' : 'SLOWER',
+                          check: row['check'], check_cpu: row['check cpu'])
+        end
+      end
+
+      # Objects allocated per device (loading) and per task (generating),
+      # in a fresh process as `syskit plan` allocates them: the slope
+      # between the smallest and the largest robot, so that what every run
+      # allocates whatever the robot is left out.
+      def print_objects(out, rows)
+        small, large = rows.minmax_by { |r| r['devices'] }
+        return if small.equal?(large)
+
+        { 'load objects per device' => %w[load_objects devices],
+          'generate objects per task' => %w[first_generate_objects tasks] }.each do |what, (objects, per)|
+          slope = (large[objects] - small[objects]).to_f / (large[per] - small[per])
+          before = OBJECTS_BEFORE.fetch(what)
+          out.puts format('%<what>s: %<slope>.1f (issue 40: %<before>.1f, target %<target>.1f): %<ok>s',
+                          what: what, slope: slope, before: before, target: before / 2,
+                          ok: slope <= before / 2 ? 'ok' : 'MORE')
+        end
       end
 
       # One worker per size (its own process: its peak RSS is its own),
@@ -104,7 +162,12 @@ module Syskit
         PROCESS_RUNS.times do |i|
           apps.each do |n, app_dir|
             row = rows[n]
-            row['load'] = [row['load'], load_time(app_dir)].min unless i.zero?
+            # The worker's own load compiled the app's files (see
+            # ISeqCache); these read them back, as every later run does.
+            load, objects, generate_objects = load_time(app_dir)
+            row['load'] = i.zero? ? load : [row['load'], load].min
+            row['load_objects'] = i.zero? ? objects : [row['load_objects'], objects].min
+            row['first_generate_objects'] = generate_objects
             { 'process' => %w[plan --format json], 'check' => %w[check] }.each do |key, command|
               wall, cpu = process_time(app_dir, command)
               row[key] = [row[key], wall].compact.min
@@ -116,7 +179,7 @@ module Syskit
 
       def load_time(app_dir)
         worker = Worker.new(app_dir, eviction_mb: EVICTION_MB)
-        worker.ask('loaded')['load']
+        worker.ask('loaded').values_at('load', 'load_objects', 'first_generate_objects')
       ensure
         worker&.stop
       end
@@ -134,13 +197,19 @@ module Syskit
          (after.cutime - before.cutime) + (after.cstime - before.cstime)]
       end
 
-      COLUMNS = [['devices', 'devices', '%d'], ['tasks', 'tasks', '%d'], %w[runs runs %d], ['load', 'load s', '%.3f']] +
+      COLUMNS = [['devices', 'devices', '%d'], ['tasks', 'tasks', '%d'], %w[runs runs %d], ['load', 'load s', '%.3f'],
+                 ['load_objects', 'load objects', '%d']] +
                 PHASES.map { |p| [p, p, '%.4f'] } +
                 [['generate', 'generate s', '%.3f'], ['gc', 'GC s (mean)', '%.3f'], %w[objects objects %d],
-                 ['filters', 'filters s', '%.4f'],
+                 ['first_generate_objects', 'first objects', '%d'], ['filters', 'filters s', '%.4f'],
                  ['json', 'json s', '%.3f'],
                  ['text', 'text s', '%.3f'], ['dot', 'dot s', '%.3f'], ['rss_mb', 'peak RSS MB', '%.0f'],
                  ['process', 'plan process s', '%.2f'], ['check', 'check process s', '%.2f']].freeze
+      # The figures whose growth is printed, from memory (the CPU caches
+      # emptied before each phase) and back to back.
+      COLD = (PHASES + %w[filters] + RENDERERS).map { |k| "cold #{k}" }.freeze
+      WARM = (%w[load load_objects] + PHASES + ['generate', 'generate without GC', 'objects', 'first_generate_objects',
+                                                'filters'] + RENDERERS + %w[process check]).freeze
 
       def print_table(out, rows)
         cells = rows.map { |r| COLUMNS.map { |key, _, fmt| format(fmt, r.fetch(key)) } }
@@ -156,24 +225,24 @@ module Syskit
       # algorithm scales. Then back to back, as measured in the table: a
       # 1,000-device network stays in the caches from one run to the next,
       # a 10,000-device one does not, and every memory access shows it.
+      # Each says whether it is linear (see Growth; the whole processes
+      # start with the same fixed start-up, so they grow less than linearly).
       def print_exponents(out, rows)
         rows.sort_by { |r| r['devices'] }.each_cons(2) do |small, large|
           next if small['devices'] < 1000
 
           out.puts "scaling exponent #{delimited(small['devices'])} -> #{delimited(large['devices'])} devices " \
                    '(1.0 is linear, 2.0 quadratic)'
-          cold = (PHASES + %w[filters] + RENDERERS).map { |k| "cold #{k}" }
-          out.puts "  each phase from memory (CPU caches emptied first): #{exponents(small, large, cold)}"
-          warm = %w[load] + PHASES + ['generate', 'generate without GC', 'objects', 'filters'] + RENDERERS
-          out.puts "  back to back: #{exponents(small, large, warm)}"
+          out.puts "  each phase from memory (CPU caches emptied first): #{exponents(small, large, COLD)}"
+          out.puts "  back to back: #{exponents(small, large, WARM)}"
         end
       end
 
       def exponents(small, large, keys)
-        factor = Math.log10(large['devices'].to_f / small['devices'])
-        keys.map do |k|
-          "#{k.delete_prefix('cold ')} #{format('%.2f', Math.log10(large[k] / small[k].to_f) / factor)}"
-        end.join(', ')
+        found = keys.to_h do |k|
+          [k.delete_prefix('cold '), Growth.exponent(small['devices'], small[k], large['devices'], large[k])]
+        end
+        "#{found.map { |k, e| "#{k} #{format('%.2f', e)}" }.join(', ')}; #{Growth.verdict(found)}"
       end
 
       def delimited(number)
@@ -184,28 +253,21 @@ module Syskit
 end
 
 if $PROGRAM_NAME == __FILE__
+  parts = Syskit::Bench.parts(ENV['ONLY'] || ENV.fetch('SYSKIT_BENCH_ONLY', nil))
   # Whole processes are timed as users start them, without Bundler: under
   # `bundle exec rake bench` each would inherit its RUBYOPT (-rbundler/setup)
   # and load Bundler first (0.15 s more for every one, ruby -e 1 included).
   ENV.replace(Bundler.unbundled_env) if defined?(Bundler)
-  puts "machine: #{Syskit::Bench::Startup.machine}"
-  Syskit::Bench::Startup.run
-  puts
-  Syskit::Bench::Generation.run
-  puts
-  Syskit::Bench::Generation.run(compositions: true)
-  replay = File.join(__dir__, 'replay.rb')
-  if File.file?(replay)
-    require replay
-    puts
-    Syskit::Bench::Replay.run if defined?(Syskit::Bench::Replay)
+  # The compiled code of the gem and of the bench apps (see ISeqCache), in
+  # a cache of this run's own: the apps are thrown away at the end.
+  Dir.mktmpdir('syskit-bench-cache') do |cache|
+    ENV['SYSKIT_CACHE_DIR'] = cache
+    Syskit::ISeqCache.install
+    puts "machine: #{Syskit::Bench::Startup.machine}"
+    parts.each_value do |part|
+      part.call
+      puts
+    end
   end
-  require_relative 'can_timing'
-  puts
-  Syskit::Bench::CanTiming.run
-  require_relative 'conf_check'
-  puts
-  Syskit::Bench::ConfCheck.run
-  puts
   puts "load average at the end: #{Syskit::Bench::Startup.load_average}"
 end

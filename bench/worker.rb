@@ -56,6 +56,9 @@ module Syskit
           @app = App.new(app_dir)
           @loaded = measure { @app.load!(robots: ['default']) }
           @profile = @app.profiles.values.first
+          # The first generation of the process, as `syskit plan` runs it
+          # (later runs find the models' caches filled).
+          @first = measure(nil, gc_first: false) { Network::Generator.plan_profile(@app, @profile) }
           @eviction_mb = eviction_mb
         end
 
@@ -70,9 +73,10 @@ module Syskit
           exit!(0)
         end
 
-        # How long loading took, and the objects it allocated.
+        # How long loading took, and the objects it and the first
+        # generation allocated.
         def loaded
-          { 'load' => @loaded[0], 'load_objects' => @loaded[1] }
+          { 'load' => @loaded[0], 'load_objects' => @loaded[1], 'first_generate_objects' => @first[1] }
         end
 
         # Generation and rendering, at least once and for at least +seconds+.
@@ -120,9 +124,10 @@ module Syskit
         end
 
         # Seconds, allocated objects, and seconds of garbage collection
-        # (counted by Ruby in whole milliseconds).
-        def measure(before = nil)
-          GC.start
+        # (counted by Ruby in whole milliseconds); after a full collection
+        # unless +gc_first+ is false.
+        def measure(before = nil, gc_first: true)
+          GC.start if gc_first
           before&.call
           objects = GC.stat(:total_allocated_objects)
           gc = GC.stat(:time)

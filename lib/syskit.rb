@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require 'syskit/version'
+require 'syskit/iseq_cache'
 require 'syskit/errors'
 require 'syskit/model_errors'
 require 'syskit/port_connection_check'

@@ -118,20 +118,23 @@ module Syskit
       model.required_dynamic_services.each { |srv| yield srv.bind(self) }
     end
 
-    # The compositions this task is a child of (Roby's +each_parent_task+).
+    # The compositions this task is a child of (Roby's +each_parent_task+),
+    # in the order they became its parents.
     def each_parent_task(&)
       return enum_for(__method__) unless block_given?
 
-      (@parent_tasks || []).each(&)
+      @parent_tasks&.each_key(&)
     end
 
-    # Records +composition+ as a parent (see Composition#add_child).
+    # Records +composition+ as a parent (see Composition#add_child). Kept
+    # by identity in a hash: a task all compositions share (merged into
+    # one) has as many parents as there are compositions.
     def add_parent_task(composition)
-      (@parent_tasks ||= []) << composition unless @parent_tasks&.any? { |p| p.equal?(composition) }
+      (@parent_tasks ||= {}.compare_by_identity)[composition] = true
     end
 
     def remove_parent_task(composition)
-      @parent_tasks&.delete_if { |p| p.equal?(composition) }
+      @parent_tasks&.delete(composition)
     end
   end
 

@@ -44,8 +44,18 @@ module Syskit
     end
 
     # Paths are deduplicated: thousands of declarations share a few files.
+    # A chain of DSL calls on one line (+device(...).can_id(...).period(...)+)
+    # shares one Location: the last one made is given again for the same
+    # line (Locations are frozen values).
     def self.from(loc)
-      new(-(loc.absolute_path || loc.path), loc.lineno) if loc
+      return unless loc
+
+      path = loc.absolute_path || loc.path
+      lineno = loc.lineno
+      last = @last
+      return last if last && last.lineno == lineno && last.path == path
+
+      @last = new(-path, lineno).freeze
     end
 
     # The path relative to +root+ (by default the loaded app's) when it is

@@ -52,7 +52,7 @@ module Syskit
 
     def initialize(task)
       @task = task
-      @operation_calls = []
+      @operation_calls = NO_CALLS
     end
 
     def properties
@@ -105,6 +105,7 @@ module Syskit
     private
 
     def call_operation(name, args)
+      @operation_calls = [] if @operation_calls.frozen?
       @operation_calls << OperationCall.new(name, args.freeze)
       nil
     end

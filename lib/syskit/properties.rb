@@ -32,7 +32,11 @@ module Syskit
       # The properties of +task+ (nil: of no task, as a configuration
       # section is checked on), at their initial values.
       def initial(task = nil)
-        new(task, task_model.property_declarations.transform_values { |d| Property.new(d, task_model, task) })
+        properties = {}
+        task_model.property_declarations.each do |name, declaration|
+          properties[name.to_s] = Property.new(declaration, task_model, task)
+        end
+        new(task, properties)
       end
 
       # Defines +name+, +name=+, +raw_name+ and +raw_name=+, unless taken.
@@ -63,11 +67,12 @@ module Syskit
     # The task they are the properties of.
     attr_reader :task
 
-    # +properties+: Property objects by name. On Properties itself (not
-    # the class of a task model) the accessors are made for these.
+    # +properties+: Property objects by name (strings; see .initial). On
+    # Properties itself (not the class of a task model) the accessors are
+    # made for these.
     def initialize(task, properties)
       @task = task
-      @properties = properties.transform_keys(&:to_s)
+      @properties = properties
       return unless instance_of?(Properties)
 
       @properties.each_key { |name| singleton_class.define_accessors(name) }

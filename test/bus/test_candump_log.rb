@@ -164,6 +164,27 @@ module Syskit
         assert_operator fast[8], :>, 100, 'some lines are malformed'
       end
 
+      # The reader takes the log CandumpLog::CHUNK bytes at a time: a line
+      # the end of a chunk cuts (a frame read by position, a remote
+      # request, another interface, a malformed or overlong line) counts
+      # as read whole, wherever the cut falls in it.
+      def test_lines_cut_by_the_end_of_a_chunk_are_read_whole
+        specials = ['(1436509053.500000) can0 18FF0001#0102', '(1436509053.500001) can0 123#R',
+                    '(1436509053.500002) can1 123#00', '(1436509053.5000', 'x' * 5000,
+                    '(1436509053.500003) can0 7FF##1DEADBEEF']
+        fast_line = "(1436509053.000000) can0 123#0102\n"
+        filler = fast_line * ((CandumpLog::CHUNK - 6000) / fast_line.size)
+        specials.each do |special|
+          [1, 2, 10, special.size / 2, special.size - 1, special.size, special.size + 1].each do |inside|
+            # The special line starts +inside+ bytes before the chunk ends,
+            # after a malformed line that pads the filler up to there.
+            pad = CandumpLog::CHUNK - inside - filler.size - 1
+            text = "#{filler}#{'x' * pad}\n#{special}\n(1436509053.900000) can0 123#01\n"
+            assert_equal summary(*read_frames(text)), summary(*read_fast(text)), "#{special[0, 40]}, #{inside}"
+          end
+        end
+      end
+
       def random_line(random, time)
         id, data = random_frame(random)
         seconds = random.rand(20).zero? ? (time / 1_000_000 % 1000).to_s : format('%010d', time / 1_000_000)

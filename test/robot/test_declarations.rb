@@ -235,5 +235,22 @@ module Syskit
       assert_equal [0.01, 3, 64, 'the IMU', %w[default fast], [/imu/, 'imu2']],
                    [device.period, device.burst, device.sample_size, device.doc, device.conf, device.deployment_hints]
     end
+
+    # A chain of settings on one line is one place: one frozen Location
+    # (a 10,000-device robot made four per device), another line another.
+    def test_settings_chained_on_one_line_share_their_location
+      root = my_app(<<~RUBY)
+        com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+        device(Devices::TemperatureSensor, as: 't').attach_to('can0').can_id(1).with_conf('default', 'x')
+          .prefer_deployed_tasks('t')
+      RUBY
+      load_app(root)
+      device = MyApp::Profiles::Base.t_dev.device
+      assert device.declared_at.frozen?
+      assert_same device.declared_at, device.dsl_attribute_location(:can_id)
+      assert_same device.declared_at, device.conf_location
+      assert_equal 'models/profiles/base.rb:11', device.deployment_hints_location.to_s(root)
+      refute_same device.declared_at, device.deployment_hints_location
+    end
   end
 end

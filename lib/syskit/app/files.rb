@@ -131,7 +131,7 @@ module Syskit
         suffix = "\nend" * modules.size
         # The prefix shares the first line with the file, so line numbers hold.
         UserCode.guard(path: path, root: root) do
-          TOPLEVEL_BINDING.eval(modules.empty? ? source : "#{prefix} #{source}#{suffix}", path, 1)
+          ISeqCache.compile(modules.empty? ? source : "#{prefix} #{source}#{suffix}", path).eval
         rescue Exception => e # rubocop:disable Lint/RescueException -- re-raised, to the guard
           record_failure(path, e)
           mark_loaded(e)

@@ -29,6 +29,10 @@ module Syskit
       # the file holds (a binary file, /dev/zero).
       MAX_LINE = 4096
       HASH_MARK = 35 # '#'
+      # The log is read this many bytes at a time (see #read).
+      CHUNK = 1 << 16
+      # A line as candump -l writes it for the interface %s (see #fast_line).
+      FAST_LINE_TEXT = '\(\d{10}\.\d{6}\) %s (?:[0-7]\h\h|[01]\h{7})#(?:\h\h){0,8}\n'
 
       # +backwards+: a Backwards when the log is not in time order, else nil.
       attr_reader :path, :interface, :other_interfaces, :malformed, :malformed_count, :lines, :backwards
@@ -54,9 +58,12 @@ module Syskit
       #
       # One loop on purpose: it runs for every line of logs of millions,
       # and every call and object made per line shows in the replay's speed
-      # (doc/performance.md). Lines as candump -l writes them for the
-      # interface read are checked whole by one regexp (#fast_line) and
-      # read by position; the others go through #line_fields. The figures
+      # (doc/performance.md). The log is read CHUNK bytes at a time. Lines
+      # as candump -l writes them for the interface read are checked a run
+      # at a time by one regexp (#fast_runs: every line up to the first
+      # that is not one) and read by position in the chunk, without a
+      # string of their own; the others are cut as IO#each_line(MAX_LINE)
+      # cuts them and go through #line_fields. The figures
       # are kept in locals and handed to +traffic+ every +every+ lines and
       # at the end; the per-key tallies are updated in place.
       # rubocop:disable-next Metrics -- one loop, see above
@@ -65,6 +72,7 @@ module Syskit
         # Read by position once a first frame has set the times it needs.
         fast = @previous_time && traffic.last_time && fast_line
         id_start = fast && (@interface.bytesize + 21)
+        runs = fast && fast_runs
         frames = extended = fd_frames = fd_extended = rtr_frames = errors = bytes_total = 0
         first_time = traffic.first_time
         last_time = traffic.last_time
@@ -80,48 +88,73 @@ module Syskit
           @lines = lines
         end
         long = false # in an overlong line, read in pieces (see #each_line)
-        seconds_prefix = nil # "(SSSSSSSSSS." of the last line read by position
-        seconds = 0
-        io.each_line(MAX_LINE) do |line|
-          if !long && fast&.match?(line)
-            # (SSSSSSSSSS.UUUUUU) IFACE III#DD.. or IIIIIIII#DD..
-            lines += 1
-            frames += 1
-            if line.getbyte(id_start + 3) == HASH_MARK
-              key = line.byteslice(id_start, 3).to_i(16)
-              bytes_total += (line.bytesize - id_start - 5) >> 1
-            else
-              key = line.byteslice(id_start, 8).to_i(16) | Frame::EFF_FLAG
-              extended += 1
-              bytes_total += (line.bytesize - id_start - 10) >> 1
-            end
-            # Thousands of lines in a row share their second.
-            unless seconds_prefix && line.start_with?(seconds_prefix)
-              seconds_prefix = line.byteslice(0, 12)
-              seconds = line.byteslice(1, 10).to_i * 1_000_000
-            end
-            time = seconds + line.byteslice(12, 6).to_i
-            # Traffic#count and #stretch, inline (times are never nil here).
-            tally = tallies[key]
-            if tally.nil? then tallies[key] = [1, time, time, 0]
-            else
-              tally[0] += 1
-              last = tally[2]
-              if time >= last
-                tally[3] = time - last if time - last > tally[3]
-                tally[2] = time
-              elsif time < tally[1] then tally[1] = time
+        rest = nil # the start of a line the last chunk cut
+        while (chunk = io.read(CHUNK))
+          data = rest ? rest << chunk : chunk
+          size = data.bytesize
+          at_end = io.eof?
+          pos = 0
+          cut = nil
+          while pos < size
+            if !long && fast && (run = runs.match(data, pos))
+              # Lines as candump -l writes them, up to the first that is
+              # not: (SSSSSSSSSS.UUUUUU) IFACE III#DD.. or IIIIIIII#DD..
+              stop = run.end(0)
+              while pos < stop
+                eol = data.index("\n", pos)
+                lines += 1
+                frames += 1
+                id_at = pos + id_start
+                if data.getbyte(id_at + 3) == HASH_MARK
+                  key = data.byteslice(id_at, 3).to_i(16)
+                  bytes_total += (eol - id_at - 4) >> 1
+                else
+                  key = data.byteslice(id_at, 8).to_i(16) | Frame::EFF_FLAG
+                  extended += 1
+                  bytes_total += (eol - id_at - 9) >> 1
+                end
+                time = (data.byteslice(pos + 1, 10).to_i * 1_000_000) + data.byteslice(pos + 12, 6).to_i
+                # Traffic#count and #stretch, inline (times are never nil here).
+                tally = tallies[key]
+                if tally.nil? then tallies[key] = [1, time, time, 0]
+                else
+                  tally[0] += 1
+                  last = tally[2]
+                  if time >= last
+                    tally[3] = time - last if time - last > tally[3]
+                    tally[2] = time
+                  elsif time < tally[1] then tally[1] = time
+                  end
+                end
+                if time >= last_time then last_time = time
+                elsif time < first_time then first_time = time
+                end
+                if time < previous
+                  @lines = lines
+                  out_of_order(time, previous)
+                end
+                previous = time
+                pos = eol + 1
+                next unless (pieces += 1) == every
+
+                pieces = 0
+                commit.call
+                yield traffic.frames if block_given?
               end
+              next
             end
-            if time >= last_time then last_time = time
-            elsif time < first_time then first_time = time
+
+            # Any other line, as IO#each_line(MAX_LINE) would give it: up to
+            # its end of line, or MAX_LINE bytes of an overlong one.
+            eol = data.index("\n", pos)
+            length = eol && eol - pos < MAX_LINE ? eol - pos + 1 : MAX_LINE
+            if pos + length > size && !at_end
+              cut = pos
+              break
             end
-            if time < previous
-              @lines = lines
-              out_of_order(time, previous)
-            end
-            previous = time
-          else
+            line = data.byteslice(pos, length)
+            pos += line.bytesize
+            fields = nil
             whole = line.bytesize < MAX_LINE || line.end_with?("\n")
             unless long
               @lines = lines += 1
@@ -159,13 +192,15 @@ module Syskit
               # read by position.
               fast = fast_line
               id_start = fast && (@interface.bytesize + 21)
+              runs = fast && fast_runs
             end
-          end
-          next unless (pieces += 1) == every
+            next unless (pieces += 1) == every
 
-          pieces = 0
-          commit.call
-          yield traffic.frames if block_given?
+            pieces = 0
+            commit.call
+            yield traffic.frames if block_given?
+          end
+          rest = cut && data.byteslice(cut, size - cut)
         end
         commit.call
         self
@@ -212,7 +247,12 @@ module Syskit
       def fast_line
         return unless @interface&.ascii_only?
 
-        @fast_line ||= /\A\(\d{10}\.\d{6}\) #{Regexp.escape(@interface)} (?:[0-7]\h\h|[01]\h{7})#(?:\h\h){0,8}\n\z/
+        @fast_line ||= /\A#{FAST_LINE_TEXT % Regexp.escape(@interface)}\z/
+      end
+
+      # One or more such lines in a row, from where the match starts.
+      def fast_runs
+        @fast_runs ||= /\G(?:#{FAST_LINE_TEXT % Regexp.escape(@interface)})+/
       end
 
       # Notes a frame at +time+, earlier than the one before it (at

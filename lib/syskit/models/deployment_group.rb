@@ -239,9 +239,10 @@ module Syskit
         end
 
         model = key.is_a?(String) ? task_model_named(key, location) : key
-        return add(task_deployment(model, "#{prefix}#{value}", location), location) if model
+        name = prefix ? "#{prefix}#{value}" : -value.to_s # (the user's string, deduplicated and frozen)
+        return add(task_deployment(model, name, location), location) if model
 
-        add(prefixed(named_deployment(key, location), "#{prefix}#{value}"), location)
+        add(prefixed(named_deployment(key, location), name), location)
       end
 
       # The task model called +name+ ('lib::Task'), loading its library;

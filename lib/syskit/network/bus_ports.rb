@@ -35,8 +35,12 @@ module Syskit
         link = @link
         @device_task = device_task
         link.device_task = device_task
-        link.client_input = client_port(:input, @bus_model.client_in_srv, 'from_bus', :bus_to_client) if link.bus_output
-        link.client_output = client_port(:output, @bus_model.client_out_srv, 'to_bus', :client_to_bus) if link.bus_input
+        if link.bus_output
+          link.client_input = client_port(:input, @bus_model.client_in_srv, 'from_bus', 'bus_to_client')
+        end
+        if link.bus_input
+          link.client_output = client_port(:output, @bus_model.client_out_srv, 'to_bus', 'client_to_bus')
+        end
         link
       end
 
@@ -60,7 +64,7 @@ module Syskit
         model = @device_task.model
         wanted = @device.public_send(option)
         service = @device.combus_client_service(model, service_model, wanted.is_a?(String) ? wanted : nil,
-                                                @bus, option.to_s)
+                                                @bus, option)
         return service.task_port_for(service_model, service_port).name if service
 
         candidates = ports_of_type(model, direction)

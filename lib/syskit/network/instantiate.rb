@@ -94,7 +94,8 @@ module Syskit
         return if @root_requirements.key?(requirement)
 
         context = base_of(requirement).with(requirement.selections)
-        task = instantiate(requirement, context, root_name(requirement), nil)
+        # A device's task is the device's: only other roots need a path.
+        task = instantiate(requirement, context, requirement.device ? nil : root_name(requirement), nil)
         @context.roots << task
         @root_requirements[task.requirements] = true
       ensure

@@ -146,13 +146,16 @@ module Syskit
       private
 
       def task_hash(task, port_hashes)
-        {
+        operations = task.operations
+        hash = {
           'name' => task.name, 'model' => task.model, 'deployment' => task.deployment,
           'devices' => task.devices, 'conf' => task.conf, 'properties' => task.properties,
           'ports' => task.ports.map { |p| port_hashes[p] ||= port_hash(p) },
           'depends_on' => task.depends_on, 'unmanaged' => task.unmanaged,
-          'operations' => task.operations.map { |op| operation_hash(op) }
-        }.merge(task.process_server ? { 'process_server' => task.process_server } : {})
+          'operations' => operations.empty? ? operations : operations.map { |op| operation_hash(op) }
+        }
+        hash['process_server'] = task.process_server if task.process_server
+        hash
       end
 
       # The call; the argument names when the spec declares them, so that

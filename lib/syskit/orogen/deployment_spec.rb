@@ -6,8 +6,10 @@ module Syskit
     # .orogen file (+deployment 'test_canbus' do task('can0', 'canbus::Task') end+)
     # or made for one task by +Syskit.conf.use_deployment OroGen.x.Task => 'name'+.
     class DeploymentSpec
-      # One task instance of a deployment (oroGen's task activity).
-      DeployedTask = Struct.new(:name, :model, :deployment, :declared_at, keyword_init: true) do
+      # One task instance of a deployment (oroGen's task activity). Made by
+      # position: one per deployed task of a robot, and a keyword Struct
+      # costs a hash each.
+      DeployedTask = Struct.new(:name, :model, :deployment, :declared_at) do
         def to_s
           "#{name} (#{model.name}, deployment #{deployment.name})"
         end
@@ -49,7 +51,7 @@ module Syskit
       end
 
       def add_task(name, model, location: nil)
-        task = DeployedTask.new(name: name, model: model, deployment: self, declared_at: location)
+        task = DeployedTask.new(name, model, self, location)
         @task_activities << task
         task
       end

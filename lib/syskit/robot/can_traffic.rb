@@ -133,8 +133,12 @@ module Syskit
         # devices of CAN buses attached to it, in declaration order.
         def frames_on_wire
           each_attached_device.flat_map do |device|
-            nested = device.com_bus? && CanTraffic.can_bus?(device) ? device.frames_on_wire : NO_FRAMES
-            device.can_frames + nested
+            # (flat_map takes each device's own array as it is)
+            if device.com_bus? && CanTraffic.can_bus?(device)
+              device.can_frames + device.frames_on_wire
+            else
+              device.can_frames
+            end
           end
         end
 

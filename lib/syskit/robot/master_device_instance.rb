@@ -102,7 +102,8 @@ module Syskit
       # The configuration sections applied to the driver, in order. As in
       # Syskit, the list replaces ['default']: write with_conf('default', 'x').
       def with_conf(*names)
-        names = names.flatten.map(&:to_s)
+        names = names.flatten if names.any?(Array)
+        names = names.map(&:to_s) unless names.all?(String)
         if names.empty?
           raise DeclarationError.new('with_conf needs at least one section name',
                                      location: Location.of_caller, hint: "write with_conf('default', 'forward')")
@@ -119,7 +120,7 @@ module Syskit
       # Chooses among the deployed tasks that could run this device's driver:
       # names matching a regexp or equal to a string (or matched by ===).
       def prefer_deployed_tasks(*hints)
-        hints = hints.flatten
+        hints = hints.flatten if hints.any?(Array)
         hints.each do |hint|
           next if Arguments.deployment_hint?(hint)
 
@@ -201,7 +202,10 @@ module Syskit
 
         classes = modules.first.instance_variable_get(:@device_classes) ||
                   modules.first.instance_variable_set(:@device_classes, {})
-        classes[[self, *modules.drop(1)]] ||= Class.new(self) { modules.each { |mod| include mod } }
+        # By class, then by the list of modules (looked up as given, kept
+        # as a frozen copy).
+        by_modules = classes[self] ||= {}
+        by_modules[modules] || (by_modules[modules.dup.freeze] = Class.new(self) { modules.each { |mod| include mod } })
       end
 
       def attached?

@@ -54,6 +54,14 @@ module Syskit
       assert chosen.arguments.set?(:conf)
     end
 
+    def test_a_conf_argument_given_to_requirements_is_their_sections
+      requirements = @task_m.with_arguments(conf: %w[default slow], rate: 2)
+      assert_equal %w[default slow], requirements.conf
+      assert_equal({ rate: 2 }, requirements.arguments)
+      task = requirements.instanciate(Test::Plan.new)
+      assert_equal %w[default slow], task.conf
+    end
+
     def test_a_task_made_from_another_ones_arguments_keeps_defaults_unset
       task = @task_m.new(@task_m.new(rate: 2).arguments)
       assert_equal 2, task.rate

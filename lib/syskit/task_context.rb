@@ -150,6 +150,9 @@ module Syskit
       model.require_dynamic_service(dynamic_name, as: as, **options)
       # A lookup made before the service existed found none.
       @bound_services.delete(as.to_s) if @bound_services && !@bound_services[as.to_s]
+      # Its reader, on this task alone (+task.rear_srv+).
+      reader = "#{as}_srv"
+      define_singleton_method(reader) { find_data_service(as) } unless respond_to?(reader)
       find_data_service(as)
     end
 

@@ -127,7 +127,8 @@ module Syskit
 
       def add_port(name, direction, type)
         name = check_name(name, "#{direction}_port")
-        port = Orogen::Port.new(name, direction, Models.resolve_type(type, Location.of_caller))
+        location = Location.of_caller
+        port = Orogen::Port.new(name, direction, Models.resolve_type(type, location), location: location)
         spec.ports[name] = port
         Models::Component.declarations_changed
         define_port_reader(name)

@@ -64,6 +64,19 @@ module Syskit
       assert_match(/composition/, error.hint)
     end
 
+    def test_a_port_records_the_line_that_declared_it
+      double = @double
+      task_line = __LINE__ + 1
+      task_m = TaskContext.new_submodel { output_port 'out', double }
+      srv_line = __LINE__ + 1
+      srv_m = DataService.new_submodel { input_port 'in', double }
+      ruby_line = __LINE__ + 1
+      ruby_m = RubyTaskContext.new_submodel { output_port 'out', double }
+      [[task_m.out_port, task_line], [srv_m.in_port, srv_line], [ruby_m.out_port, ruby_line]].each do |port, line|
+        assert_equal Location.new(File.expand_path(__FILE__), line), port.declared_at, port.to_s
+      end
+    end
+
     def test_a_port_takes_the_orogen_modifiers_of_its_declaration
       @sink.in_port.needs_reliable_connection
       assert @sink.in_port.reliable?

@@ -110,9 +110,19 @@ module Syskit
         mod.constants(false).sort.each do |const|
           next if mod.autoload?(const)
 
-          value = mod.const_get(const, false)
+          value = constant(mod, const)
           walk(value, seen) if value.is_a?(Module)
         end
+      end
+
+      # The value of +mod+'s constant +name+; nil for one that is listed
+      # but has none: an autoload whose file did not define it (Rock's
+      # common_models has such backwards-compatibility names), once
+      # something tried it, is listed and no longer an autoload.
+      def constant(mod, name)
+        mod.const_get(name, false)
+      rescue NameError
+        nil
       end
 
       def model_rows(klass, except = nil)

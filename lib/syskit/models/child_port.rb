@@ -67,6 +67,11 @@ module Syskit
         @port.respond_to?(:type_description) ? @port.type_description : type.name
       end
 
+      # Where the owner's port was declared (see Orogen::Port#declared_at).
+      def declared_at
+        orogen_port.declared_at if orogen_port.respond_to?(:declared_at)
+      end
+
       def input?
         direction == :input
       end

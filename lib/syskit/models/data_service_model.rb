@@ -211,7 +211,7 @@ module Syskit
         end
 
         port = add_port_entry(Orogen::Port.new(name, direction, Models.resolve_type(type, location),
-                                               declared_type: type))
+                                               declared_type: type, location: location))
         PortModifiers.new(port)
       end
     end

@@ -36,7 +36,8 @@ module Syskit
 
       # What the declaration says (see Orogen::Port and ConnectionNeeds).
       def_delegators :@port, :direction, :input?, :output?, :multiplexes?, :reliable?, :reliable, :buffer_size,
-                     :static?, :orocos_type_name, :type_name, :dynamic?, :declared_type, :type_description
+                     :static?, :orocos_type_name, :type_name, :dynamic?, :declared_type, :type_description,
+                     :declared_at
 
       # oroGen's modifiers, said on the port itself, as in Syskit
       # (+find_output_port('samples').triggered_once_per_update+).

@@ -11,15 +11,19 @@ module Syskit
     class Port
       include ConnectionNeeds
 
-      attr_reader :name, :direction, :type
+      # +declared_at+: where the port was declared (its line of the .orogen
+      # file, of a data service's block, of a task model made in Ruby); nil
+      # for the ports syskit makes itself (stubs, placeholders).
+      attr_reader :name, :direction, :type, :declared_at
 
       # +declared_type+: the type name as the declaration wrote it, when it is
       # a typedef of +type+ (/base/commands/Joints for /base/samples/Joints).
-      def initialize(name, direction, type, dynamic: false, declared_type: nil)
+      def initialize(name, direction, type, dynamic: false, declared_type: nil, location: nil)
         @name = name
         @direction = direction
         @type = type
         @dynamic = dynamic
+        @declared_at = location
         declared = declared_type && Types::Registry.normalize(declared_type) unless declared_type.is_a?(Types::Type)
         @declared_type = declared unless declared == type.name
       end

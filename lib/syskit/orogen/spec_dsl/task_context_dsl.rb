@@ -204,8 +204,9 @@ module Syskit
 
         what = "#{direction}_port"
         port = declare(@spec.ports, port_name, 'port', what, pattern: Arguments::PORT_NAME) do |n|
-          Port.new(n, direction, @loader.resolve_type(argument_type(type, what, n), Location.of_caller),
-                   declared_type: type)
+          location = Location.of_caller
+          Port.new(n, direction, @loader.resolve_type(argument_type(type, what, n), location),
+                   declared_type: type, location: location)
         end
         PortModifiers.new(port)
       end

@@ -53,9 +53,10 @@ module Syskit
     end
 
     # Roby's pair of the models and the arguments the task is known to
-    # fullfill: its provided models, no argument constraint.
+    # fullfill: its provided models and the arguments it has set (not the
+    # default ones).
     def fullfilled_model
-      [provided_models, {}]
+      [provided_models, arguments.each_assigned_argument.to_h]
     end
 
     # Whether its model fullfills +models+ (a model or a list).
@@ -186,17 +187,20 @@ module Syskit
     # InstanceRequirements#instanciate was given) the task was made for
     # (Syskit's +requirements+); see #requirements.
     attr_writer :requirements
-    # Its configuration sections; where it stands in the network; where the
-    # requirements of the network's root it belongs to are declared (the
-    # definition).
-    attr_accessor :conf, :plan_path, :root_location
+    # Where it stands in the network; where the requirements of the
+    # network's root it belongs to are declared (the definition).
+    attr_accessor :plan_path, :root_location
+
+    # Its configuration sections (+task.conf+), an argument as in Syskit:
+    # +new(conf: %w[default slow])+ or +task.conf = [...]+ set it.
+    argument :conf, default: %w[default].freeze
+
     # What plans it, when it stands for requirements still to be planned
     # (see InstanceRequirements#as_plan).
     attr_accessor :planning_task
 
     def initialize(arguments = {})
       super()
-      @conf = InstanceRequirements::DEFAULT_CONF
       assign_arguments(arguments)
     end
 
@@ -226,8 +230,10 @@ module Syskit
     # Requirements that would give a task like this one: its model, with
     # the arguments it has set (not the delayed or default ones).
     def to_instance_requirements
-      set = arguments.each_key.select { |key| arguments.set?(key) }
-      model.to_instance_requirements.with_arguments(**arguments.slice(*set))
+      set = arguments.each_assigned_argument.to_h
+      requirements = model.to_instance_requirements
+      requirements = requirements.with_conf(*set.delete(:conf)) if set.key?(:conf)
+      requirements.with_arguments(**set)
     end
 
     # Whether the task stands for a component (see Syskit::Placeholder).
@@ -268,9 +274,10 @@ module Syskit
     # arguments[:setpoint] = hash end+), the others, and a delayed
     # argument, as they are.
     def assign_arguments(given)
-      @arguments = Compat::Roby::TaskArguments.new
+      @arguments = Compat::Roby::TaskArguments.new.merge!(model.default_arguments)
       given.each do |key, value|
-        if model.argument_declared?(key) && !value.is_a?(Compat::DelayedArgument)
+        if model.argument_declared?(key) && !value.is_a?(Compat::DelayedArgument) &&
+           !value.is_a?(Compat::Roby::DefaultArgument)
           public_send(:"#{key}=", value)
         else
           @arguments[key] = value

@@ -25,7 +25,6 @@ module Syskit
       super()
       @children = {}
       @child_selection = {}
-      @conf = InstanceRequirements::DEFAULT_CONF
       assign_arguments(arguments)
     end
 

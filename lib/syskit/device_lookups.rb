@@ -46,13 +46,18 @@ module Syskit
     end
 
     # Syskit's +bus_task.attach(device_task)+: this bus driver serves the
-    # devices +device_task+ drives that are attached to one of its buses.
-    # Returns the devices newly served.
+    # devices +device_task+ drives that are attached to one of its buses,
+    # each through a service of its own named after the device (an
+    # instance of its bus model's com_bus dynamic service, see
+    # Models::ComBusModel#declare_attachment_service). Returns the devices
+    # newly served.
     def attach(device_task)
       buses = devices.select(&:com_bus?)
       device_task.devices.select do |device|
-        next false if each_attached_device.include?(device) || buses.none? { |bus| device.attached_to?(bus) }
+        bus = buses.find { |b| device.attached_to?(b) }
+        next false if each_attached_device.include?(device) || !bus
 
+        require_attachment_service(bus, device)
         attach_device(device)
       end
     end
@@ -79,6 +84,14 @@ module Syskit
     end
 
     private
+
+    def require_attachment_service(bus, device)
+      dynamic = bus.model.dynamic_service_name
+      return unless model.find_dynamic_service(dynamic)
+
+      require_dynamic_service(dynamic, as: device.name, bus_to_client: device.bus_to_client?,
+                                       client_to_bus: device.client_to_bus?)
+    end
 
     def service_for_device_lookup(service, location)
       case service

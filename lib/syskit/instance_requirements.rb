@@ -45,7 +45,7 @@ module Syskit
     # requirements select it (a composition's child given to another);
     # +conf_location+: where the sections were chosen (with_conf);
     # +port_dynamics+: what add_port_period said, by port name.
-    attr_reader :device, :service, :profile, :name, :arguments, :deployment, :selections,
+    attr_reader :device, :service, :profile, :name, :deployment, :selections,
                 :specialization_hints, :declared_at, :instance, :conf_location, :doc, :port_dynamics
 
     # What stands for requirements besides models and lists of them (see
@@ -133,11 +133,27 @@ module Syskit
     end
 
     # What the requirements are (Syskit's +model+, and +base_model+): the
-    # selected service, else the proxy model.
+    # selected service; for a device's, its driver's service once the
+    # driver is known, as Syskit's device requirements are the driver's;
+    # else the proxy model.
     def model
-      service || proxy_model
+      service || device_driver_service || proxy_model
     end
     alias base_model model
+
+    # The task arguments; a master device's own requirements also bind its
+    # driver's service to the device (+gps_dev: device+), as Syskit's.
+    def arguments
+      return @arguments unless device_driver_service
+
+      device.driver_arguments.merge(@arguments)
+    end
+
+    # The service that drives the device of these requirements, when they
+    # are a master device's own (no model given) and its driver is known.
+    def device_driver_service
+      device.driver_model if device && @models.nil? && !device.master_device && device.driver_resolved?
+    end
 
     # The component model, or the placeholder standing for it and the
     # required services it does not provide.
@@ -226,7 +242,7 @@ module Syskit
       list = []
       models.each { |m| m.each_fullfilled_model { |f| list << f unless list.include?(f) } }
       if device&.driver_resolved?
-        device.driver_model.each_fullfilled_model { |f| list << f unless list.include?(f) }
+        device.driver_model.component_model.each_fullfilled_model { |f| list << f unless list.include?(f) }
       end
       list
     end

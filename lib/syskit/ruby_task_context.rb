@@ -97,9 +97,19 @@ module Syskit
       def declared_in_ruby(submodel, location)
         submodel.extend(Declarations)
         submodel.instance_variable_set(:@declared_at, location)
-        submodel.send(:setup_model, Spec.new(submodel, submodel.superclass.spec))
+        spec = Spec.new(submodel, submodel.superclass.spec)
+        extended_state_support(spec)
+        submodel.send(:setup_model, spec)
         Models.register_model(submodel)
         submodel
+      end
+
+      # Syskit gives every task model made in Ruby oroGen's extended state
+      # support (a +state+ port, see Orogen::TaskSpec), when an app is
+      # there to resolve its type.
+      def extended_state_support(spec)
+        app = Syskit.app
+        spec.extended_state_support(app.types.resolve('/int32_t')) if app
       end
 
       private

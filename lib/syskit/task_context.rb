@@ -38,6 +38,11 @@ module Syskit
 
     attr_reader :deployed_task
 
+    # Whether the task is one that runs already, that Syskit only reads
+    # from (a configured deployment's +read_only:+ tasks), as Syskit's
+    # argument: false unless set.
+    argument :read_only, default: false
+
     # The name the task goes by before it is deployed: its device's, or
     # its place in a composition (+arm_control_position2twist+).
     def plan_name
@@ -51,7 +56,6 @@ module Syskit
       @children = []
       @child_tasks = []
       @connections = NO_CONNECTIONS
-      @conf = Robot::MasterDeviceInstance::DEFAULT_CONF
       assign_arguments(arguments)
     end
 
@@ -146,6 +150,9 @@ module Syskit
       model.require_dynamic_service(dynamic_name, as: as, **options)
       # A lookup made before the service existed found none.
       @bound_services.delete(as.to_s) if @bound_services && !@bound_services[as.to_s]
+      # Its reader, on this task alone (+task.rear_srv+).
+      reader = "#{as}_srv"
+      define_singleton_method(reader) { find_data_service(as) } unless respond_to?(reader)
       find_data_service(as)
     end
 

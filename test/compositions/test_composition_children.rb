@@ -201,7 +201,7 @@ module Syskit
     def test_a_misspelled_port_is_explained
       assert_typo_explained 'follower_child.comand_port',
                             "Rig::Compositions::Follow.follower_child has no port 'comand' (did you mean 'command'?)",
-                            'its ports: command, pose'
+                            'its ports: command, pose, state'
     end
 
     def test_a_misspelled_child_is_explained

@@ -120,7 +120,7 @@ module Syskit
         add OroGen.rig.Follower, as: 'follow'
         add Rig::Services::Odometry, as: 'odom'
       end
-      assert_equal %w[command pose], model.follow_child.ports.keys.sort
+      assert_equal %w[command pose state], model.follow_child.ports.keys.sort
       assert_equal %w[odometry], model.odom_child.ports.keys
       port = model.follow_child.command_port
       assert_equal :output, port.direction

@@ -219,7 +219,7 @@ module Syskit
       requirements = InstanceRequirements.new([task.fix_srv])
       planned = requirements.as_plan(job_id: 3, speed: 2)
       assert_kind_of task, planned
-      assert_equal({ speed: 2 }, planned.arguments)
+      assert_equal({ speed: 2 }, planned.arguments.each_assigned_argument.to_h)
       refute planned.arguments.set?(:job_id)
       assert planned.planning_task.arguments.set?(:job_id)
       assert_empty requirements.arguments

@@ -144,7 +144,7 @@ module Syskit
     def test_a_component_model_as_plan_is_a_task_to_be_planned
       task = OroGen.rig.Follower.as_plan(speed: 2)
       assert_kind_of OroGen.rig.Follower, task
-      assert_equal({ speed: 2 }, task.arguments)
+      assert_equal({ speed: 2 }, task.arguments.each_assigned_argument.to_h)
       assert_equal OroGen.rig.Follower.with_arguments(speed: 2), task.planning_task.requirements
     end
 

@@ -44,7 +44,7 @@ module Syskit
                      RUBY
       model = Rig::Compositions::SpeedGenerator
       assert_equal 'Rig::Compositions::SpeedGenerator', model.name
-      assert_equal %w[out], model.ports.keys
+      assert_equal %w[out state], model.ports.keys.sort
       assert_equal 'Writes a constant speed.', Robot::DocComment.new.above(model.declared_at)
       plan = plan_of(app, 'cruise_def')
       task = plan.find_task('speed_setpoint')
@@ -72,8 +72,8 @@ module Syskit
       assert_equal 'Generator', model.name
       sub = model.new_submodel
       sub.input_port 'in', '/double'
-      assert_equal %w[in out], sub.ports.keys.sort
-      assert_equal %w[out], model.ports.keys
+      assert_equal %w[in out state], sub.ports.keys.sort
+      assert_equal %w[out state], model.ports.keys.sort
       error = assert_raises(DeclarationError) { sub.output_port 'out', '/double' }
       assert_match(/already has a port or property named 'out'/, error.message)
     end
@@ -88,7 +88,7 @@ module Syskit
       assert_equal :input, created.instantiate('wdev').direction
       assert_nil model.spec.dynamic_port_for(:input, 'dev', Syskit.app.types.resolve('/double'))
       assert model.spec.dynamic_port_for(:output, 'any', Syskit.app.types.resolve('/int32_t')), 'of any type'
-      assert_empty model.ports
+      assert_equal %w[state], model.ports.keys, 'the state port of every task model made in Ruby'
     end
 
     def test_use_ruby_tasks_refuses_a_task_context_of_a_library

@@ -44,7 +44,7 @@ module Syskit
       required = facet.find_ports_on_required('pose') + facet.find_ports_on_required('status')
       assert_equal [@pose.pose_port, @base.status_port], required
       assert_equal [@task.status_port].to_set, facet.find_all_port_mappings_for('status')
-      assert_equal %w[pose status], facet.ports.keys.sort
+      assert_equal %w[pose state status], facet.ports.keys.sort
     end
 
     def test_a_name_mapped_to_several_ports_is_ambiguous

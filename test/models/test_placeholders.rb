@@ -39,7 +39,7 @@ module Syskit
       assert model < @task_m
       assert_same @task_m, model.supermodel
       assert_equal [MyApp::Pose, MyApp::Cmd], model.proxied_data_service_models
-      assert_equal %w[cmd in out pose], model.ports.keys.sort
+      assert_equal %w[cmd in out pose state], model.ports.keys.sort
       assert_equal(%w[m0 m1], %w[m0 m1].map { |name| model.find_service(name)&.name })
     end
 

@@ -54,7 +54,7 @@ module Syskit
       model = TaskContext.new_submodel
       model.orogen_model.input_port 'frames_in', '/double'
       model.orogen_model.output_port 'frames_out', '/double'
-      assert_equal %w[frames_in frames_out], model.ports.keys.sort
+      assert_equal %w[frames_in frames_out state], model.ports.keys.sort
       assert model.find_input_port('frames_in')
     end
 

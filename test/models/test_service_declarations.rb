@@ -54,7 +54,7 @@ module Syskit
                       'models/orogen/gps.rb' => extension }, libraries: %w[gps])
       load_app(root)
       device = MyApp::Profiles::Base.syskit_profile.robot.find_device('gps')
-      assert_equal OroGen.gps.F9Task, device.driver_model
+      assert_equal OroGen.gps.F9Task, device.driver_model.component_model
     end
 
     def test_a_subclass_cannot_replace_a_service_by_an_unrelated_one

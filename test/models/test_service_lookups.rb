@@ -55,7 +55,7 @@ module Syskit
     end
 
     def test_ports_of_a_task_model_by_direction
-      assert_equal %w[fix], @gps_task.each_output_port.map(&:name)
+      assert_equal %w[fix state], @gps_task.each_output_port.map(&:name)
       assert_equal %w[cmd], @gps_task.each_input_port.map(&:name)
       assert @gps_task.has_output_port?('fix')
       refute @gps_task.has_output_port?('cmd')

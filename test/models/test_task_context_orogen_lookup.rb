@@ -28,11 +28,11 @@ module Syskit
     def test_the_orogen_model_finds_ports_by_direction
       model = TaskContext.new_submodel do
         input_port 'cmd', '/double'
-        output_port 'state', '/double'
+        output_port 'status', '/double'
       end
       assert_equal 'cmd', model.orogen_model.find_input_port('cmd').name
-      assert_nil model.orogen_model.find_input_port('state')
-      assert_equal 'state', model.orogen_model.find_output_port(:state).name
+      assert_nil model.orogen_model.find_input_port('status')
+      assert_equal 'status', model.orogen_model.find_output_port(:status).name
       assert_nil model.orogen_model.find_output_port('cmd')
       assert_nil model.orogen_model.find_output_port('none')
     end

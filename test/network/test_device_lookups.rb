@@ -8,8 +8,8 @@ module Syskit
   class TestDeviceLookups < Minitest::Test
     include GeneratorTestHelper
 
-    # A driver with two services for one device model: both are bound to
-    # the device it is planned for.
+    # A driver with two services for one device model: a device chooses
+    # one with using: (the other is left for another device).
     DUAL = {
       'models/orogen/dual.orogen' => "name 'dual'\ntask_context 'Task' do\nend\n",
       'models/orogen/dual.rb' => <<~RUBY,
@@ -41,17 +41,24 @@ module Syskit
     end
 
     def test_lookups_on_a_task_with_two_services_for_its_device
-      dual = tasks("device(Devices::TemperatureSensor, as: 'temp', using: OroGen.dual.Task)\n", DUAL,
+      dual = tasks("device(Devices::TemperatureSensor, as: 'temp', using: OroGen.dual.Task.rear_srv)\n", DUAL,
                    libraries: %w[dual imu])['dual']
       device = MyApp::Profiles::Base.syskit_profile.robot.find_device('temp')
+      assert_same OroGen.dual.Task.rear_srv, device.driver_model
       assert_equal [device], dual.each_master_device.to_a
-      assert_equal %w[front rear], dual.find_all_driver_services_for(device).map(&:name)
+      assert_equal %w[rear], dual.find_all_driver_services_for(device).map(&:name)
       assert_same device, dual.find_device_attached_to('rear')
-      error = assert_raises(ConfigurationError) { dual.find_device_attached_to }
-      assert_match(/dual::Task has several driver services: front, rear/, error.message)
-      assert_match(/find_device_attached_to\('front'\)/, error.hint)
+      assert_nil dual.find_device_attached_to('front')
       error = assert_raises(ConfigurationError) { dual.find_device_attached_to('raer') }
       assert_match(/dual::Task has no service named 'raer' \(did you mean 'rear'\?\)/, error.message)
+    end
+
+    def test_a_driver_with_two_services_for_the_device_must_be_given_one
+      root = my_app("device(Devices::TemperatureSensor, as: 'temp', using: OroGen.dual.Task)\n",
+                    FILES.merge(DUAL), libraries: %w[dual imu])
+      errors = load_app(root, problems: true).errors.map(&:message)
+      assert_includes errors, "dual::Task has several services that can drive device 'temp' " \
+                              '(MyApp::Devices::TemperatureSensor): front, rear'
     end
 
     def test_lookups_on_a_bus_driver

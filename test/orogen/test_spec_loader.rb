@@ -86,7 +86,7 @@ module Syskit
       task = OroGen.serial_imu.Task
       assert_equal 'serial_imu::Task', task.name
       assert task < OroGen.iodrivers_base.Task
-      assert_equal %w[commands io_raw_in io_raw_out io_read_listener io_write_listener samples status],
+      assert_equal %w[commands io_raw_in io_raw_out io_read_listener io_write_listener samples state status],
                    task.ports.keys.sort
     end
 
@@ -143,7 +143,7 @@ module Syskit
       assert_equal %w[name id mask], task.operations['watch'].arguments.map(&:first)
       assert_equal %w[checkBusOkInterval device deviceType fd_activity_timeout outputPorts statsInterval],
                    task.property_declarations.keys.sort
-      assert_equal %w[can_in can_out], OroGen.canbus.InterfaceTask.ports.keys.sort
+      assert_equal %w[can_in can_out state], OroGen.canbus.InterfaceTask.ports.keys.sort
     end
 
     def test_the_bundled_canbus_deployment_and_types_are_rocks

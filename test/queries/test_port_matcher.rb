@@ -19,7 +19,7 @@ module Syskit
       end
 
       def test_all_ports_of_the_tasks_by_default
-        assert_equal [@splitter.in_port, @splitter.left_port, @splitter.right_port].to_set,
+        assert_equal [@splitter.in_port, @splitter.left_port, @splitter.right_port, @splitter.state_port].to_set,
                      PortMatcher.new(OroGen.rig.Splitter).to_set(@plan)
       end
 

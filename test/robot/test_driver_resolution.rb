@@ -22,7 +22,7 @@ module Syskit
 
     def test_the_single_loaded_driver_is_used
       load_app(my_app("device(Devices::IMU, as: 'imu')\n"))
-      assert_same OroGen.imu.Task, MyApp::Profiles::Base.imu_dev.device.driver_model
+      assert_same OroGen.imu.Task, MyApp::Profiles::Base.imu_dev.device.driver_model.component_model
     end
 
     def test_no_driver_names_the_library_to_load
@@ -65,7 +65,7 @@ module Syskit
     def test_using_chooses_one_of_several_drivers
       load_app(my_app("device(Devices::IMU, as: 'imu', using: OroGen.imu2.Task)\n", SECOND_IMU_DRIVER,
                       libraries: %w[imu imu2]))
-      assert_same OroGen.imu2.Task, MyApp::Profiles::Base.imu_dev.device.driver_model
+      assert_same OroGen.imu2.Task, MyApp::Profiles::Base.imu_dev.device.driver_model.component_model
     end
 
     def test_using_a_task_that_does_not_drive_the_device
@@ -85,7 +85,7 @@ module Syskit
       load_app(my_app("device(OroGen.imu.Task, as: 'imu')\n"))
       device = MyApp::Profiles::Base.imu_dev.device
       assert_same MyApp::Devices::IMU, device.model
-      assert_same OroGen.imu.Task, device.driver_model
+      assert_same OroGen.imu.Task, device.driver_model.component_model
     end
 
     def test_a_task_model_that_drives_no_device
@@ -106,7 +106,7 @@ module Syskit
       root = my_app("device(Devices::IMU, as: 'imu')\n",
                     { 'models/profiles/zz_drivers.rb' => "using_task_library 'imu'\n" }, libraries: [])
       load_app(root)
-      assert_same OroGen.imu.Task, MyApp::Profiles::Base.imu_dev.device.driver_model
+      assert_same OroGen.imu.Task, MyApp::Profiles::Base.imu_dev.device.driver_model.component_model
     end
 
     def test_abstract_task_models_are_not_candidates
@@ -127,7 +127,7 @@ module Syskit
         RUBY
       }
       load_app(my_app("device(Devices::IMU, as: 'imu')\n", files))
-      assert_same OroGen.imu.Task, MyApp::Profiles::Base.imu_dev.device.driver_model
+      assert_same OroGen.imu.Task, MyApp::Profiles::Base.imu_dev.device.driver_model.component_model
       assert OroGen.imu.Task.method_defined?(:imu_dev)
     end
   end

@@ -24,7 +24,21 @@ module Syskit
 
     def test_a_device_gets_the_only_driver_made_in_ruby
       device = @robot.device(@device_m, as: 'front')
-      assert_same @driver_m, device.driver_model
+      assert_same @driver_m, device.driver_model.component_model
+    end
+
+    # As in Syskit, a device's driver_model is the driver's service for it.
+    def test_the_driver_model_of_a_device_is_the_drivers_service
+      device = @robot.device(@device_m, as: 'front')
+      assert_same @driver_m.sonar_srv, device.driver_model
+      assert_equal({ sonar_dev: device }, device.driver_arguments)
+    end
+
+    def test_a_profiles_device_action_is_the_drivers_service_bound_to_the_device
+      profile = Actions::Profile.new('Probe')
+      device = profile.robot.device(@device_m, as: 'front')
+      assert_same @driver_m.sonar_srv, profile.front_dev.model
+      assert_same device, profile.front_dev.arguments[:sonar_dev]
     end
 
     def test_using_a_task_that_does_not_drive_the_device_is_an_argument_error

@@ -24,7 +24,7 @@ module Syskit
       assert_same bus, sensor.bus
       assert_equal [0x1234, 0xffff], sensor.can_id
       assert_same MyApp::Devices::TemperatureSensor, sensor.model
-      assert_same OroGen.can_temperature_sensor.Task, sensor.driver_model
+      assert_same OroGen.can_temperature_sensor.Task, sensor.driver_model.component_model
     end
 
     # "configured to create a single output port named temperature_sensor on

@@ -19,7 +19,7 @@ module Syskit
     def test_the_driver_loaded_after_the_profile_is_still_associated
       load_app(fixture('seed', 'device_declaration'))
       device = AwesomeRobot::Profiles::Base.gps_dev.device
-      assert_same OroGen.gps_ublox.F9Task, device.driver_model
+      assert_same OroGen.gps_ublox.F9Task, device.driver_model.component_model
     end
 
     def test_the_device_model_file_follows_the_naming_convention
@@ -50,7 +50,7 @@ module Syskit
     def test_using_chooses_among_several_drivers
       load_app(fixture('seed', 'drivers'))
       device = MyApp::Profiles::Live::Base.gps_dev.device
-      assert_same OroGen.gps_ublox.F9Task, device.driver_model
+      assert_same OroGen.gps_ublox.F9Task, device.driver_model.component_model
     end
 
     def test_multiple_devices_of_one_type_get_their_deployment_and_configuration

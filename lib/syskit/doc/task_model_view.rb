@@ -101,7 +101,7 @@ module Syskit
       def drives
         catalog.entries(:profile).filter_map do |entry|
           devices = entry.object.robot.each_master_device.select do |d|
-            d.driver_resolved? && d.driver_model.equal?(model)
+            d.driver_resolved? && d.driver_model.component_model.equal?(model)
           end
           ModelView::Use.new(entry.object, devices) unless devices.empty?
         end

@@ -20,9 +20,14 @@ module Syskit
         change(conf: names, conf_location: location)
       end
 
-      # Task arguments (see Component#argument).
+      # Task arguments (see Component#argument). +conf:+ is the sections
+      # argument: +with_arguments(conf: ['slow'])+ is +with_conf('slow')+,
+      # as in Syskit.
       def with_arguments(**arguments)
-        change(arguments: self.arguments.merge(arguments).freeze)
+        return change(arguments: self.arguments.merge(arguments).freeze) unless arguments.key?(:conf)
+
+        others = arguments.except(:conf)
+        with_conf(*Array(arguments[:conf]), location: Location.of_caller).with_arguments(**others)
       end
 
       # Deployed tasks to prefer (names, regexps, or objects matching names

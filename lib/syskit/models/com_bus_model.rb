@@ -116,6 +116,41 @@ module Syskit
         self
       end
 
+      # The name of the dynamic service a driver of this bus has (Syskit's
+      # +dynamic_service_name+): a bus task's +attach+ makes an instance
+      # of it for each device it serves (see #declare_attachment_service).
+      def dynamic_service_name
+        'com_bus'
+      end
+
+      # Declares, on +driver_model+ (a task model that drives this bus),
+      # the dynamic service whose instance, named after a device, is the
+      # bus side of the device's link: a BusSrv, BusOutSrv or BusInSrv
+      # (+bus_to_client:+, +client_to_bus:+ options) mapped to the ports
+      # network generation uses too (Network::BusPorts.bus_port_of).
+      def declare_attachment_service(driver_model)
+        return if driver_model.find_dynamic_service(dynamic_service_name)
+
+        bus_m = self
+        driver_model.dynamic_service(self::BusBaseSrv, as: dynamic_service_name) do
+          bus_m.attachment_service(self, options)
+        end
+      end
+
+      # What the com_bus dynamic service's block does (see
+      # #declare_attachment_service) in +context+, its instance's.
+      def attachment_service(context, options)
+        to_client, to_bus = attachment_directions(context, options)
+        mappings = {}
+        mappings['from_bus'] = attachment_port(context, :output, self::BusOutSrv, 'from_bus', context.name) if to_client
+        mappings['to_bus'] = attachment_port(context, :input, self::BusInSrv, 'to_bus', "w#{context.name}") if to_bus
+        srv_m = if to_client && to_bus then self::BusSrv
+                elsif to_client then self::BusOutSrv
+                else self::BusInSrv
+                end
+        context.provides(srv_m, mappings)
+      end
+
       def finalize_declaration
         return if message_type || equal?(Syskit::ComBus)
 
@@ -127,6 +162,33 @@ module Syskit
       end
 
       private
+
+      # The +bus_to_client:+ and +client_to_bus:+ options, both required,
+      # one of them true at least.
+      def attachment_directions(context, options)
+        directions = %i[bus_to_client client_to_bus].map { |key| options.fetch(key, nil) }
+        return directions if directions.none?(&:nil?) && directions.any?
+
+        raise DeclarationError.new(
+          "the #{dynamic_service_name} service '#{context.name}' of a #{self} driver needs bus_to_client: and " \
+          "client_to_bus:, one of them true (got #{options.slice(:bus_to_client, :client_to_bus)})",
+          location: Location.of_caller,
+          hint: "write require_dynamic_service('#{dynamic_service_name}', as: '#{context.name}', " \
+                'bus_to_client: true, client_to_bus: true)'
+        )
+      end
+
+      def attachment_port(context, direction, service_model, service_port, dynamic_name)
+        model = context.component_model
+        name, = Network::BusPorts.bus_port_of(model, direction, service_model, service_port, dynamic_name)
+        return name if name
+
+        raise DeclarationError.new(
+          "#{model.name} has no #{direction} port to serve #{context.name} on a #{self}",
+          location: Location.of_caller,
+          hint: "declare dynamic_#{direction}_port(/^\\w+$/, '#{message_type}'), or provide #{service_model}"
+        )
+      end
 
       def define_services
         type = message_type

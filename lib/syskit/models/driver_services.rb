@@ -21,7 +21,9 @@ module Syskit
         end
 
         as ||= Naming.underscore(model.name.to_s.split('::').last)
-        add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
+        service = add_service(as, model, mappings.merge(more), location, slave_of: slave_of)
+        model.declare_attachment_service(self) if model.is_a?(ComBusModel)
+        service
       end
 
       # Whether +name+ is the argument holding the device of a driver

@@ -20,7 +20,10 @@ module Syskit
         end
 
         (@argument_declarations ||= {})[name] = [default, location, doc]
-        define_method(name) { arguments.fetch(name) { self.class.argument_default(name, Location.of_caller) } }
+        define_method(name) do
+          value = arguments.fetch(name) { self.class.argument_default(name, Location.of_caller) }
+          value.is_a?(Compat::Roby::DefaultArgument) ? value.value : value
+        end
         # As on a Roby task, tests set arguments on an instance (+task.x = 1+).
         define_method("#{name}=") { |value| @arguments = arguments.merge(name => value) }
         name
@@ -46,7 +49,26 @@ module Syskit
       # Default values of the arguments declared with {#argument}, inherited
       # ones included (nil for a required argument).
       def argument_defaults
-        argument_declarations.transform_values { |default, _| default.equal?(NO_DEFAULT) ? nil : default }
+        model_argument_declarations.transform_values { |default, _| default.equal?(NO_DEFAULT) ? nil : default }
+      end
+
+      # The arguments the model declares beyond those every task of its
+      # kind has (+conf+, +read_only+, declared by TaskContext, Composition
+      # and Component): what Syskit lists as a definition's arguments.
+      def model_argument_declarations
+        root = [Syskit::TaskContext, Syskit::Composition, Syskit::Component].find { |m| self <= m }
+        return argument_declarations if root.nil? || equal?(root)
+
+        argument_declarations.except(*root.argument_declarations.keys)
+      end
+
+      # The arguments a new task starts with, as Roby's: each declared
+      # argument that has a default, as a Roby::DefaultArgument (not set,
+      # see Compat::Roby::TaskArguments#set?).
+      def default_arguments
+        argument_declarations.each_with_object({}) do |(name, (default, _)), defaults|
+          defaults[name] = Compat::Roby::DefaultArgument.new(default) unless default.equal?(NO_DEFAULT)
+        end
       end
 
       # Whether +name+ (a symbol) is an argument declared with +argument+,

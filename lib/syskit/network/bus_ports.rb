@@ -44,20 +44,31 @@ module Syskit
         link
       end
 
+      # The port of the bus driver +model+ that serves one device in
+      # +direction+, and whether it is a per-device port: the port of its
+      # service of +service_model+ (BusInSrv...), else +dynamic_name+ when
+      # a dynamic port pattern allows it, else its single port of the bus's
+      # message type; nil when it has none. What network generation and a
+      # bus task's +attach+ (the com_bus dynamic service) both use.
+      def self.bus_port_of(model, direction, service_model, service_port, dynamic_name)
+        service = model.services_fulfilling(service_model).find { |srv| srv.dynamic_service.nil? }
+        return [service.task_port_for(service_model, service_port).name, false] if service
+
+        type = service_model.bus_model.message_type
+        return [dynamic_name, true] if model.spec&.dynamic_port_for(direction, dynamic_name, type)
+
+        single = model.static_ports_of(direction, type)
+        [single.first.name, false] if single.size == 1
+      end
+
       private
 
       def bus_port(direction, service_model, service_port, dynamic_name)
-        model = @bus_task.model
-        service = model.services_fulfilling(service_model).first
-        return service.task_port_for(service_model, service_port).name if service
+        name, dynamic = BusPorts.bus_port_of(@bus_task.model, direction, service_model, service_port, dynamic_name)
+        raise no_bus_port(direction, dynamic_name) unless name
 
-        if model.spec&.dynamic_port_for(direction, dynamic_name, @type)
-          expected = Context::ExpectedPort.new(dynamic_name, direction, @type, @device)
-          @expected << expected
-          return dynamic_name
-        end
-
-        single_port(model, direction) || raise(no_bus_port(direction, dynamic_name))
+        @expected << Context::ExpectedPort.new(dynamic_name, direction, @type, @device) if dynamic
+        name
       end
 
       def client_port(direction, service_model, service_port, option)
@@ -73,11 +84,6 @@ module Syskit
         raise no_client_port(direction, option) if candidates.empty?
 
         raise ambiguous_client_ports(direction, option, candidates, service_model)
-      end
-
-      def single_port(model, direction)
-        candidates = ports_of_type(model, direction)
-        candidates.first.name if candidates.size == 1
       end
 
       def ports_of_type(model, direction)

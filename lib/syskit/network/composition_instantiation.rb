@@ -17,8 +17,8 @@ module Syskit
         return instantiate_composition(specialized, requirements, context, path, parent) if specialized != model
         raise abstract(requirements, path, parent, model) if model.abstract? && !@placeholders
 
-        composition = model.new(task_arguments(model, requirements, parent))
-        composition.conf = requirements.conf
+        composition = model.new(task_arguments(requirements, parent))
+        Instantiate.assign_conf(composition, requirements)
         composition.name = path
         composition.requirements = requirements
         composition.parent = parent

@@ -26,7 +26,7 @@ module Syskit
       def instantiate(requirement)
         device = requirement.device
         resolve(device)
-        model = device.driver_model
+        model = device.driver_model.component_model
         services = model.driver_services_for(device.model)
         if services.empty?
           raise NetworkError.new("#{model.name} has no driver service for #{device.model}, so #{device} " \
@@ -38,7 +38,7 @@ module Syskit
         arguments = device.driver_arguments
         arguments = requirement.arguments.merge(arguments) unless requirement.arguments.empty?
         task = model.new(arguments)
-        task.conf = requirement.conf
+        Instantiate.assign_conf(task, requirement)
         create_slave_ports(task, device)
         @context.add_task(task, device, requirement)
       end

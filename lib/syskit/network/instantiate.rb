@@ -24,6 +24,13 @@ module Syskit
         [model, arguments, requirements.conf, requirements.deployment_hints, requirements.declared_deployment&.name]
       end
 
+      # Gives +task+ the sections of +requirements+ (its +conf+ argument),
+      # when they choose some: a task made with the default sections keeps
+      # them as its default argument, not set, as in Syskit.
+      def self.assign_conf(task, requirements)
+        task.conf = requirements.conf if requirements.conf_given? || requirements.conf != task.conf
+      end
+
       # Syskit's model-level +instanciate+: the task of +requirements+ (and
       # of its children), selected in +injection+ (a
       # DependencyInjectionContext) and added to +plan+ (any object with
@@ -141,8 +148,8 @@ module Syskit
           raise no_device(model, requirements, path, parent)
         end
 
-        task = model.new(task_arguments(model, requirements, parent))
-        task.conf = requirements.conf
+        task = model.new(task_arguments(requirements, parent))
+        Instantiate.assign_conf(task, requirements)
         task.plan_path = path
         task.root_location = @root&.declared_at
         @context.add_task(task, nil, requirements)
@@ -186,15 +193,16 @@ module Syskit
         )
       end
 
+      # The sections and the arguments given (not those binding the device).
       def describe_use(requirements)
         parts = ["sections #{requirements.conf.join(', ')}"]
-        parts << "arguments #{requirements.arguments}" unless requirements.arguments.empty?
+        given = requirements.arguments.reject { |_, value| value.equal?(requirements.device) }
+        parts << "arguments #{given}" unless given.empty?
         parts.join(' and ')
       end
 
-      def task_arguments(model, requirements, parent)
+      def task_arguments(requirements, parent)
         arguments = {}
-        model.argument_defaults.each { |k, v| arguments[k] = v unless v.nil? }
         requirements.arguments.each do |key, value|
           value = resolve_argument(value, parent)
           arguments[key] = value unless value.equal?(Compat::DelayedArgument::UNSET)
@@ -211,8 +219,8 @@ module Syskit
 
       def placeholder_task(requirements, path, parent)
         model = Models::Placeholder.for(requirements.models)
-        task = model.new(task_arguments(model, requirements, parent))
-        task.conf = requirements.conf
+        task = model.new(task_arguments(requirements, parent))
+        Instantiate.assign_conf(task, requirements)
         task.plan_path = path
         @context.add_task(task, nil, requirements)
       end
@@ -242,7 +250,7 @@ module Syskit
         device = robot.add_device(Robot::MasterDeviceInstance, srv.driven_device_model,
                                   "#{srv.name}_stub#{robot.each_master_device.count}",
                                   using: model, options: {}, location: requirements.declared_at)
-        device.driver_model = model
+        device.driver_model = srv
         device_task(requirements, device, model: model)
       end
 

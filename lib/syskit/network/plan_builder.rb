@@ -36,10 +36,17 @@ module Syskit
           Composition.new(
             composition.name, composition.model.short_name,
             (requirement.to_s if requirement.name && !composition.parent),
-            freeze_plain(composition.arguments.sort.to_h { |k, v| [k.to_s, plain_argument(v)] }),
+            composition_arguments(composition),
             composition.conf, composition.children_by_role.transform_values(&:name).freeze,
             export_entries(composition), composition.parent&.name
           ).freeze
+        end
+
+        # The composition's arguments, defaults included, but its sections
+        # (which the entry has on their own).
+        def composition_arguments(composition)
+          arguments = composition.arguments.except(:conf)
+          freeze_plain(arguments.sort.to_h { |k, v| [k.to_s, plain_argument(v)] })
         end
 
         def export_entries(composition)
@@ -106,6 +113,7 @@ module Syskit
         # An operation's argument as plain data (typed values through their type).
         def plain_argument(value)
           case value
+          when Compat::Roby::DefaultArgument then plain_argument(value.value)
           when Types::StructValue then value.class.type.to_plain(value)
           when Array then value.map { |v| plain_argument(v) }
           when Hash then value.to_h { |k, v| [k.to_s, plain_argument(v)] }
@@ -136,13 +144,24 @@ module Syskit
         end
 
         # The model's static ports, then those the task's configure created.
+        # The state port every task context has (oroGen's extended state
+        # support) is left out unless it is connected, as Syskit's network
+        # views show only connected ports.
         def task_ports(task, static_ports)
-          ports = static_ports[task.model] ||= task.model.ports.each_value.map do |p|
-            port_entry(p)
+          ports = static_ports[task.model] ||= task.model.ports.each_value.filter_map do |p|
+            port_entry(p) unless Orogen::TaskSpec.state_port?(p)
           end.sort_by!(&:name).freeze
-          return ports if task.created_ports.empty?
+          extra = task.created_ports.each_value.map { |p| port_entry(p) }
+          state = task.model.ports[Orogen::TaskSpec::STATE_PORT]
+          extra << port_entry(state) if state && state_port_connected?(task, state)
+          return ports if extra.empty?
 
-          (ports + task.created_ports.each_value.map { |p| port_entry(p) }).sort_by!(&:name).freeze
+          (ports + extra).sort_by!(&:name).freeze
+        end
+
+        def state_port_connected?(task, state)
+          Orogen::TaskSpec.state_port?(state) &&
+            task.connections.any? { |c| c.from_task.equal?(task) && c.from_port.name == state.name }
         end
 
         def device_entry(device, task, paths)

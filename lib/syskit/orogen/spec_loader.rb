@@ -38,6 +38,7 @@ module Syskit
         @parent_model = Syskit::TaskContext
         subclass(spec, parent_name, location) if parent_name
         TaskContextDSL.new(self, spec).instance_eval(&block) if block
+        spec.extended_state_support(resolve_type('/int32_t', location))
         spec.finalize
         library.add_task(@parent_model.new_model(spec))
       end

@@ -77,6 +77,25 @@ module Syskit
         all_ports[name.to_s]
       end
 
+      # The name of the port in which a task with oroGen's extended state
+      # support writes its state.
+      STATE_PORT = 'state'
+
+      # oroGen's +extended_state_support+, which oroGen applies to every
+      # task context of a project and Syskit to every task model made in
+      # Ruby: the task writes its state in a +state+ output port of
+      # +type+ (an int32), unless it has one already.
+      def extended_state_support(type)
+        return if find_port(STATE_PORT)
+
+        ports[STATE_PORT] = Port.new(STATE_PORT, :output, type)
+      end
+
+      # Whether +port+ is the state port of extended state support.
+      def self.state_port?(port)
+        port.name == STATE_PORT && port.direction == :output && port.type.name == '/int32_t'
+      end
+
       # The dynamic port pattern +name+ of +type+ would be created from.
       def dynamic_port_for(direction, name, type)
         all_dynamic_ports.each { |p| return p if p.direction == direction && p.match?(name, type) }

@@ -27,7 +27,8 @@ module Syskit
       # The service of +driver+ providing +srv_m+ that links the device to
       # +bus+, seen as +srv_m+: the one named +name+, else the only one;
       # nil when it has none. +option+ is the device option that names it.
-      def resolve_combus_client_srv(srv_m, name, bus, option, driver = driver_model, location: declared_at)
+      def resolve_combus_client_srv(srv_m, name, bus, option, driver = driver_model.component_model,
+                                    location: declared_at)
         combus_client_service(driver, srv_m, name, bus, option, location: location)&.as(srv_m)
       end
 
@@ -56,7 +57,7 @@ module Syskit
         COMBUS_DIRECTIONS.each do |option, (direction, srv_name)|
           next unless public_send(:"#{option}?")
           next if combus_client_srv(option, location)
-          next if driver_model.static_ports_of(direction, bus.model.message_type).size == 1
+          next if driver_model.component_model.static_ports_of(direction, bus.model.message_type).size == 1
 
           raise no_client_io(option, direction, srv_name, location)
         end
@@ -101,7 +102,8 @@ module Syskit
       def no_client_io(option, direction, srv_name, location)
         srv_m = bus.model.public_send(srv_name)
         DeclarationError.new(
-          "#{driver_model.name}, the driver of #{self}, has no #{srv_m} service and no single #{direction} port " \
+          "#{driver_model.component_model.name}, the driver of #{self}, has no #{srv_m} service " \
+          "and no single #{direction} port " \
           "of type #{bus.model.message_type} to link it to #{bus}",
           location: location,
           hint: "provide #{srv_m} in its extension, or attach the device with #{option}: false"

@@ -54,21 +54,14 @@ module Syskit
       def add_device(klass, model, name, using:, options:, location:, bus: nil)
         name = check_name(name, location)
         check_model(klass, model, location)
+        given = using
         using, requirements = driver_requirements(using, location)
         check_using(using, location)
-        unless options.empty?
-          unknown = options.keys - DEVICE_OPTIONS
-          raise unknown_options(unknown, location) unless unknown.empty?
-        end
-        if !bus && !options.empty?
-          raise DeclarationError.new(
-            "#{options.keys.map { |k| "#{k}:" }.join(', ')} only applies to devices attached to a bus",
-            location: location, hint: "declare #{name} in a through 'bus_name' do ... end block"
-          )
-        end
+        check_device_options(options, bus, name, location)
 
         device = device_class(klass, model, bus).new(self, name, model, using: using, location: location)
         device.adopt_requirements(requirements) if requirements
+        bind_driver_service(device, given)
         @devices[name] = device
         attach(device, bus, location: location, **options) if bus
         profile&.define_device_action(device)
@@ -133,6 +126,25 @@ module Syskit
       end
 
       private
+
+      def check_device_options(options, bus, name, location)
+        return if options.empty?
+
+        unknown = options.keys - DEVICE_OPTIONS
+        raise unknown_options(unknown, location) unless unknown.empty?
+        return if bus
+
+        raise DeclarationError.new(
+          "#{options.keys.map { |k| "#{k}:" }.join(', ')} only applies to devices attached to a bus",
+          location: location, hint: "declare #{name} in a through 'bus_name' do ... end block"
+        )
+      end
+
+      # +using:+ a driver's service chooses the service that drives the
+      # device, as in Syskit.
+      def bind_driver_service(device, using)
+        device.driver_model = using if using.is_a?(Models::BoundDataService) && device.model_resolved?
+      end
 
       # The driver of +device+ as far as it is known while the device is
       # declared: +using:+, else the one driver of its model loaded so far.

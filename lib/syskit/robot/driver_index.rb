@@ -36,7 +36,10 @@ module Syskit
       # or raises a DriverError (a DeclarationError for a slave).
       def resolve(device)
         device.assign_model(model_from_task(device)) unless device.model_resolved?
-        device.driver_model = device.using ? check_using(device) : single_driver(device)
+        # A driver service given with using: was bound when declared.
+        unless device.driver_resolved? && device.using.equal?(device.driver_model.component_model)
+          device.driver_model = device.using ? check_using(device) : single_driver(device)
+        end
         device.resolve_slaves
       end
 

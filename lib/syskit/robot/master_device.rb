@@ -110,13 +110,14 @@ module Syskit
       # The task arguments that bind the driver's services to this device
       # (+gps_dev: device+), once the driver is known.
       def driver_arguments
-        driver_model.driver_services_for(model).to_h { |srv| [srv.argument_name, self] }
+        { driver_model.argument_name => self }
       end
 
       # What the device asks of its driver (Syskit's +device.requirements+):
       # the driver model, with the arguments that bind it to the device.
       def requirements
-        InstanceRequirements.new([driver_model], device: self, arguments: driver_arguments, declared_at: declared_at)
+        InstanceRequirements.new([driver_model.component_model],
+                                 device: self, arguments: driver_arguments, declared_at: declared_at)
       end
 
       # Syskit's +device.instanciate(plan)+: the driver task of the device,
@@ -163,14 +164,13 @@ module Syskit
         @slaves_resolved = true
         known = slaves
         # Most drivers have no slave services, and most devices no slaves.
-        return if known.empty? && driver_model.slave_services.empty?
+        task_model = driver_model.component_model
+        return if known.empty? && task_model.slave_services.empty?
 
         @slaves = nil
-        driver_model.driver_services_for(model).each do |srv|
-          driver_model.each_slave_data_service(srv) do |slave_srv|
-            register_slave(known[slave_srv.name] ||
-                           SlaveDeviceInstance.new(self, slave_srv.name, location: declared_at, implicit: true))
-          end
+        task_model.each_slave_data_service(driver_model) do |slave_srv|
+          register_slave(known[slave_srv.name] ||
+                         SlaveDeviceInstance.new(self, slave_srv.name, location: declared_at, implicit: true))
         end
         # Slaves asked for that the driver does not have are errors
         # (SlaveDeviceInstance#resolve); the driver's own are all registered above.

@@ -55,15 +55,43 @@ module Syskit
         !@model.nil?
       end
 
-      # The task model that drives this device, once resolved.
+      # The driver's service that drives this device, once resolved (a
+      # Models::BoundDataService, as Syskit's +driver_model+); its
+      # +component_model+ is the driver's task model.
       def driver_model
         @driver_model || raise(DriverError.new("the driver of #{self} is not resolved yet", location: declared_at))
       end
 
-      attr_writer :driver_model
+      # Binds the device to its driver: the driver's service for it, or a
+      # task model, whose first driver service for the device's model is
+      # then chosen.
+      def driver_model=(driver)
+        @driver_model = driver.is_a?(Models::BoundDataService) ? driver : driver_service_of(driver)
+      end
 
       def driver_resolved?
         !@driver_model.nil?
+      end
+
+      def driver_service_of(task_model)
+        services = task_model.driver_services_for(model)
+        # A bus driver's bus services (BusInSrv...) serve the bus too; its
+        # driver service is the one of the bus model itself.
+        own = services.select { |srv| srv.model.fullfills?(model) }
+        services = own unless own.empty?
+        return services.first if services.size == 1
+
+        if services.empty?
+          raise DriverError.new("#{task_model.name} does not drive #{model} (#{self})",
+                                location: declared_at, hint: "declare driver_for #{model} in its extension file")
+        end
+
+        raise DriverError.new(
+          "#{task_model.name} has several services that can drive #{self} (#{model}): " \
+          "#{services.map(&:name).join(', ')}",
+          location: declared_at,
+          hint: "choose one with using: OroGen.#{task_model.name.sub('::', '.')}.#{services.first.name}_srv"
+        )
       end
 
       def assign_model(model)

@@ -56,7 +56,7 @@ module Syskit
 
       # Binds the slave to its service on +driver+, the master's (or makes
       # it from the dynamic service); raises when the driver has none.
-      def resolve(driver = master_device.driver_model)
+      def resolve(driver = master_device.driver_model.component_model)
         return if @service && @bound_driver.equal?(driver)
 
         service, ports = dynamic_service_name ? instantiate(driver) : [static_service(driver), NO_PORTS]

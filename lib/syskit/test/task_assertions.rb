@@ -69,7 +69,7 @@ module Syskit
         model = requirements.component_model
         context = Network::Context.new(app: Test.app, requirements: [], stub_deployments: true)
         task = model.new(requirements.arguments.dup)
-        task.conf = requirements.conf
+        Network::Instantiate.assign_conf(task, requirements)
         deployment = Orogen::DeploymentSpec.new("stub_#{model.name.tr(':', '_')}")
         task.deployed_task = deployment.add_task("stub_#{model.name.split('::').last.downcase}", model)
         Network::Configure.new(context).configure(task)

@@ -25,9 +25,9 @@ module Syskit
         # requirements set are optional, with the value set as default.
         def self.arguments_of(requirements)
           model = requirements.component_model
-          return {} unless model.respond_to?(:argument_declarations)
+          return {} unless model.respond_to?(:model_argument_declarations)
 
-          model.argument_declarations.to_h do |name, (default, _location, doc)|
+          model.model_argument_declarations.to_h do |name, (default, _location, doc)|
             default = requirements.arguments.fetch(name, default)
             required = default.equal?(Syskit::Models::TaskArguments::NO_DEFAULT)
             default = nil if required || default.is_a?(Compat::DelayedArgument)

@@ -89,7 +89,7 @@ module Syskit
                       documentation: '' }], items
       speeds = complete('      follower_child.left_speed_port.connect_to ', 'follower_child.left', drive)
       assert_equal %w[left_child.speed_command_port right_child.speed_command_port], labels(speeds)
-      assert_equal %w[left_speed_port pose_port right_speed_port],
+      assert_equal %w[left_speed_port pose_port right_speed_port state_port],
                    labels(complete('      follower_child.', 'follower_child.left', drive)).sort
     end
 

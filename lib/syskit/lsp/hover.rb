@@ -82,7 +82,7 @@ module Syskit
       def device_facts_line(device)
         facts = []
         facts << "model `#{device.model.name}`" if device.model_resolved?
-        facts << "driver `#{device.driver_model.name}`" if device.driver_resolved?
+        facts << "driver `#{device.driver_model.component_model.name}`" if device.driver_resolved?
         facts << "through `#{device.bus.name}`" if device.bus
         facts << "with_conf #{device.conf.map { |c| "`#{c}`" }.join(', ')}"
         facts.join(' · ')

@@ -80,7 +80,7 @@ module Syskit
       # (see ConfSections).
       def conf_model(holder)
         if holder.is_a?(Robot::MasterDeviceInstance)
-          holder.driver_model if holder.driver_resolved?
+          holder.driver_model.component_model if holder.driver_resolved?
         elsif holder
           holder.component_model
         end

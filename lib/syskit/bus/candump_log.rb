@@ -101,7 +101,8 @@ module Syskit
           while pos < size
             if !long && fast && (run = runs.match(data, pos))
               # Lines as candump -l writes them, up to the first that is
-              # not: (SSSSSSSSSS.UUUUUU) IFACE III#DD.. or IIIIIIII#DD..
+              # not: (SSSSSSSSSS.UUUUUU) IFACE III#DD.. or IIIIIIII#DD..,
+              # #R or #Rn for a remote request, ##FDD.. for CAN FD.
               stop = run.end(0)
               while pos < stop
                 eol = data.index("\n", pos)

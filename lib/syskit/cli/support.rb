@@ -29,8 +29,8 @@ module Syskit
       # Runs the block with the garbage collector off, then on again: for
       # loading the gem's code and the app's models, which live as long as
       # the process, so that collecting while they load frees next to
-      # nothing (4 of the 8 full collections of `syskit plan` of 10,000
-      # devices, 0.1 s; see doc/performance.md).
+      # nothing (5 of the 8 full collections of `syskit plan` of 10,000
+      # devices, 0.2 s; see doc/performance.md).
       def self.without_gc
         was_off = GC.disable
         yield

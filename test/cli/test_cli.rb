@@ -69,6 +69,22 @@ module Syskit
                    "Bot::Profiles::Sim::Other::Base\n  hint: type one of Live::Base, Sim::Base, Other::Base\n", err
     end
 
+    # The app's models live as long as the process: they load with the
+    # garbage collector off (fewer full collections at 10,000 devices),
+    # which runs again for the command itself.
+    GC_OFF_WHILE_LOADING = [] # rubocop:disable Style/MutableConstant -- filled by the app's robot file
+    def test_the_app_loads_with_the_garbage_collector_off
+      robot = "Syskit::TestCLI::GC_OFF_WHILE_LOADING << GC.disable\n"
+      app = write_app({ 'config/syskit.yml' => "name: Bot\n", 'config/robots/default.rb' => robot }, name: 'bot')
+      run_cli('gen', 'profile', 'base', chdir: app)
+      _, err, status = run_cli('plan', '--app', app)
+      assert_equal 0, status, err
+      assert_equal [true], GC_OFF_WHILE_LOADING
+      refute GC.enable, 'the collector is on again after loading'
+    ensure
+      GC.enable
+    end
+
     def test_plan_without_a_profile_when_the_first_has_no_device
       arm = "module MyApp\n  module Profiles\n    profile('Arm') { robot {} }\n  end\nend\n"
       root = my_app("device MyApp::Devices::IMU, as: 'imu'", 'models/profiles/arm.rb' => arm)

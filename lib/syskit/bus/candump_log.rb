@@ -31,8 +31,11 @@ module Syskit
       HASH_MARK = 35 # '#'
       # The log is read this many bytes at a time (see #read).
       CHUNK = 1 << 16
-      # A line as candump -l writes it for the interface %s (see #fast_line).
-      FAST_LINE_TEXT = '\(\d{10}\.\d{6}\) %s (?:[0-7]\h\h|[01]\h{7})#(?:\h\h){0,8}\n'
+      # A line as candump -l writes it for the interface %s (see #fast_line):
+      # data of 0 to 8 bytes, a remote request (R, R0 to R8), or a CAN FD
+      # frame (#, its flags digit, data of one of Frame::CANFD_LENGTHS).
+      FAST_LINE_TEXT = '\(\d{10}\.\d{6}\) %s (?:[0-7]\h\h|[01]\h{7})#(?:(?:\h\h){0,8}|R[0-8]?|' \
+                       '#\h(?:(?:\h\h){0,8}|(?:\h{8}){3,6}|(?:\h{8}){8}|(?:\h{8}){12}|(?:\h{8}){16}))\n'
 
       # +backwards+: a Backwards when the log is not in time order, else nil.
       attr_reader :path, :interface, :other_interfaces, :malformed, :malformed_count, :lines, :backwards
@@ -98,7 +101,8 @@ module Syskit
           while pos < size
             if !long && fast && (run = runs.match(data, pos))
               # Lines as candump -l writes them, up to the first that is
-              # not: (SSSSSSSSSS.UUUUUU) IFACE III#DD.. or IIIIIIII#DD..
+              # not: (SSSSSSSSSS.UUUUUU) IFACE III#DD.. or IIIIIIII#DD..,
+              # #R or #Rn for a remote request, ##FDD.. for CAN FD.
               stop = run.end(0)
               while pos < stop
                 eol = data.index("\n", pos)
@@ -107,11 +111,18 @@ module Syskit
                 id_at = pos + id_start
                 if data.getbyte(id_at + 3) == HASH_MARK
                   key = data.byteslice(id_at, 3).to_i(16)
-                  bytes_total += (eol - id_at - 4) >> 1
+                  mark = id_at + 4 # the first byte after '#'
                 else
                   key = data.byteslice(id_at, 8).to_i(16) | Frame::EFF_FLAG
                   extended += 1
-                  bytes_total += (eol - id_at - 9) >> 1
+                  mark = id_at + 9
+                end
+                case data.getbyte(mark)
+                when HASH_MARK # CAN FD: its bytes are not in the classic total
+                  fd_frames += 1
+                  fd_extended += 1 if key >= Frame::EFF_FLAG
+                when RTR_MARK then rtr_frames += 1 # a request carries no data
+                else bytes_total += (eol - mark) >> 1
                 end
                 time = (data.byteslice(pos + 1, 10).to_i * 1_000_000) + data.byteslice(pos + 12, 6).to_i
                 # Traffic#count and #stretch, inline (times are never nil here).

@@ -276,6 +276,22 @@ module Syskit
                       at: 'config/robots/default.rb:1', root: root
     end
 
+    def test_an_app_renamed_is_told_why_its_own_name_slash_models_requires_fail
+      root = write_app({ 'config/syskit.yml' => "name: MyApp\n",
+                         'models/devices/imu.rb' => "# the IMU\n",
+                         'models/devices/a.rb' => "require 'my_app/models/devices/imu'\n" },
+                       name: 'my_app_copy')
+      assert_reported load_problem(root), %r{LoadError: cannot load such file -- my_app/models/devices/imu},
+                      at: 'models/devices/a.rb:1', root: root,
+                      hint: %r{directory is named 'my_app_copy': rename it to 'my_app', or require 'models/devices/imu'}
+    end
+
+    def test_a_missing_file_under_another_bundles_name_keeps_the_plain_hint
+      root = write_app({ 'models/devices/a.rb' => "require 'other_bundle/models/devices/none'\n" }, name: 'my_app')
+      error = load_problem(root)
+      assert_match(/fix the code at this line/, error.hint)
+    end
+
     def test_an_unknown_robot_configuration
       app = load_app(my_app)
       error = assert_raises(FileLoadError) { app.robot_config('defualt') }

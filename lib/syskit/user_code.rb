@@ -68,10 +68,27 @@ module Syskit
         ['stack level too deep (an endless recursion?)', 'find the method that calls itself without end']
       when NoMemoryError
         ["out of memory (#{first_line(exception.message)})", 'look for a loop that builds ever bigger values']
+      when LoadError
+        ["#{exception.class}: #{first_line(exception.message)}",
+         renamed_app_hint(exception.path) || 'fix the code at this line (run with --trace for the backtrace)']
       else
         ["#{exception.class}: #{first_line(exception.message)}",
          'fix the code at this line (run with --trace for the backtrace)']
       end
+    end
+
+    # Rock finds 'NAME/models/x' by the name of a bundle's directory: an
+    # app copied or cloned under another name no longer finds its own
+    # files required that way. The hint for such a require, nil otherwise.
+    def renamed_app_hint(required)
+      name, relative = required.to_s.match(%r{\A([^/]+)/(models/.+)\z})&.captures
+      root = Syskit.app&.root
+      return unless name && root && File.basename(root) != name &&
+                    File.file?(File.join(root, "#{relative.delete_suffix('.rb')}.rb"))
+
+      "'#{name}/#{relative}' is this app's own #{relative}, found through the name of the app's " \
+        "directory as Rock does, but the directory is named '#{File.basename(root)}': rename it to " \
+        "'#{name}', or require '#{relative}'"
     end
 
     def location_of(exception, path, root = nil)

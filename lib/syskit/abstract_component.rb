@@ -195,11 +195,16 @@ module Syskit
     # +new(conf: %w[default slow])+ or +task.conf = [...]+ set it.
     argument :conf, default: %w[default].freeze
 
+    # The arguments of a task made without any (shared, never changed).
+    NO_ARGUMENTS = {}.freeze
+
     # What plans it, when it stands for requirements still to be planned
     # (see InstanceRequirements#as_plan).
     attr_accessor :planning_task
 
-    def initialize(arguments = {})
+    # Subclasses set up their own state first, then call super with the
+    # arguments, so that they are assigned once.
+    def initialize(arguments = NO_ARGUMENTS)
       super()
       assign_arguments(arguments)
     end

@@ -21,11 +21,10 @@ module Syskit
 
     attr_accessor :name, :parent
 
-    def initialize(arguments = {})
-      super()
+    def initialize(arguments = NO_ARGUMENTS)
       @children = {}
       @child_selection = {}
-      assign_arguments(arguments)
+      super
     end
 
     # What was selected for each child, by role: an InstanceSelection (its

@@ -145,6 +145,7 @@ module Syskit
     # driver's service to the device (+gps_dev: device+), as Syskit's.
     def arguments
       return @arguments unless device_driver_service
+      return device.driver_arguments if @arguments.empty?
 
       device.driver_arguments.merge(@arguments)
     end
@@ -176,8 +177,16 @@ module Syskit
 
     # The task or composition model among the models (nil when only
     # services are required: the requirements are then abstract).
+    #
+    # Asked several times per task while generating, so it allocates
+    # nothing: a device's requirements (no models given) require its
+    # device model, a module; Array#index, unlike Enumerable#find, makes
+    # no intermediate objects.
     def component_model
-      models.find { |m| m.is_a?(Class) }
+      return if @models.nil?
+
+      found = @models.index { |m| m.is_a?(Class) }
+      @models[found] if found
     end
 
     def composition?
@@ -213,7 +222,9 @@ module Syskit
       return own unless own.empty?
 
       hints = device&.deployment_hints
-      hints.nil? || hints.empty? ? own : hints.dup.freeze
+      return own if hints.nil? || hints.empty?
+
+      hints.frozen? ? hints : hints.dup.freeze
     end
 
     # Where the deployment hints were given, for errors about them.

@@ -34,7 +34,11 @@ module Syskit
     NO_PORTS = {}.freeze
     NO_CALLS = [].freeze
     NO_CONNECTIONS = [].freeze
-    private_constant :NO_PORTS, :NO_CALLS, :NO_CONNECTIONS
+    # Most tasks depend on none (only those on a bus do). The tasks and
+    # their infos are kept in two lists rather than as pairs: #children is
+    # asked for more often than #each_child.
+    NO_CHILDREN = [].freeze
+    private_constant :NO_PORTS, :NO_CALLS, :NO_CONNECTIONS, :NO_CHILDREN
 
     attr_reader :deployed_task
 
@@ -49,14 +53,13 @@ module Syskit
       requirements&.device&.name || plan_path&.tr('.', '_') || Naming.underscore(model.name.to_s.split('::').last)
     end
 
-    def initialize(arguments = {})
-      super()
+    def initialize(arguments = NO_ARGUMENTS)
       @properties = model.properties_class.initial(self)
       @created_ports = NO_PORTS
-      @children = []
-      @child_tasks = []
+      @child_tasks = NO_CHILDREN
+      @child_infos = NO_CHILDREN
       @connections = NO_CONNECTIONS
-      assign_arguments(arguments)
+      super
     end
 
     # The ports created at configure time, by name.
@@ -194,10 +197,10 @@ module Syskit
     end
 
     # The tasks this one depends on (its bus drivers), as +[task, info]+ pairs.
-    def each_child(&block)
-      return enum_for(__method__) unless block
+    def each_child
+      return enum_for(__method__) unless block_given?
 
-      @children.each(&block)
+      @child_tasks.each_with_index { |task, i| yield [task, @child_infos[i]] }
     end
 
     # The tasks this one depends on.
@@ -208,8 +211,12 @@ module Syskit
     def add_child(task, info = {})
       return if @child_tasks.any? { |t| t.equal?(task) }
 
-      @children << [task, info]
+      if @child_tasks.frozen?
+        @child_tasks = []
+        @child_infos = []
+      end
       @child_tasks << task
+      @child_infos << info
     end
 
     # Static ports and ports created at configure time, by name.

@@ -1,3 +1,5 @@
+# frozen_string_literal: true
+
 # Syskit integration of the canbus component, configured as Rock's common
 # models configure it: the bus driver takes every device's frames on its
 # shared 'in' port (BusInSrv), and each device that reads from the bus is
@@ -12,7 +14,9 @@ class OroGen::Canbus::Task
   def configure
     super
 
-    each_declared_attached_device.select(&:bus_to_client?).each do |dev|
+    each_declared_attached_device do |dev|
+      next unless dev.bus_to_client?
+
       id, mask = dev.can_id
       unless id
         raise Syskit::ConfigurationError.new(

@@ -77,6 +77,28 @@ module Syskit
       refute cmp_m.has_argument?(:read_only)
     end
 
+    # A model's defaults are kept between its tasks: an argument declared
+    # later, here or on a parent model, still reaches the tasks made after.
+    def test_an_argument_declared_after_a_task_was_made_reaches_the_next_tasks
+      child_m = @task_m.new_submodel(name: 'SlowPump')
+      assert_nil child_m.new.arguments[:pressure]
+      @task_m.argument :pressure, default: 2
+      assert_equal Compat::Roby::DefaultArgument.new(2), child_m.new.arguments[:pressure]
+      child_m.argument :rate, default: 1
+      assert_equal Compat::Roby::DefaultArgument.new(1), child_m.new.arguments[:rate]
+      assert_equal Compat::Roby::DefaultArgument.new(10), @task_m.new.arguments[:rate]
+    end
+
+    # Tasks share their model's defaults, never what another task set.
+    def test_setting_an_argument_changes_only_that_task
+      first = @task_m.new
+      first.rate = 3
+      assert_equal 3, first.rate
+      assert first.arguments.set?(:rate)
+      assert_equal 10, @task_m.new.rate
+      refute @task_m.new.arguments.set?(:rate)
+    end
+
     def test_requirements_of_a_task_carry_its_sections_as_sections
       requirements = @task_m.new(conf: %w[slow], rate: 3).to_instance_requirements
       assert_equal %w[slow], requirements.conf

@@ -18,13 +18,26 @@ module Syskit
         raise unknown_property(properties, file, names, key) unless properties.include?(key)
 
         check_symbol(properties, key, value)
-        properties[key].write(numbers(file, names, key).convert(properties.declarations.fetch(key).type, value))
+        properties[key].write(with_units(properties, file, names, key, value))
       rescue Types::ValueError => e
         raise ConfigurationError.new("property '#{key}' of #{properties.class.task_model.name}: #{e.message}",
                                      location: file.location_of(key, names),
                                      hint: 'write a number, optionally followed by units: 0.5, 2.deg, 150.ms')
       rescue ConfigurationError => e
         raise e.at(file.location_of(key, names))
+      end
+
+      # +value+ with its numbers written with units read (see #numbers).
+      # Only text and containers can hold any, and a float given to an
+      # integer field is rounded: other values (most are plain numbers) are
+      # taken as they are, without a converter made for each.
+      def with_units(properties, file, names, key, value)
+        type = properties.declarations.fetch(key).type
+        case value
+        when String, Array, Hash then numbers(file, names, key).convert(type, value)
+        when Float then type.is_a?(Types::IntegerType) ? numbers(file, names, key).convert(type, value) : value
+        else value
+        end
       end
 
       # Numbers written with units or a rounding (2.deg, 2.5.round), read

@@ -130,9 +130,22 @@ module Syskit
       end
 
       # For a model this one provides, its port names mapped to ours.
+      # Generation asks for them once per device: they are kept (frozen)
+      # until any model's hierarchy changes.
       def port_mappings_for(model)
         return (@identity_mappings ||= ports.keys.to_h { |n| [n, n] }.freeze) if model.equal?(self)
 
+        version = DataServiceModel.hierarchy_version
+        if @port_mappings_version != version
+          @port_mappings = {}.compare_by_identity
+          @port_mappings_version = version
+        end
+        @port_mappings.fetch(model) { @port_mappings[model] = inherited_port_mappings(model).freeze }
+      end
+
+      private
+
+      def inherited_port_mappings(model)
         parents.each do |parent, mapping|
           next unless parent.fullfills?(model)
 
@@ -140,8 +153,6 @@ module Syskit
         end
         raise ArgumentError, "#{self} does not provide #{model}"
       end
-
-      private
 
       # What a model of this kind may provide.
       def check_provides(model, location)

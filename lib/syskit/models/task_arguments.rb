@@ -20,12 +20,20 @@ module Syskit
         end
 
         (@argument_declarations ||= {})[name] = [default, location, doc]
+        TaskArguments.declared
         define_method(name) do
           value = arguments.fetch(name) { self.class.argument_default(name, Location.of_caller) }
           value.is_a?(Compat::Roby::DefaultArgument) ? value.value : value
         end
-        # As on a Roby task, tests set arguments on an instance (+task.x = 1+).
-        define_method("#{name}=") { |value| @arguments = arguments.merge(name => value) }
+        # As on a Roby task, tests set arguments on an instance (+task.x = 1+):
+        # in place, as merging tasks does; frozen ones are replaced.
+        define_method("#{name}=") do |value|
+          if arguments.frozen?
+            @arguments = arguments.merge(name => value)
+          else
+            arguments[name] = value
+          end
+        end
         name
       end
 
@@ -65,9 +73,31 @@ module Syskit
       # The arguments a new task starts with, as Roby's: each declared
       # argument that has a default, as a Roby::DefaultArgument (not set,
       # see Compat::Roby::TaskArguments#set?).
+      #
+      # Every task of the model starts with them: they are made once per
+      # model (frozen, DefaultArgument being a frozen value), and made again
+      # only after an argument was declared on any model, this one's
+      # parents included.
       def default_arguments
-        argument_declarations.each_with_object({}) do |(name, (default, _)), defaults|
-          defaults[name] = Compat::Roby::DefaultArgument.new(default) unless default.equal?(NO_DEFAULT)
+        if @default_arguments.nil? || @default_arguments_count != TaskArguments.declarations
+          @default_arguments_count = TaskArguments.declarations
+          @default_arguments = argument_declarations.each_with_object({}) do |(name, (default, _)), defaults|
+            defaults[name] = Compat::Roby::DefaultArgument.new(default) unless default.equal?(NO_DEFAULT)
+          end.freeze
+        end
+        @default_arguments
+      end
+
+      @declarations = 0
+
+      class << self
+        # How many arguments were declared so far, on all models: what
+        # tells a model its #default_arguments are no longer up to date.
+        attr_reader :declarations
+
+        # Counts an argument declared.
+        def declared
+          @declarations += 1
         end
       end
 

@@ -51,8 +51,10 @@ module Syskit
       # message type; nil when it has none. What network generation and a
       # bus task's +attach+ (the com_bus dynamic service) both use.
       def self.bus_port_of(model, direction, service_model, service_port, dynamic_name)
-        service = model.services_fulfilling(service_model).find { |srv| srv.dynamic_service.nil? }
-        return [service.task_port_for(service_model, service_port).name, false] if service
+        # Array#index, not #find: asked twice per device, it allocates nothing.
+        services = model.services_fulfilling(service_model)
+        found = services.index { |srv| srv.dynamic_service.nil? }
+        return [services[found].task_port_for(service_model, service_port).name, false] if found
 
         type = service_model.bus_model.message_type
         return [dynamic_name, true] if model.spec&.dynamic_port_for(direction, dynamic_name, type)

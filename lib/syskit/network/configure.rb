@@ -11,9 +11,7 @@ module Syskit
       end
 
       def run
-        @context.order.each do |step|
-          configure(step.task) if step.step == 'configure'
-        end
+        @context.configure_order.each { |task| configure(task) }
       end
 
       # Configures one task: its sections, configure method and stubs.
@@ -39,7 +37,7 @@ module Syskit
         location = sections_location(task, device)
         file = stubbed_sections(@context.app.conf_file(task.model), task.conf, location)
         unless file
-          return if task.conf == ['default']
+          return if task.conf == DEFAULT_CONF
 
           raise ConfigurationError.new(
             "#{device || task} asks for sections #{task.conf.join(', ')} but #{task.model.name} " \
@@ -55,7 +53,8 @@ module Syskit
       end
 
       STUBBED_AT = Location.new('(stubbed sections)', 0)
-      private_constant :STUBBED_AT
+      DEFAULT_CONF = %w[default].freeze
+      private_constant :STUBBED_AT, :DEFAULT_CONF
 
       # With stub deployments (the network of a test), the sections a task
       # asks for that its file lacks are empty, as Syskit's stubs make

@@ -108,17 +108,24 @@ module Syskit
       def check_multiplexing
         writers = writer_counts
         shared = @context.connections.select do |c|
-          writers[c.to_task][c.to_port.name] > 1 && !c.to_port.multiplexes?
+          counts = writers[c.to_task]
+          counts && counts[c.to_port.name] > 1 && !c.to_port.multiplexes?
         end
         shared.group_by { |c| [c.to_task, c.to_port.name] }.each_value do |into|
           @context.error(multiplexing_error(into))
         end
       end
 
-      # How many connections write to each input port, by task and port name.
+      # How many connections write to each input port, by task and port
+      # name, on the tasks written to more than once (nil for the others:
+      # most tasks have one input connected, they get no hash each).
       def writer_counts
-        writers = Hash.new { |h, task| h[task] = Hash.new(0) }.compare_by_identity
-        @context.connections.each { |c| writers[c.to_task][c.to_port.name] += 1 }
+        by_task = Hash.new(0).compare_by_identity
+        @context.connections.each { |c| by_task[c.to_task] += 1 }
+        writers = {}.compare_by_identity
+        @context.connections.each do |c|
+          (writers[c.to_task] ||= Hash.new(0))[c.to_port.name] += 1 if by_task[c.to_task] > 1
+        end
         writers
       end
 

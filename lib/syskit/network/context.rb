@@ -13,7 +13,9 @@ module Syskit
 
       attr_reader :app, :profile, :robot_config, :requirements, :tasks, :bus_links,
                   :expected_ports, :connections, :errors, :roots, :compositions
-      attr_accessor :order, :stub_deployments
+      # The configure and start steps (Plan::Step), and the tasks in the
+      # order they are configured (see Order).
+      attr_accessor :order, :configure_order, :stub_deployments
 
       def initialize(app:, requirements:, profile: nil, robot_config: nil, stub_deployments: false)
         @app = app

@@ -36,7 +36,9 @@ module Syskit
         end
 
         arguments = device.driver_arguments
-        arguments = requirement.arguments.merge(arguments) unless requirement.arguments.empty?
+        given = requirement.arguments
+        # A device's own requirements give the same (frozen) driver arguments.
+        arguments = given.merge(arguments) unless given.empty? || given.equal?(arguments)
         task = model.new(arguments)
         Instantiate.assign_conf(task, requirement)
         create_slave_ports(task, device)

@@ -6,9 +6,6 @@ module Syskit
     # configured once the buses it is attached through are started; tasks of
     # the same rank are ordered by name, so the order is stable.
     class Order
-      # One step of the order: 'configure' or 'start' a task.
-      Step = Struct.new(:step, :task, :rank)
-
       def initialize(context)
         @context = context
         @ranks = {}.compare_by_identity
@@ -16,15 +13,20 @@ module Syskit
       end
 
       # Steps are put in one bucket per rank, tasks taken in name order, so
-      # no sort is needed (configure ranks are even, start ranks odd).
+      # no sort is needed (configure ranks are even, start ranks odd). The
+      # steps are made as the plan lists them (Plan::Step, by task name);
+      # Configure takes the tasks in the order of their configure steps.
       def run
-        buckets = []
+        steps = []
+        configure = []
         @context.tasks_by_name.each do |task|
           rank = configure_rank(task)
-          (buckets[rank] ||= []) << Step.new('configure', task, rank)
-          (buckets[rank + 1] ||= []) << Step.new('start', task, rank + 1)
+          (steps[rank] ||= []) << Plan::Step.new('configure', task.name).freeze
+          (steps[rank + 1] ||= []) << Plan::Step.new('start', task.name).freeze
+          (configure[rank] ||= []) << task
         end
-        @context.order = buckets.compact.flatten(1)
+        @context.order = steps.compact.flatten(1).freeze
+        @context.configure_order = configure.compact.flatten(1)
       end
 
       private

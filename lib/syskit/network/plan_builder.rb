@@ -23,7 +23,7 @@ module Syskit
             tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports, context.robot_config) },
             devices: device_entries(context, paths),
             connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
-            order: context.order.map { |s| Step.new(s.step, s.task.name).freeze },
+            order: context.order,
             buses: bus_entries(context, paths),
             compositions: context.compositions.map { |c| composition_entry(c) }.sort_by!(&:name)
           )
@@ -151,11 +151,13 @@ module Syskit
           ports = static_ports[task.model] ||= task.model.ports.each_value.filter_map do |p|
             port_entry(p) unless Orogen::TaskSpec.state_port?(p)
           end.sort_by!(&:name).freeze
-          extra = task.created_ports.each_value.map { |p| port_entry(p) }
+          created = task.created_ports
           state = task.model.ports[Orogen::TaskSpec::STATE_PORT]
-          extra << port_entry(state) if state && state_port_connected?(task, state)
-          return ports if extra.empty?
+          state = nil unless state && state_port_connected?(task, state)
+          return ports if created.empty? && !state
 
+          extra = created.values.map! { |p| port_entry(p) }
+          extra << port_entry(state) if state
           (ports + extra).sort_by!(&:name).freeze
         end
 
@@ -183,7 +185,9 @@ module Syskit
         def declared_at(location, paths)
           return unless location
 
-          "#{paths[location.path] ||= location.relative_path}:#{location.lineno}"
+          # format writes the line number into the string (interpolation
+          # would make a string of it first).
+          format('%s:%d', paths[location.path] ||= location.relative_path, location.lineno) # rubocop:disable Style/FormatStringToken
         end
 
         DIRECTIONS = { input: 'input', output: 'output' }.freeze
@@ -204,7 +208,12 @@ module Syskit
         # DSL attributes by name, sorted.
         def plain_attributes(attributes)
           plain = {}
-          attributes.keys.sort!.each { |k| plain[k.name] = attributes[k] }
+          # Most devices have one (can_id): no sorted list of one is made.
+          if attributes.size == 1
+            attributes.each { |k, v| plain[k.name] = v }
+          else
+            attributes.keys.sort!.each { |k| plain[k.name] = attributes[k] }
+          end
           freeze_plain(plain)
         end
 

@@ -98,8 +98,11 @@ module Syskit
 
       # The dynamic port pattern +name+ of +type+ would be created from.
       def dynamic_port_for(direction, name, type)
-        all_dynamic_ports.each { |p| return p if p.direction == direction && p.match?(name, type) }
-        nil
+        # Array#index, not #find or a return from #each: asked per device,
+        # it allocates nothing.
+        patterns = all_dynamic_ports
+        found = patterns.index { |p| p.direction == direction && p.match?(name, type) }
+        patterns[found] if found
       end
 
       # Called once the task_context block is evaluated: the inherited views

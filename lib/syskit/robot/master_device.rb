@@ -109,8 +109,16 @@ module Syskit
 
       # The task arguments that bind the driver's services to this device
       # (+gps_dev: device+), once the driver is known.
+      #
+      # Generation asks for them several times per device: they are made
+      # once per driver (frozen), again if the driver changes.
       def driver_arguments
-        { driver_model.argument_name => self }
+        driver = driver_model
+        unless @driver_arguments_of.equal?(driver)
+          @driver_arguments_of = driver
+          @driver_arguments = { driver.argument_name => self }.freeze
+        end
+        @driver_arguments
       end
 
       # What the device asks of its driver (Syskit's +device.requirements+):

@@ -21,6 +21,7 @@ module Syskit
       include ComBusClient
 
       DEFAULT_CONF = ['default'].freeze
+      NO_HINTS = [].freeze
 
       attr_reader :name, :robot, :declared_at, :requested_model, :using, :bus,
                   :deployment_hints, :dsl_attributes, :client_to_bus, :bus_to_client
@@ -32,7 +33,9 @@ module Syskit
         @using = using
         @declared_at = location
         @conf = DEFAULT_CONF
-        @deployment_hints = []
+        # Frozen, replaced when hints are added: requirements hand it out
+        # as it is (see InstanceRequirements#deployment_hints).
+        @deployment_hints = NO_HINTS
         @dsl_attributes = {}
         @settings = {}
         @client_to_bus = true
@@ -127,7 +130,7 @@ module Syskit
           raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{hint.inspect}",
                                      location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
         end
-        @deployment_hints.concat(hints)
+        @deployment_hints = (@deployment_hints + hints).freeze
         @deployment_hints_location = Location.of_caller
         self
       end

@@ -35,7 +35,16 @@ module Syskit
 
       # The canonical spelling of a type name: leading slash, base type
       # aliases resolved, container arguments normalized.
+      #
+      # Kept per name: a port created at configure time (a bus driver's
+      # port for each device) asks for its type's name each time.
       def self.normalize(name)
+        NORMALIZED[name] || (NORMALIZED[name] = canonical(name).freeze)
+      end
+
+      NORMALIZED = {} # rubocop:disable Style/MutableConstant -- filled as names are met
+
+      def self.canonical(name)
         name = name.to_s.strip
         return "#{normalize(Regexp.last_match(1))}[#{Regexp.last_match(2)}]" if name =~ /\A(.+)\[(\d+)\]\z/
 
@@ -49,6 +58,7 @@ module Syskit
         name = name.gsub('::', '/')
         ALIASES.fetch(name) { ALIASES.fetch(name.delete_prefix('/')) { name.start_with?('/') ? name : "/#{name}" } }
       end
+      private_class_method :canonical
 
       # The type called +name+, nil if it is not known. Containers and arrays
       # of known types are created on demand.

@@ -164,10 +164,16 @@ module Syskit
       # Syskit::TaskContext defines +configure+ and none defines
       # +update_properties+. Methods of modules mixed in are not counted.
       def use_update_properties?
-        classes = ancestors.take_while { |a| !a.equal?(Syskit::TaskContext) }.grep(Class)
-        return true if classes.any? { |c| defines_own?(c, :update_properties) }
+        configure = false
+        # One walk, no intermediate lists: the generator asks once per task.
+        ancestors.each do |klass|
+          break if klass.equal?(Syskit::TaskContext)
+          next unless klass.is_a?(Class)
+          return true if defines_own?(klass, :update_properties)
 
-        classes.none? { |c| defines_own?(c, :configure) }
+          configure ||= defines_own?(klass, :configure)
+        end
+        !configure
       end
 
       # The class of the task's component (+orocos_task+, and what +stub+

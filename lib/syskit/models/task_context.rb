@@ -6,6 +6,7 @@ require 'syskit/models/dynamic_services'
 require 'syskit/models/task_specialization'
 require 'syskit/models/task_context_orogen'
 require 'syskit/models/task_state_events'
+require 'syskit/models/configuration_hooks'
 
 module Syskit
   module Models
@@ -22,6 +23,7 @@ module Syskit
       include TaskSpecialization
       include TaskContextOrogen
       include TaskStateEvents
+      include ConfigurationHooks
 
       attr_reader :spec
 
@@ -159,23 +161,6 @@ module Syskit
         spec ? spec.all_operations : {}
       end
 
-      # Whether the task is configured through +update_properties+ (Syskit's
-      # newer hook) rather than +configure+: true unless a model class below
-      # Syskit::TaskContext defines +configure+ and none defines
-      # +update_properties+. Methods of modules mixed in are not counted.
-      def use_update_properties?
-        configure = false
-        # One walk, no intermediate lists: the generator asks once per task.
-        ancestors.each do |klass|
-          break if klass.equal?(Syskit::TaskContext)
-          next unless klass.is_a?(Class)
-          return true if defines_own?(klass, :update_properties)
-
-          configure ||= defines_own?(klass, :configure)
-        end
-        !configure
-      end
-
       # The class of the task's component (+orocos_task+, and what +stub+
       # blocks are evaluated on).
       def component_class
@@ -183,10 +168,6 @@ module Syskit
       end
 
       private
-
-      def defines_own?(klass, name)
-        klass.method_defined?(name, false) || klass.private_method_defined?(name, false)
-      end
 
       def setup_model(spec)
         @spec = spec

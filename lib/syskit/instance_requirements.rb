@@ -109,7 +109,9 @@ module Syskit
       @arguments = arguments.frozen? ? arguments : arguments.dup.freeze
       @conf = conf&.freeze
       @conf_location = conf_location
-      @deployment_hints = deployment_hints ? deployment_hints.dup : []
+      # Held requirements (open, see below) freeze their list: without hints
+      # given they share the frozen empty one (a profile's device actions).
+      @deployment_hints = deployment_hints&.dup || (open ? NO_HINTS : [])
       @deployment = deployment
       # A group still open to changes is another's: these get their own.
       @deployment_group = deployment_group&.frozen? ? deployment_group : deployment_group&.dup

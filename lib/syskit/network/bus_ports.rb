@@ -26,8 +26,8 @@ module Syskit
         @type = @bus_model.message_type
         @bus_task = bus_task
         @link = Context::BusLink.new(device, bus_task)
-        @link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', device.name) if device.bus_to_client?
-        @link.bus_input = bus_port(:input, @bus_model.bus_in_srv, 'to_bus', "w#{device.name}") if device.client_to_bus?
+        @link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', '') if device.bus_to_client?
+        @link.bus_input = bus_port(:input, @bus_model.bus_in_srv, 'to_bus', 'w') if device.client_to_bus?
       end
 
       # The link, completed with the ports of the device's task.
@@ -51,10 +51,8 @@ module Syskit
       # message type; nil when it has none. What network generation and a
       # bus task's +attach+ (the com_bus dynamic service) both use.
       def self.bus_port_of(model, direction, service_model, service_port, dynamic_name)
-        # Array#index, not #find: asked twice per device, it allocates nothing.
-        services = model.services_fulfilling(service_model)
-        found = services.index { |srv| srv.dynamic_service.nil? }
-        return [services[found].task_port_for(service_model, service_port).name, false] if found
+        name = service_port_of(model, service_model, service_port)
+        return [name, false] if name
 
         type = service_model.bus_model.message_type
         return [dynamic_name, true] if model.spec&.dynamic_port_for(direction, dynamic_name, type)
@@ -63,9 +61,25 @@ module Syskit
         [single.first.name, false] if single.size == 1
       end
 
+      # The port of the bus driver +model+'s service of +service_model+
+      # that serves every device, nil when it has none. Array#index, not
+      # #find: asked twice per device, it allocates nothing.
+      def self.service_port_of(model, service_model, service_port)
+        services = model.services_fulfilling(service_model)
+        found = services.index { |srv| srv.dynamic_service.nil? }
+        services[found].task_port_for(service_model, service_port).name if found
+      end
+
       private
 
-      def bus_port(direction, service_model, service_port, dynamic_name)
+      # The bus side's port for the device in +direction+; +prefix+ and the
+      # device's name make its per-device port's name (made only when the
+      # driver has no service port for every device).
+      def bus_port(direction, service_model, service_port, prefix)
+        shared = BusPorts.service_port_of(@bus_task.model, service_model, service_port)
+        return shared if shared
+
+        dynamic_name = prefix.empty? ? @device.name : "#{prefix}#{@device.name}"
         name, dynamic = BusPorts.bus_port_of(@bus_task.model, direction, service_model, service_port, dynamic_name)
         raise no_bus_port(direction, dynamic_name) unless name
 

@@ -24,17 +24,27 @@ module Syskit
         apply_sections(task, device)
         user_code(task, device, 'update_properties') { task.update_properties } if task.model.use_update_properties?
         user_code(task, device, 'configure') { task.configure }
-        component = task.orocos_task
-        task.model.stub_blocks.each do |block|
-          user_code(task, device, 'stub') { component.instance_exec(&block) }
-        end
-        user_code(task, device, 'stub') { component.run_stubbed_operations }
+        run_stubs(task, device)
         create_expected_ports(task)
       rescue Syskit::Error => e
         @context.error(e)
       end
 
       private
+
+      # The stub blocks, then the operations configure called that they
+      # define. A task without stub blocks gets no component here (most
+      # get none at all): it would have nothing to run.
+      def run_stubs(task, device)
+        stubs = task.model.stub_blocks
+        return if stubs.empty?
+
+        component = task.orocos_task
+        stubs.each do |block|
+          user_code(task, device, 'stub') { component.instance_exec(&block) }
+        end
+        user_code(task, device, 'stub') { component.run_stubbed_operations }
+      end
 
       def apply_sections(task, device)
         location = sections_location(task, device)

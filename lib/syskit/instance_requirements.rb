@@ -109,9 +109,7 @@ module Syskit
       @arguments = arguments.frozen? ? arguments : arguments.dup.freeze
       @conf = conf&.freeze
       @conf_location = conf_location
-      # Held requirements (open, see below) freeze their list: without hints
-      # given they share the frozen empty one (a profile's device actions).
-      @deployment_hints = deployment_hints&.dup || (open ? NO_HINTS : [])
+      @deployment_hints = InstanceRequirements.own_hints(deployment_hints, open)
       @deployment = deployment
       # A group still open to changes is another's: these get their own.
       @deployment_group = deployment_group&.frozen? ? deployment_group : deployment_group&.dup
@@ -126,6 +124,15 @@ module Syskit
       # Held, as frozen ones (see Changes#held?): their lists are too.
       freeze_deployments if open
       extend_readers
+    end
+
+    # A new requirements' list of hints, a copy of +given+: held ones
+    # (+open+, see #initialize) freeze it, so without hints given they
+    # share the frozen empty one (a profile's device actions).
+    def self.own_hints(given, open)
+      return given.dup if given
+
+      open ? NO_HINTS : []
     end
 
     # The required models: a component model and/or data service models;

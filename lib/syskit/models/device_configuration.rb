@@ -19,10 +19,15 @@ module Syskit
         filter_method = :"__dsl_attribute_filter_#{attr}"
         # define_method gives the filter a method's strict arity.
         define_method(filter_method, &filter) if filter
+        # An if rather than an early return: a return from the block of
+        # define_method costs an object at each read (generation reads an
+        # attribute per device).
         define_method(attr) do |*args|
-          return read_attribute(attr, dsl_attributes[attr]) if args.empty?
-
-          set_dsl_attribute(attr, args, filter ? filter_method : nil)
+          if args.empty?
+            read_attribute(attr, dsl_attributes[attr])
+          else
+            set_dsl_attribute(attr, args, filter ? filter_method : nil)
+          end
         end
         (@dsl_attribute_names ||= []) << attr
         attr

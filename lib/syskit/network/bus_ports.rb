@@ -14,25 +14,31 @@ module Syskit
     # provides (named by the bus_to_client:/client_to_bus: options when there
     # are several), else its single port of the message type.
     class BusPorts
-      # Chooses the bus driver's side of the device's link: its port to the
-      # device (+bus_output+) and from it (+bus_input+), nil for a direction
-      # the device does not use. +expected+ collects the per-device ports
-      # the bus driver must create.
-      def initialize(device, bus_task, expected)
+      # One per bus driver task (the one of +bus_task+); +expected+
+      # collects the per-device ports it must create. Each call works on
+      # one device: the instance keeps it while choosing its ports.
+      def initialize(bus_task, expected)
+        @bus_task = bus_task
         @expected = expected
+      end
+
+      # The bus driver's side of +device+'s link: its port to the device
+      # (+bus_output+) and from it (+bus_input+), nil for a direction the
+      # device does not use.
+      def bus_side(device)
         @device = device
         @bus = device.bus
         @bus_model = @bus.model
         @type = @bus_model.message_type
-        @bus_task = bus_task
-        @link = Context::BusLink.new(device, bus_task)
-        @link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', '') if device.bus_to_client?
-        @link.bus_input = bus_port(:input, @bus_model.bus_in_srv, 'to_bus', 'w') if device.client_to_bus?
+        link = Context::BusLink.new(device, @bus_task)
+        link.bus_output = bus_port(:output, @bus_model.bus_out_srv, 'from_bus', '') if device.bus_to_client?
+        link.bus_input = bus_port(:input, @bus_model.bus_in_srv, 'to_bus', 'w') if device.client_to_bus?
+        link
       end
 
-      # The link, completed with the ports of the device's task.
-      def link(device_task)
-        link = @link
+      # The link of +device+, completed with the ports of its task.
+      def link(device, device_task)
+        link = bus_side(device)
         @device_task = device_task
         link.device_task = device_task
         if link.bus_output

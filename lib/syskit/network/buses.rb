@@ -22,6 +22,7 @@ module Syskit
       def initialize(context)
         @context = context
         @drivers = Drivers.new(context)
+        @bus_ports = {}.compare_by_identity
       end
 
       def run
@@ -52,7 +53,12 @@ module Syskit
 
       def link(device, task, bus_task)
         task.add_child(bus_task, BUS_CHILD)
-        @context.bus_links << BusPorts.new(device, bus_task, @context.expected_ports[bus_task]).link(task)
+        @context.bus_links << ports_of(bus_task).link(device, task)
+      end
+
+      # A BusPorts per bus driver task, not per device.
+      def ports_of(bus_task)
+        @bus_ports[bus_task] ||= BusPorts.new(bus_task, @context.expected_ports[bus_task])
       end
 
       def bus_task_for(bus, queue)
@@ -80,7 +86,7 @@ module Syskit
       end
 
       def serve_unplanned(device, task)
-        BusPorts.new(device, task, @context.expected_ports[task])
+        ports_of(task).bus_side(device)
         task.attach_device(device)
       rescue Syskit::Error => e
         @context.error(e)

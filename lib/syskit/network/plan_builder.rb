@@ -18,11 +18,12 @@ module Syskit
           # tasks; a file's path relative to the app is computed once.
           static_ports = {}
           paths = {}
+          endpoints = [{}.compare_by_identity, {}.compare_by_identity] # by task: last source, last sink
           Plan.new(
             profile: context.profile&.name, robot: context.robot_config&.name,
             tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports, context.robot_config) },
             devices: device_entries(context, paths),
-            connections: context.connections.map { |c| connection_entry(c) }.sort_by! { |c| connection_key(c) },
+            connections: context.connections.map { |c| connection_entry(c, endpoints) }.sort_by! { |c| connection_key(c) },
             order: context.order,
             buses: bus_entries(context, paths),
             compositions: context.compositions.map { |c| composition_entry(c) }.sort_by!(&:name)
@@ -197,12 +198,23 @@ module Syskit
                    port.declared_type).freeze
         end
 
-        def connection_entry(conn)
+        def connection_entry(conn, endpoints)
           Connection.new(
-            Endpoint.new(conn.from_task.name, conn.from_port.name).freeze, # from
-            Endpoint.new(conn.to_task.name, conn.to_port.name).freeze,     # to
-            conn.from_port.type.name, conn.policy                          # type, policy (frozen)
+            endpoint(conn.from_task, conn.from_port, endpoints[0]), # from
+            endpoint(conn.to_task, conn.to_port, endpoints[1]),     # to
+            conn.from_port.type.name, conn.policy                 # type, policy (frozen)
           ).freeze
+        end
+
+        # The endpoint of +task+'s +port+. A bus driver's port shared by
+        # its devices is in a connection per device, one device after the
+        # other: the last endpoint of each task on each side of a connection
+        # is kept (+endpoints+) and used again.
+        def endpoint(task, port, endpoints)
+          last = endpoints[task]
+          return last if last && last.port == port.name
+
+          endpoints[task] = Endpoint.new(task.name, port.name).freeze
         end
 
         # DSL attributes by name, sorted.

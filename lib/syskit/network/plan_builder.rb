@@ -18,12 +18,11 @@ module Syskit
           # tasks; a file's path relative to the app is computed once.
           static_ports = {}
           paths = {}
-          endpoints = [{}.compare_by_identity, {}.compare_by_identity] # by task: last source, last sink
           Plan.new(
             profile: context.profile&.name, robot: context.robot_config&.name,
             tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports, context.robot_config) },
             devices: device_entries(context, paths),
-            connections: context.connections.map { |c| connection_entry(c, endpoints) }.sort_by! { |c| connection_key(c) },
+            connections: connection_entries(context),
             order: context.order,
             buses: bus_entries(context, paths),
             compositions: context.compositions.map { |c| composition_entry(c) }.sort_by!(&:name)
@@ -198,11 +197,17 @@ module Syskit
                    port.declared_type).freeze
         end
 
+        # The connections, sorted by their four names in turn.
+        def connection_entries(context)
+          endpoints = [{}.compare_by_identity, {}.compare_by_identity] # by task: last source, last sink
+          context.connections.map { |c| connection_entry(c, endpoints) }.sort_by! { |c| connection_key(c) }
+        end
+
         def connection_entry(conn, endpoints)
           Connection.new(
             endpoint(conn.from_task, conn.from_port, endpoints[0]), # from
             endpoint(conn.to_task, conn.to_port, endpoints[1]),     # to
-            conn.from_port.type.name, conn.policy                 # type, policy (frozen)
+            conn.from_port.type.name, conn.policy                   # type, policy (frozen)
           ).freeze
         end
 

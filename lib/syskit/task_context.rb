@@ -219,13 +219,24 @@ module Syskit
 
     def add_child(task, info = {})
       return if @child_tasks.any? { |t| t.equal?(task) }
+      # A bus driver is the only child of every device task on its bus:
+      # they share its lists (see #as_only_child), copied if one gets more.
+      return (@child_tasks, @child_infos = task.as_only_child(info)) if @child_tasks.empty?
 
       if @child_tasks.frozen?
-        @child_tasks = []
-        @child_infos = []
+        @child_tasks = @child_tasks.dup
+        @child_infos = @child_infos.dup
       end
       @child_tasks << task
       @child_infos << info
+    end
+
+    # The (frozen) lists of children and infos of a task whose only child
+    # is this one, with +info+: kept for the last +info+ asked, the same
+    # for all the devices of a bus.
+    def as_only_child(info)
+      @as_only_child = nil unless @as_only_child && @as_only_child.last.first.equal?(info)
+      @as_only_child ||= [[self].freeze, [info].freeze].freeze
     end
 
     # Static ports and ports created at configure time, by name.

@@ -18,9 +18,10 @@ module Syskit
           # tasks; a file's path relative to the app is computed once.
           static_ports = {}
           paths = {}
+          depends = {}.compare_by_identity
           Plan.new(
             profile: context.profile&.name, robot: context.robot_config&.name,
-            tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports, context.robot_config) },
+            tasks: context.tasks_by_name.map { |t| task_entry(t, static_ports, depends, context.robot_config) },
             devices: device_entries(context, paths),
             connections: connection_entries(context),
             order: context.order,
@@ -77,7 +78,7 @@ module Syskit
 
         # Entries are frozen as they are built, so the plan is a frozen value
         # without walking it again.
-        def task_entry(task, static_ports, robot_config)
+        def task_entry(task, static_ports, depends, robot_config)
           children = task.children
           deployment = task.deployed_task.deployment
           Task.new(
@@ -85,11 +86,20 @@ module Syskit
             device_names(task), task.conf,                                      # devices, conf (frozen)
             freeze_plain(task.properties.to_plain),                             # properties
             task_ports(task, static_ports),                                     # ports
-            children.empty? ? NO_DEPENDENCIES : children.map(&:name).sort!.freeze, # depends_on
+            depends_on(children, depends),                                      # depends_on
             deployment.unmanaged?,                                              # unmanaged
             operation_entries(task),                                            # operations
             process_server_entry(robot_config, deployment)                      # process_server
           ).freeze
+        end
+
+        # The names of a task's children, sorted; the tasks of the devices of
+        # a bus share their list of children (see TaskContext#add_child), so
+        # they share its entry too (+depends+, by list).
+        def depends_on(children, depends)
+          return NO_DEPENDENCIES if children.empty?
+
+          depends[children] ||= children.map(&:name).sort!.freeze
         end
 
         # Where +deployment+ runs, when the robot configuration says (on:).
@@ -197,10 +207,43 @@ module Syskit
                    port.declared_type).freeze
         end
 
-        # The connections, sorted by their four names in turn.
+        # The connections, sorted by their four names in turn (source task,
+        # source port, sink task, sink port). They are taken from their
+        # source tasks, which come by name: only the connections of a task
+        # that is the source of several (a bus driver) are sorted, without
+        # a sort key made for every connection.
         def connection_entries(context)
           endpoints = [{}.compare_by_identity, {}.compare_by_identity] # by task: last source, last sink
-          context.connections.map { |c| connection_entry(c, endpoints) }.sort_by! { |c| connection_key(c) }
+          entries = []
+          context.tasks_by_name.each do |task|
+            first = entries.size
+            each_connection_from(task) { |c| entries << connection_entry(c, endpoints) }
+            next if entries.size - first < 2
+
+            entries.concat(entries.pop(entries.size - first).sort! { |a, b| compare_from_one_task(a, b) })
+          end
+          entries
+        end
+
+        # The connections of which +task+ is the source. A connection from
+        # a task to itself is twice in its list: it is taken once. (Array's
+        # each_index: Enumerable's each_with_index makes two objects a call.)
+        def each_connection_from(task)
+          connections = task.connections
+          connections.each_index do |i|
+            c = connections[i]
+            next unless c.from_task.equal?(task)
+            next if c.to_task.equal?(task) && connections.index { |other| other.equal?(c) } != i
+
+            yield c
+          end
+        end
+
+        # Two connections from the same task, by source port, sink task and
+        # sink port.
+        def compare_from_one_task(one, other)
+          (one.from.port <=> other.from.port).nonzero? || (one.to.task <=> other.to.task).nonzero? ||
+            (one.to.port <=> other.to.port)
         end
 
         def connection_entry(conn, endpoints)
@@ -242,12 +285,6 @@ module Syskit
             value.each { |v| freeze_plain(v) }
           end
           value.freeze
-        end
-
-        # One string per connection, compared as the four names in turn ("\0"
-        # sorts before any character of a name).
-        def connection_key(conn)
-          "#{conn.from.task}\0#{conn.from.port}\0#{conn.to.task}\0#{conn.to.port}"
         end
       end
     end

@@ -124,33 +124,37 @@ module Syskit
 
       # The plan as plain data, the JSON document's content.
       def to_h
-        port_hashes = {}.compare_by_identity # port entries are shared by tasks of a model
+        shared = {}.compare_by_identity # see #plain_entries
         LISTS.each_with_object({ 'profile' => profile, 'robot' => robot }) do |list, plain|
-          plain[list] = plain_entries(list, public_send(list), port_hashes)
+          plain[list] = plain_entries(list, public_send(list), shared)
         end
       end
 
       # +entries+ of list +list+ (one of LISTS) as plain data: hashes with
-      # string keys, as in #to_h. +port_hashes+ keeps one hash per port entry.
-      def plain_entries(list, entries, port_hashes = {}.compare_by_identity)
-        return entries.map { |t| task_hash(t, port_hashes) } if list == 'tasks'
+      # string keys, as in #to_h. +shared+ keeps the plain data of the
+      # entries the plan shares (by entry): a port entry and a list of them
+      # (the tasks of a model share their static ports), an endpoint (the
+      # port of a bus driver that serves every device).
+      def plain_entries(list, entries, shared = {}.compare_by_identity)
+        return entries.map { |t| task_hash(t, shared) } if list == 'tasks'
+        return entries.map { |c| connection_hash(c, shared) } if list == 'connections'
 
         hash = ENTRY_HASHES.fetch(list) { raise ArgumentError, "#{list} is not one of #{LISTS.join(', ')}" }
         entries.map { |entry| send(hash, entry) }
       end
 
       # The method making the plain data of an entry, by list (but tasks).
-      ENTRY_HASHES = { 'devices' => :device_hash, 'connections' => :connection_hash, 'order' => :step_hash,
-                       'buses' => :bus_hash, 'compositions' => :composition_hash }.freeze
+      ENTRY_HASHES = { 'devices' => :device_hash, 'order' => :step_hash, 'buses' => :bus_hash,
+                       'compositions' => :composition_hash }.freeze
 
       private
 
-      def task_hash(task, port_hashes)
+      def task_hash(task, shared)
         operations = task.operations
         hash = {
           'name' => task.name, 'model' => task.model, 'deployment' => task.deployment,
           'devices' => task.devices, 'conf' => task.conf, 'properties' => task.properties,
-          'ports' => task.ports.map { |p| port_hashes[p] ||= port_hash(p) },
+          'ports' => shared[task.ports] ||= task.ports.map { |p| shared[p] ||= port_hash(p) },
           'depends_on' => task.depends_on, 'unmanaged' => task.unmanaged,
           'operations' => operations.empty? ? operations : operations.map { |op| operation_hash(op) }
         }
@@ -206,12 +210,16 @@ module Syskit
         }
       end
 
-      def connection_hash(conn)
+      def connection_hash(conn, shared)
         {
-          'from' => { 'task' => conn.from.task, 'port' => conn.from.port },
-          'to' => { 'task' => conn.to.task, 'port' => conn.to.port },
+          'from' => shared[conn.from] ||= endpoint_hash(conn.from),
+          'to' => shared[conn.to] ||= endpoint_hash(conn.to),
           'type' => conn.type, 'policy' => conn.policy
         }
+      end
+
+      def endpoint_hash(endpoint)
+        { 'task' => endpoint.task, 'port' => endpoint.port }
       end
     end
   end

@@ -35,10 +35,10 @@ module Syskit
         state = ::JSON::State.new(PRETTY)
         state.depth = 1
         out = +"{\n  \"profile\": " << state.generate(plan.profile) << ",\n  \"robot\": " << state.generate(plan.robot)
-        port_hashes = {}.compare_by_identity
+        shared = {}.compare_by_identity # see Plan#plain_entries
         Network::Plan::LISTS.each do |list|
           out << ",\n  " << state.generate(list) << ': '
-          entries(plan.public_send(list), state, out, io) { |slice| plan.plain_entries(list, slice, port_hashes) }
+          entries(plan.public_send(list), state, out, io) { |slice| plan.plain_entries(list, slice, shared) }
         end
         io.write(out << "\n}\n")
         io

@@ -94,14 +94,18 @@ module Syskit
 
       # Per-device ports of one bus driver must not collide with each other
       # (a device 'x' writes to 'wx', a device 'wx' reads from 'wx') nor with
-      # the driver's own ports.
+      # the driver's own ports. Names are counted, and the ports of a name
+      # gathered only when it clashes (no list per device otherwise).
       def check_port_names
         @context.expected_ports.each do |bus_task, ports|
-          ports.group_by(&:name).each do |name, same|
-            if same.size > 1
-              @context.error(port_clash(bus_task, name, same))
-            elsif (static = bus_task.model.ports[name])
-              @context.error(static_clash(bus_task, same.first, static))
+          counts = ports.map(&:name).tally
+          ports.each do |port|
+            name = port.name
+            if counts[name] > 1
+              @context.error(port_clash(bus_task, name, ports.select { |p| p.name == name }))
+              counts[name] = 0 # reported once
+            elsif counts[name] == 1 && (static = bus_task.model.ports[name])
+              @context.error(static_clash(bus_task, port, static))
             end
           end
         end

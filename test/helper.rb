@@ -239,6 +239,14 @@ module Syskit
       (@loaded_apps || []).reverse_each(&:unload)
       (@tmpdirs || []).each { |dir| FileUtils.rm_rf(dir) }
       super
+      checked_nothing if passed? && assertions.zero?
+    end
+
+    # A test that passes without a single assertion checked nothing (a
+    # `flunk ... if` that never ran, a loop over an empty list): it fails,
+    # so that such a test is seen and fixed.
+    def checked_nothing
+      failures << Minitest::Assertion.new("#{self.class}##{name} passed without checking anything (no assertion)")
     end
   end
 end

@@ -29,6 +29,27 @@ module Syskit
       assert app.environment_file?(can)
     end
 
+    # Rock's logger as its current oroGen spec declares it: what Rock's
+    # common_models sets in the logger's update_properties exists.
+    def test_the_logger_has_rock_s_file_handling_properties
+      files = { 'models/orogen/logs.rb' => <<~RUBY,
+        Syskit.extend_model OroGen.logger.Logger do
+          def update_properties
+            super
+            properties.overwrite_existing_files = true
+          end
+        end
+      RUBY
+                'config/robots/default.rb' => "using_task_library 'logger'\n" }
+      load_app(write_app(files))
+      props = OroGen.logger.Logger.spec.all_properties
+      assert_equal({ 'file' => '', 'overwrite_existing_files' => false, 'auto_timestamp_files' => false },
+                   props.transform_values(&:initial_value))
+      task = OroGen.logger.Logger.new
+      task.update_properties
+      assert task.properties['overwrite_existing_files']
+    end
+
     def test_the_gem_s_library_is_not_app_code
       app = load_app(write_app({}))
       dsl = File.join(GEM_ROOT, 'lib', 'syskit', 'dsl.rb')

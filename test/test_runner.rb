@@ -101,6 +101,26 @@ module Syskit
       assert_match(/^3 runs, \d+ assertions, 2 failures, 0 errors, 0 skips$/, out)
     end
 
+    def test_tests_that_checked_nothing_are_named_at_their_line
+      composition = "module Plain; class Follow < Syskit::Composition; end; end\n"
+      app = write_app({ 'config/syskit.yml' => "name: Plain\n", 'models/compositions/follow.rb' => composition,
+                        'test/test_follow.rb' => <<~RUBY })
+                          module Plain
+                            describe(Follow) do
+                              it('checks') { assert_equal 'Plain::Follow', Follow.name }
+                              it('forgets to check') { Follow.name }
+                              it('waits for later') { skip 'not yet' }
+                            end
+                          end
+                        RUBY
+      out, err, status = syskit_test(chdir: app)
+      assert status.success?, "#{out}\n#{err}"
+      assert_match(/^1 test\(s\) passed without checking anything \(no assertion ran\):$/, out)
+      assert_match(%r{^test/test_follow.rb:4: Plain::Follow#test_0002_forgets to check$}, out)
+      refute_match(/test_0001|test_0003/, out)
+      assert_match(/^  hint: assert what the test expects/, out)
+    end
+
     def test_a_failure_is_reported_at_the_line_of_the_test_and_sets_the_exit_status
       root = my_app("device(Devices::IMU, as: 'imu')\n",
                     'config/robots/default.rb' => "# nothing deployed\n",

@@ -79,8 +79,17 @@ module Syskit
       @name = deployed&.name
     end
 
+    # Syskit's configuration hook for properties: model files override it
+    # (calling super) to set properties from the task's devices, arguments
+    # or Conf. The generator runs it before #configure when the model uses
+    # it (Models::TaskContext#use_update_properties?); a model that only
+    # defines #configure gets it from configure's super, as in Syskit.
+    def update_properties; end
+
     # Configuration hook: user extension files override it and call super.
-    def configure; end
+    def configure
+      update_properties unless model.use_update_properties?
+    end
 
     # The host the task must run on (Syskit's +required_host+), nil when
     # any will do: two tasks bound to different hosts are not merged.

@@ -11,6 +11,7 @@ require 'syskit/test/model_helpers'
 require 'syskit/test/subject_model'
 require 'syskit/test/app_under_test'
 require 'syskit/test/load_problems'
+require 'syskit/test/checked_nothing'
 
 module Syskit
   # Test support for apps: `require 'syskit/test'` at the top of a test

@@ -90,8 +90,11 @@ module Syskit
     # Every guide is well-formed XML once rendered, as the site's pages
     # must be.
     def test_every_guide_renders_to_well_formed_xml
-      Dir.glob(File.join(GEM_ROOT, 'doc', 'guides', '*.md')).each do |file|
-        REXML::Document.new("<div>#{html(File.read(file))}</div>")
+      guides = Dir.glob(File.join(GEM_ROOT, 'doc', 'guides', '*.md'))
+      refute_empty guides
+      guides.each do |file|
+        document = REXML::Document.new("<div>#{html(File.read(file))}</div>")
+        assert document.root.has_elements?, "#{file} renders to nothing"
       rescue REXML::ParseException => e
         flunk "#{file}: #{e.message.lines.first}"
       end

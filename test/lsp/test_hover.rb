@@ -32,8 +32,16 @@ module Syskit
     end
 
     def test_a_part_of_a_constant_path_is_the_module_it_names
-      assert_nil hover('GPS::Ublox::F9')
       assert_match(/device model/, hover('Ublox::F9', offset: 7))
+      text = hover('GPS::Ublox::F9')
+      assert_match(/\A\*\*namespace\*\* `AwesomeRobot::Devices::GPS`/, text)
+      assert_includes text, '`Ublox::F9` (device model)'
+      refute_includes text, 'Camera'
+    end
+
+    def test_a_module_without_models_shows_nothing
+      assert_nil query_at(query, @profile, 'Kernel', text: "Kernel.puts 'x'\n")
+      assert_nil query_at(query, @profile, 'Comparable', text: "Comparable\n")
     end
 
     def test_a_bus_model_says_its_messages_and_where_it_comes_from

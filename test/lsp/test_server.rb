@@ -10,13 +10,16 @@ module Syskit
   class TestLSPServer < Minitest::Test
     include SelfTest
 
+    # What Neovim and VS Code say they show of diagnostics.
+    SHOWS_RELATED_INFORMATION = { textDocument: { publishDiagnostics: { relatedInformation: true } } }.freeze
+
     def setup
       @dir = Dir.mktmpdir('syskit-lsp')
       FileUtils.cp_r(File.join(GEM_ROOT, 'examples', 'awesome_robot'), @dir)
       @root = File.join(@dir, 'awesome_robot')
       @client = SelfTest::LSPClient.new(env: SelfTest.child_env, chdir: @dir)
       @initialized = @client.request('initialize', processId: Process.pid, rootUri: LSP::URI.of(@root),
-                                                   capabilities: {})
+                                                   capabilities: SHOWS_RELATED_INFORMATION)
       @client.notify('initialized')
     end
 
@@ -77,6 +80,21 @@ module Syskit
 
       @client.change(path, text, version: 3)
       assert_equal [], @client.diagnostics_of(path)
+      assert_equal 0, @client.close
+    end
+
+    # A client that does not show related information (Emacs' eglot) gets
+    # the hint under the message.
+    def test_a_client_without_related_information_gets_the_hint_in_the_message
+      @client.kill
+      @client = SelfTest::LSPClient.new(env: SelfTest.child_env, chdir: @dir)
+      @client.request('initialize', processId: Process.pid, rootUri: LSP::URI.of(@root), capabilities: {})
+      @client.notify('initialized')
+      path = file(PROFILE)
+      @client.open(path, File.read(path).sub('Ublox::F9', 'Ublox::F8'))
+      diagnostic, = @client.diagnostics_of(path)
+      assert_match(/\Auninitialized constant .*Ublox::F8\nhint: did you mean 'AwesomeRobot::Devices::GPS::Ublox::F9'\?\z/,
+                   diagnostic[:message])
       assert_equal 0, @client.close
     end
 

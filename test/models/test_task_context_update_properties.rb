@@ -31,5 +31,19 @@ module Syskit
       model.prepend(Module.new { def update_properties; end })
       refute model.use_update_properties?
     end
+
+    # The answer is kept per model, and follows hooks defined or removed
+    # afterwards, in the model or in a parent.
+    def test_the_answer_follows_hooks_defined_later
+      parent = TaskContext.new_submodel
+      child = parent.new_submodel
+      assert child.use_update_properties?
+      parent.class_eval { def configure; end }
+      refute child.use_update_properties?
+      child.class_eval { def update_properties; end }
+      assert child.use_update_properties?
+      child.send(:remove_method, :update_properties)
+      refute child.use_update_properties?
+    end
   end
 end

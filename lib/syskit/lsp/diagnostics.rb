@@ -4,7 +4,8 @@ module Syskit
   module LSP
     # The problems of `syskit check` as the editor's diagnostics, by file:
     # the line of each problem's location, its message, and its hint as
-    # related information (editors show it under the message).
+    # related information (editors show it under the message; for those
+    # that do not, the server puts it in the message, see Server).
     module Diagnostics
       Severity = LanguageServer::Protocol::Constant::DiagnosticSeverity
 
@@ -33,6 +34,15 @@ module Syskit
                                            message: "hint: #{problem.hint}" }]
         end
         result
+      end
+
+      # +diagnostic+ with its hint also under its message, for clients that
+      # do not show related information.
+      def with_hint_in_message(diagnostic)
+        related = diagnostic[:relatedInformation]
+        return diagnostic unless related
+
+        diagnostic.merge(message: [diagnostic[:message], *related.map { |r| r[:message] }].join("\n"))
       end
 
       def severity(problem)

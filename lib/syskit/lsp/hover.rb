@@ -44,6 +44,7 @@ module Syskit
         when :deployment then deployment(target.object)
         when :port then port(target.object, target.owner)
         when :conf then conf_section(target.object, target.name)
+        when :namespace then namespace(target.name)
         end
       end
 
@@ -106,6 +107,18 @@ module Syskit
         declarer = port.respond_to?(:owner) && port.owner.respond_to?(:name) ? " (`#{port.owner.name}`)" : ''
         ["**#{port.direction} port** `#{port.name}` of #{of}#{declarer}: `#{type_of(port)}`",
          declared(port.declared_at)].reject(&:empty?).join("\n\n")
+      end
+
+      # A module holding models: the models the site documents in it.
+      def namespace(name)
+        prefix = "#{name}::"
+        inside = []
+        catalog.each_entry do |entry|
+          inside << "`#{entry.name.delete_prefix(prefix)}` (#{entry.kind.singular})" if entry.name.start_with?(prefix)
+        end
+        return if inside.empty?
+
+        ["**namespace** `#{name}`", list('Models', inside.sort)].join("\n\n")
       end
 
       def conf_section(model, name)

@@ -105,7 +105,11 @@ module Syskit
         @writer.write(method: method, params: params)
       end
 
-      def initialize_server(_params)
+      def initialize_server(params)
+        # Clients say whether they show a diagnostic's related information
+        # (Neovim and VS Code do, Emacs' eglot does not): the others get
+        # the hint in the message.
+        @hint_apart = params.dig(:capabilities, :textDocument, :publishDiagnostics, :relatedInformation) == true
         { capabilities: capabilities, serverInfo: { name: 'syskit', version: Syskit::VERSION } }
       end
 
@@ -181,6 +185,7 @@ module Syskit
       end
 
       def publish(path, diagnostics)
+        diagnostics = diagnostics.map { |d| Diagnostics.with_hint_in_message(d) } unless @hint_apart
         notify('textDocument/publishDiagnostics', uri: uri_of(path), diagnostics: diagnostics)
       end
 

@@ -16,7 +16,8 @@ module Syskit
     # bus), :definition (a profile's), :deployment (a task library's),
     # :port (+owner+ is the child or model it is a port of) and :conf
     # (+object+ is the model whose configuration +name+ is chosen, see
-    # ConfSections).
+    # ConfSections) and :namespace (a module of the app that holds models,
+    # +Devices+ of Devices::GPS).
     Target = Struct.new(:kind, :object, :name, :owner)
 
     # Resolves a Cursor to a Target.
@@ -116,7 +117,11 @@ module Syskit
       def from_constant
         path = cursor.constant_path
         found = path && profile_of(constant(path))
-        Target.new(:model, found, path) if model?(found)
+        if model?(found)
+          Target.new(:model, found, path)
+        elsif found.is_a?(Module) && found.name
+          Target.new(:namespace, found, found.name)
+        end
       end
 
       # Whether +object+ is something the site has a kind of page for.

@@ -6,6 +6,7 @@ require 'syskit/models/dynamic_services'
 require 'syskit/models/task_specialization'
 require 'syskit/models/task_context_orogen'
 require 'syskit/models/task_state_events'
+require 'syskit/models/configuration_hooks'
 
 module Syskit
   module Models
@@ -22,6 +23,7 @@ module Syskit
       include TaskSpecialization
       include TaskContextOrogen
       include TaskStateEvents
+      include ConfigurationHooks
 
       attr_reader :spec
 
@@ -159,17 +161,6 @@ module Syskit
         spec ? spec.all_operations : {}
       end
 
-      # Whether the task is configured through +update_properties+ (Syskit's
-      # newer hook) rather than +configure+: true unless a model class below
-      # Syskit::TaskContext defines +configure+ and none defines
-      # +update_properties+. Methods of modules mixed in are not counted.
-      def use_update_properties?
-        classes = ancestors.take_while { |a| !a.equal?(Syskit::TaskContext) }.grep(Class)
-        return true if classes.any? { |c| defines_own?(c, :update_properties) }
-
-        classes.none? { |c| defines_own?(c, :configure) }
-      end
-
       # The class of the task's component (+orocos_task+, and what +stub+
       # blocks are evaluated on).
       def component_class
@@ -177,10 +168,6 @@ module Syskit
       end
 
       private
-
-      def defines_own?(klass, name)
-        klass.method_defined?(name, false) || klass.private_method_defined?(name, false)
-      end
 
       def setup_model(spec)
         @spec = spec

@@ -3,8 +3,10 @@
 module Syskit
   module Network
     # Step 5: configures tasks in order: configuration file sections first,
-    # then the configure methods (which call super first), then the stub
-    # blocks, which stand for the ports the real component creates.
+    # then the update_properties methods (where the model uses them, see
+    # Models::TaskContext#use_update_properties?), then the configure
+    # methods (which call super first), then the stub blocks, which stand
+    # for the ports the real component creates.
     class Configure
       def initialize(context)
         @context = context
@@ -22,6 +24,7 @@ module Syskit
       def configure(task)
         device = task.requirements&.device
         apply_sections(task, device)
+        user_code(task, device, 'update_properties') { task.update_properties } if task.model.use_update_properties?
         user_code(task, device, 'configure') { task.configure }
         component = task.orocos_task
         task.model.stub_blocks.each do |block|

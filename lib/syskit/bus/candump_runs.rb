@@ -20,10 +20,10 @@ module Syskit
       private
 
       # The regexp of lines as candump -l writes them for the interface
-      # read, which CandumpLog#read reads by position: 10 digits of seconds, a
-      # standard id up to 7FF or an extended one without the error flag,
-      # and what FAST_LINE_TEXT allows after them (nil until the interface
-      # is known).
+      # read, which CandumpLog#read reads by position: 10 digits of
+      # seconds, a standard id up to 7FF or an extended one without the
+      # error flag, and what FAST_LINE_TEXT allows after them (nil until
+      # the interface is known).
       def fast_line
         return unless @interface&.ascii_only?
 
@@ -32,9 +32,9 @@ module Syskit
 
       # One or more such lines in a row from where the match starts, all of
       # the same second: the first line captures its seconds, the others
-      # must repeat them (a back reference), so that CandumpLog#read converts the
-      # seconds once a run instead of once a line. A run ends where the
-      # second changes (every few thousand lines of a busy bus).
+      # must repeat them (a back reference), so that CandumpLog#read
+      # converts the seconds once a run instead of once a line. A run ends
+      # where the second changes (every few thousand lines of a busy bus).
       def fast_runs
         @fast_runs ||= begin
           interface = Regexp.escape(@interface)
@@ -44,7 +44,8 @@ module Syskit
         end
       end
 
-      # One or more such lines in a row, of any seconds.
+      # One or more such lines in a row, of any seconds (a quiet bus's:
+      # see CandumpLog#read).
       def fast_mixed_runs
         @fast_mixed_runs ||= /\G(?:#{format(FAST_LINE_TEXT, seconds: '\d{10}', interface: Regexp.escape(@interface))})+/
       end

@@ -64,11 +64,13 @@ module Syskit
       # (doc/performance.md). The log is read CHUNK bytes at a time. Lines
       # as candump -l writes them for the interface read are checked a run
       # at a time by one regexp (#fast_runs: every line up to the first
-      # that is not one) and read by position in the chunk, without a
-      # string of their own; the others are cut as IO#each_line(MAX_LINE)
-      # cuts them and go through #line_fields. The figures
-      # are kept in locals and handed to +traffic+ every +every+ lines and
-      # at the end; the per-key tallies are updated in place.
+      # that is not one or is of another second, whose seconds are then
+      # converted once; #fast_mixed_runs on a quiet bus) and read by
+      # position in the chunk, without a string of their own; the others
+      # are cut as IO#each_line(MAX_LINE) cuts them and go through
+      # #line_fields. The figures are kept in locals and handed to
+      # +traffic+ every +every+ lines and at the end; the per-key tallies
+      # are updated in place.
       # rubocop:disable-next Metrics -- one loop, see above
       def read(io, traffic, every: 1)
         tallies = traffic.tallies

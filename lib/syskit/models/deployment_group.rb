@@ -285,7 +285,7 @@ module Syskit
       def task_deployment(model, name, location)
         raise usage_error(model, location) unless model.is_a?(Class) && model <= Syskit::TaskContext && model.spec
 
-        deployment = Orogen::DeploymentSpec.new(name.to_s, location: location)
+        deployment = Orogen::DeploymentSpec.new(name.to_s, location)
         deployment.add_task(name.to_s, model, location: location)
         deployment
       end

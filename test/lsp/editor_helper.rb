@@ -28,12 +28,17 @@ module Syskit
         super
       end
 
-      # A copy of the example app (under its own name, which its requires
-      # need) whose profile names a device model that does not exist; the
-      # profile's path.
-      def profile_with_a_mistake
+      # A copy of the example app, under its own name (which its requires
+      # need); its root.
+      def example_copy
         FileUtils.cp_r(File.join(GEM_ROOT, 'examples', 'awesome_robot'), @dir)
-        profile = File.join(@dir, 'awesome_robot', 'models', 'profiles', 'live', 'base.rb')
+        File.join(@dir, 'awesome_robot')
+      end
+
+      # A copy of the example app whose profile names a device model that
+      # does not exist; the profile's path.
+      def profile_with_a_mistake
+        profile = File.join(example_copy, 'models', 'profiles', 'live', 'base.rb')
         @profile_text = File.read(profile)
         File.write(profile, @profile_text.sub('Ublox::F9', 'Ublox::F8'))
         profile

@@ -145,6 +145,14 @@ module Syskit
       refute Object.const_defined?(:IMU_TASK)
     end
 
+    # ... and its magic comments still apply.
+    def test_a_robot_file_keeps_its_magic_comments
+      default = "# frozen_string_literal: true\n\nname = 'imu'\nname << '_x'\n"
+      root = my_app("device(Devices::IMU, as: 'imu')\n", 'config/robots/default.rb' => default)
+      out, = run_cli('check', '--app', root)
+      assert_match(%r{^config/robots/default.rb:4: FrozenError}, out)
+    end
+
     def test_robot_logs_go_to_stderr_at_the_level_syskit_log_sets
       _, err, = run_cli('plan', '--app', ROVER)
       refute_match(/Robot INFO/, err)

@@ -74,8 +74,12 @@ module Syskit
         UserCode.guard(path: path, root: @app.root) { context.instance_exec(&body.eval.call(context)) }
       end
 
+      # The leading comment lines stay first, so that its magic comments
+      # (frozen_string_literal...) still apply; the wrapper starts the
+      # first line of code.
       def compiled_body(path)
-        ISeqCache.compile("lambda do |context| class << context; lambda do #{UserFile.read(path)}\nend; end; end", path)
+        comments, code = UserFile.read(path).match(/\A((?:[ \t]*(?:#[^\n]*)?\n)*)(.*)\z/m).captures
+        ISeqCache.compile("#{comments}lambda do |context| class << context; lambda do #{code}\nend; end; end", path)
       rescue SyntaxError
         nil
       end

@@ -84,32 +84,6 @@ module Syskit
         attach_to_bus(device, bus, location, client_to_bus, bus_to_client)
       end
 
-      # #attach, by position: a device declared in a through block is
-      # attached without a keyword hash made for it.
-      def attach_to_bus(device, bus, location, client_to_bus, bus_to_client)
-        bus = find_bus(bus, location)
-        if device.attached?
-          raise DeclarationError.new("#{device} is already attached to #{device.bus}",
-                                     location: location, hint: 'a device is attached to one bus')
-        end
-        if !client_to_bus && !bus_to_client
-          raise DeclarationError.new(
-            "#{device} would neither read from nor write to #{bus} (client_to_bus: false, bus_to_client: false)",
-            location: location, hint: 'drop one of the two options, or do not attach the device'
-          )
-        end
-
-        check_cycle(device, bus, location)
-        device.attached(bus, client_to_bus, bus_to_client)
-        begin
-          device.check_combus_attachment(location)
-        rescue Syskit::Error
-          device.detached
-          raise
-        end
-        bus.add_attached_device(device)
-      end
-
       # Resolves the model and driver of every device; returns the errors.
       def resolve(index)
         each_master_device.filter_map do |device|
@@ -135,6 +109,32 @@ module Syskit
       end
 
       private
+
+      # #attach, by position: a device declared in a through block is
+      # attached without a keyword hash made for it.
+      def attach_to_bus(device, bus, location, client_to_bus, bus_to_client)
+        bus = find_bus(bus, location)
+        if device.attached?
+          raise DeclarationError.new("#{device} is already attached to #{device.bus}",
+                                     location: location, hint: 'a device is attached to one bus')
+        end
+        if !client_to_bus && !bus_to_client
+          raise DeclarationError.new(
+            "#{device} would neither read from nor write to #{bus} (client_to_bus: false, bus_to_client: false)",
+            location: location, hint: 'drop one of the two options, or do not attach the device'
+          )
+        end
+
+        check_cycle(device, bus, location)
+        device.attached(bus, client_to_bus, bus_to_client)
+        begin
+          device.check_combus_attachment(location)
+        rescue Syskit::Error
+          device.detached
+          raise
+        end
+        bus.add_attached_device(device)
+      end
 
       def check_device_options(options, bus, name, location)
         return if options.empty?

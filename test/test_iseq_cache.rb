@@ -65,6 +65,22 @@ module Syskit
       end
     end
 
+    # A large robot file too (the 10,000-device robot of rake bench has
+    # 0.7 MB of use_deployment statements).
+    def test_a_large_robot_file_is_kept
+      Dir.mktmpdir do |dir|
+        app = File.join(dir, 'awesome_robot')
+        FileUtils.cp_r(EXAMPLE, app)
+        robot = File.join(app, 'config', 'robots', 'default.rb')
+        File.write(robot, File.read(robot) + ("# padding\n" * 8000))
+        cache = File.join(dir, 'cache')
+        expected = plan('SYSKIT_NO_CACHE' => '1')
+        assert_equal expected, plan_of(app, cache)
+        assert(Dir[File.join(cache, '*', '*.iseq')].any? { |e| e.end_with?('-robots-default.rb.iseq') })
+        assert_equal expected, plan_of(app, cache)
+      end
+    end
+
     # The key of an app file holds its path and its text: a path that is not
     # UTF-8 and a text that is not ASCII still make one.
     def test_an_app_file_whose_path_and_text_do_not_mix_is_kept

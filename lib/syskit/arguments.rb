@@ -23,6 +23,8 @@ module Syskit
       IDENTIFIER => 'a letter or _ first, then letters, digits and _',
       PORT_NAME => 'letters, digits and _'
     }.freeze
+    # Values that never match a deployed task's name (deployment_hint?).
+    NOT_DEPLOYMENT_HINTS = [NilClass, TrueClass, FalseClass, Numeric, Symbol].freeze
 
     module_function
 
@@ -34,7 +36,7 @@ module Syskit
     # a name, a regexp, or any object matching names with === (a Proc...),
     # but not a value that never matches a name (a number, a symbol...).
     def deployment_hint?(hint)
-      [NilClass, TrueClass, FalseClass, Numeric, Symbol].none? { |klass| hint.is_a?(klass) }
+      NOT_DEPLOYMENT_HINTS.none? { |klass| hint.is_a?(klass) }
     end
 
     def name(value, statement:, what:, example:, pattern: IDENTIFIER, rule: RULES[pattern],

@@ -18,10 +18,17 @@ module Syskit
       # caller: it is asked for alone (one frame object, where a 10,000-
       # device robot makes ~40,000 of these calls while loading), then the
       # stack further up a batch at a time, never materialized whole.
+      # (A while loop: +return+ from inside a block, as +batch.each { ... }+
+      # would need, costs an object on every call.)
       start = 2
       length = 1
       while (batch = caller_locations(start, length)) && !batch.empty?
-        batch.each { |loc| return from(loc) if user_frame?(loc) }
+        i = 0
+        while i < batch.size
+          return from(batch[i]) if user_frame?(batch[i])
+
+          i += 1
+        end
         start += batch.size
         length = 8
       end

@@ -120,6 +120,39 @@ module Syskit
       end
     end
 
+    # A robot file is compiled as a block's body (so that the compiled code
+    # can be kept, see RobotConfigLoader#evaluate): it still reads as a
+    # file evaluated on its own object. Its constants stay its own
+    # (evaluated again for a second robot, it redefines nothing), its
+    # helpers are there for it, and a return at its top level ends it.
+    def test_a_robot_file_keeps_its_constants_and_may_return_early
+      default = <<~RUBY
+        IMU_TASK = 'imu'
+        def deploy_imu
+          Syskit.conf.use_deployment OroGen.imu.Task => IMU_TASK
+        end
+        deploy_imu
+        return
+        raise 'not reached'
+      RUBY
+      root = my_app("device(Devices::IMU, as: 'imu')\n", 'config/robots/default.rb' => default,
+                                                         'config/robots/field.rb' => "require_relative './default'\n")
+      out, err, status = run_cli('check', '--app', root)
+      assert_equal [0, "MyApp: 0 error(s), 0 warning(s)\n", ''], [status, out, err]
+      out, err, status = run_cli('plan', '--app', root, '--robot', 'field', '--format', 'json')
+      assert_equal 0, status, err
+      assert_equal(['imu'], JSON.parse(out)['tasks'].map { |t| t['name'] })
+      refute Object.const_defined?(:IMU_TASK)
+    end
+
+    # ... and its magic comments still apply.
+    def test_a_robot_file_keeps_its_magic_comments
+      default = "# frozen_string_literal: true\n\nname = 'imu'\nname << '_x'\n"
+      root = my_app("device(Devices::IMU, as: 'imu')\n", 'config/robots/default.rb' => default)
+      out, = run_cli('check', '--app', root)
+      assert_match(%r{^config/robots/default.rb:4: FrozenError}, out)
+    end
+
     def test_robot_logs_go_to_stderr_at_the_level_syskit_log_sets
       _, err, = run_cli('plan', '--app', ROVER)
       refute_match(/Robot INFO/, err)

@@ -3,6 +3,7 @@
 require 'syskit/bus/frame'
 require 'syskit/bus/candump_line'
 require 'syskit/bus/candump_fields'
+require 'syskit/bus/candump_runs'
 
 module Syskit
   module Bus
@@ -15,6 +16,7 @@ module Syskit
     # interface and skipped.
     class CandumpLog
       include CandumpFields
+      include CandumpRuns
 
       # A line that is not a candump frame.
       Malformed = Struct.new(:lineno, :message, :text)
@@ -29,14 +31,12 @@ module Syskit
       # the file holds (a binary file, /dev/zero).
       MAX_LINE = 4096
       HASH_MARK = 35 # '#'
+      # The end of line searched for, in the log's encoding: String#index
+      # checks a needle of another encoding on every call (ASCII-8BIT data,
+      # UTF-8 literal), a third of the search's cost.
+      NEWLINE = "\n".b
       # The log is read this many bytes at a time (see #read).
       CHUNK = 1 << 16
-      # A line as candump -l writes it for the interface %s (see #fast_line):
-      # data of 0 to 8 bytes, a remote request (R, R0 to R8), or a CAN FD
-      # frame (#, its flags digit, data of one of Frame::CANFD_LENGTHS).
-      FAST_LINE_TEXT = '\(\d{10}\.\d{6}\) %s (?:[0-7]\h\h|[01]\h{7})#(?:(?:\h\h){0,8}|R[0-8]?|' \
-                       '#\h(?:(?:\h\h){0,8}|(?:\h{8}){3,6}|(?:\h{8}){8}|(?:\h{8}){12}|(?:\h{8}){16}))\n'
-
       # +backwards+: a Backwards when the log is not in time order, else nil.
       attr_reader :path, :interface, :other_interfaces, :malformed, :malformed_count, :lines, :backwards
 
@@ -64,11 +64,13 @@ module Syskit
       # (doc/performance.md). The log is read CHUNK bytes at a time. Lines
       # as candump -l writes them for the interface read are checked a run
       # at a time by one regexp (#fast_runs: every line up to the first
-      # that is not one) and read by position in the chunk, without a
-      # string of their own; the others are cut as IO#each_line(MAX_LINE)
-      # cuts them and go through #line_fields. The figures
-      # are kept in locals and handed to +traffic+ every +every+ lines and
-      # at the end; the per-key tallies are updated in place.
+      # that is not one or is of another second, whose seconds are then
+      # converted once; #fast_mixed_runs on a quiet bus) and read by
+      # position in the chunk, without a string of their own; the others
+      # are cut as IO#each_line(MAX_LINE) cuts them and go through
+      # #line_fields. The figures are kept in locals and handed to
+      # +traffic+ every +every+ lines and at the end; the per-key tallies
+      # are updated in place.
       # rubocop:disable-next Metrics -- one loop, see above
       def read(io, traffic, every: 1)
         tallies = traffic.tallies
@@ -76,6 +78,8 @@ module Syskit
         fast = @previous_time && traffic.last_time && fast_line
         id_start = fast && (@interface.bytesize + 21)
         runs = fast && fast_runs
+        mixed_runs = fast && fast_mixed_runs
+        mixed = false # whether the next run is read with mixed_runs
         frames = extended = fd_frames = fd_extended = rtr_frames = errors = bytes_total = 0
         first_time = traffic.first_time
         last_time = traffic.last_time
@@ -99,13 +103,17 @@ module Syskit
           pos = 0
           cut = nil
           while pos < size
-            if !long && fast && (run = runs.match(data, pos))
+            if !long && fast && (run = (mixed ? mixed_runs : runs).match(data, pos))
               # Lines as candump -l writes them, up to the first that is
-              # not: (SSSSSSSSSS.UUUUUU) IFACE III#DD.. or IIIIIIII#DD..,
-              # #R or #Rn for a remote request, ##FDD.. for CAN FD.
+              # not or that is of another second: (SSSSSSSSSS.UUUUUU) IFACE
+              # III#DD.. or IIIIIIII#DD.., #R or #Rn for a remote request,
+              # ##FDD.. for CAN FD.
               stop = run.end(0)
+              # The same for the whole run; nil for a run of mixed seconds.
+              seconds = (text = run[1]) && (text.to_i * 1_000_000)
+              run_start = lines
               while pos < stop
-                eol = data.index("\n", pos)
+                eol = data.index(NEWLINE, pos)
                 lines += 1
                 frames += 1
                 id_at = pos + id_start
@@ -124,7 +132,7 @@ module Syskit
                 when RTR_MARK then rtr_frames += 1 # a request carries no data
                 else bytes_total += (eol - mark) >> 1
                 end
-                time = (data.byteslice(pos + 1, 10).to_i * 1_000_000) + data.byteslice(pos + 12, 6).to_i
+                time = (seconds || (data.byteslice(pos + 1, 10).to_i * 1_000_000)) + data.byteslice(pos + 12, 6).to_i
                 # Traffic#count and #stretch, inline (times are never nil here).
                 tally = tallies[key]
                 if tally.nil? then tallies[key] = [1, time, time, 0]
@@ -152,6 +160,11 @@ module Syskit
                 commit.call
                 yield traffic.frames if block_given?
               end
+              # On a quiet bus the second changes every few lines: a match
+              # per second would cost more than it saves, so a short run of
+              # one second is followed by a run of any seconds (up to the
+              # chunk's end or the first other line), converted per line.
+              mixed = seconds && lines - run_start < SHORT_RUN
               next
             end
 
@@ -204,6 +217,7 @@ module Syskit
               fast = fast_line
               id_start = fast && (@interface.bytesize + 21)
               runs = fast && fast_runs
+              mixed_runs = fast && fast_mixed_runs
             end
             next unless (pieces += 1) == every
 
@@ -249,21 +263,6 @@ module Syskit
       def too_long(piece)
         record_malformed("longer than #{MAX_LINE} bytes, which no candump line is: is this a candump log?",
                          "#{piece.byteslice(0, 40).inspect}...")
-      end
-
-      # The regexp of lines as candump -l writes them for the interface
-      # read, which #read reads by position: 10 digits of seconds, a
-      # standard id up to 7FF or an extended one without the error flag,
-      # and 0 to 8 data bytes (nil until the interface is known).
-      def fast_line
-        return unless @interface&.ascii_only?
-
-        @fast_line ||= /\A#{FAST_LINE_TEXT % Regexp.escape(@interface)}\z/
-      end
-
-      # One or more such lines in a row, from where the match starts.
-      def fast_runs
-        @fast_runs ||= /\G(?:#{FAST_LINE_TEXT % Regexp.escape(@interface)})+/
       end
 
       # Notes a frame at +time+, earlier than the one before it (at

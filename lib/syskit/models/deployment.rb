@@ -8,7 +8,7 @@ module Syskit
     # An oroGen deployment spec without a file, as Syskit's tests make one
     # (+Syskit::Models.create_orogen_deployment_model('motor_controller')+).
     def self.create_orogen_deployment_model(name = nil)
-      Orogen::DeploymentSpec.new(name, location: Location.of_caller)
+      Orogen::DeploymentSpec.new(name, Location.of_caller)
     end
 
     # An oroGen task model made in Ruby, of no task model yet (see
@@ -39,7 +39,7 @@ module Syskit
       # +orogen_model+); the block declares its tasks, evaluated on the spec
       # (+task 'name', TaskModel+).
       def new_submodel(name: nil, orogen_model: nil, &block)
-        orogen_model ||= Orogen::DeploymentSpec.new(name, location: Location.of_caller)
+        orogen_model ||= Orogen::DeploymentSpec.new(name, Location.of_caller)
         orogen_model.instance_eval(&block) if block
         submodel = Class.new(self)
         submodel.instance_variable_set(:@orogen_model, orogen_model)

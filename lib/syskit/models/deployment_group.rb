@@ -20,6 +20,7 @@ module Syskit
       # (how processes are started): accepted, no effect on plans. +on:+,
       # the process server a deployment runs on, is recorded (see
       # #process_server_of).
+      NO_OPTIONS = {}.freeze
       RUNTIME_OPTIONS = %i[on simulation loader process_managers read_only logger_name wait valgrind
                            valgrind_options gdb gdb_options log_level output oro_logfile working_directory
                            cmdline_args].freeze
@@ -59,15 +60,20 @@ module Syskit
       # Where and how processes start (+on:+, +valgrind:+, ...) does not
       # change a plan: those options are accepted and ignored. As each
       # statement of a group, it returns the deployments it added.
-      def use_deployment(*specs, prefix: nil, **options)
+      def use_deployment(*specs)
         location = Location.of_caller
-        # Ruby passes a trailing `Model => 'name'` as keywords. Most
-        # statements give no option: their keywords are all mappings.
+        # The trailing `Model => 'name'` mappings and options come as one
+        # Hash, taken off the list here: declared as keywords (**options,
+        # prefix:), they cost two more hashes and an array per statement,
+        # and a robot has one statement per device. Most statements give
+        # no option: their hash is all mappings.
+        options = specs.last.is_a?(Hash) ? specs.pop : NO_OPTIONS
         mappings = options
         if options.any? { |key, _| key.is_a?(Symbol) }
           mappings = options.reject { |key, _| key.is_a?(Symbol) }
-          check_options(options.keys.grep(Symbol), location)
+          check_options(options.keys.grep(Symbol) - [:prefix], location)
         end
+        prefix = options[:prefix]
         running_on(options[:on], location) do
           specs.each { |spec| add_spec(spec, prefix, location) }
           mappings.each { |spec, value| add_mapping(spec, value, prefix, location) }
@@ -285,7 +291,7 @@ module Syskit
       def task_deployment(model, name, location)
         raise usage_error(model, location) unless model.is_a?(Class) && model <= Syskit::TaskContext && model.spec
 
-        deployment = Orogen::DeploymentSpec.new(name.to_s, location: location)
+        deployment = Orogen::DeploymentSpec.new(name.to_s, location)
         deployment.add_task(name.to_s, model, location: location)
         deployment
       end

@@ -47,7 +47,7 @@ module Syskit
       def declared(task, declaration)
         return unless declaration
 
-        Orogen::DeploymentSpec.new(declaration.name, location: declaration.location, unmanaged: declaration.unmanaged)
+        Orogen::DeploymentSpec.new(declaration.name, declaration.location, unmanaged: declaration.unmanaged)
                               .add_task(declaration.name, task.model, location: declaration.location)
       end
 

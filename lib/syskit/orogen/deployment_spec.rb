@@ -23,9 +23,11 @@ module Syskit
       # The task instances, in declaration order (oroGen's name).
       attr_reader :name, :task_activities, :declared_at
 
-      # +unmanaged:+ a process started outside of Syskit (a device's
-      # deployed_as_unmanaged).
-      def initialize(name, location: nil, unmanaged: false)
+      # +location+: where it is declared (by position: one is made for
+      # every +use_deployment Task => 'name'+, and keywords given to +new+
+      # cost a hash each). +unmanaged:+ a process started outside of
+      # Syskit (a device's deployed_as_unmanaged).
+      def initialize(name, location = nil, unmanaged: false)
         @name = name
         @task_activities = []
         @declared_at = location
@@ -45,7 +47,7 @@ module Syskit
       # A copy whose tasks are renamed by +mappings+ (deployed name =>
       # new name; the others keep theirs): what a robot configures.
       def with_name_mappings(mappings, name: self.name)
-        copy = DeploymentSpec.new(name, location: declared_at, unmanaged: unmanaged?)
+        copy = DeploymentSpec.new(name, declared_at, unmanaged: unmanaged?)
         task_activities.each { |t| copy.add_task(mappings.fetch(t.name, t.name), t.model, location: t.declared_at) }
         copy
       end

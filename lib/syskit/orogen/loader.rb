@@ -97,10 +97,14 @@ module Syskit
       # library is loaded or a task model gains a service; the app settles
       # every device's driver with an index of its own once all is loaded.
       def current_driver_index
-        key = [@libraries.size, Models::Component.declarations_version]
-        return @driver_index if @driver_index_key == key
+        # Asked once per device declared: compared field by field, not as
+        # an array made each time.
+        libraries = @libraries.size
+        version = Models::Component.declarations_version
+        return @driver_index if @driver_index_libraries == libraries && @driver_index_version == version
 
-        @driver_index_key = key
+        @driver_index_libraries = libraries
+        @driver_index_version = version
         @driver_index = Robot::DriverIndex.new(self)
       end
 

@@ -50,7 +50,7 @@ module Syskit
       end
 
       def define_deployment(name, location, &block)
-        deployment = DeploymentSpec.new(name, location: location)
+        deployment = DeploymentSpec.new(name, location)
         DeploymentDSL.new(self, deployment).instance_eval(&block) if block
         @app.orogen.register_deployment(library, deployment)
       end

@@ -9,7 +9,7 @@ module Syskit
     class ComBus < MasterDeviceInstance
       include CanTraffic::BusStatements
 
-      def initialize(*args, **options)
+      def initialize(*args)
         super
         @attached_devices = []
       end

@@ -55,15 +55,18 @@ module Syskit
         name = check_name(name, location)
         check_model(klass, model, location)
         given = using
-        using, requirements = driver_requirements(using, location)
+        requirements = using if using.is_a?(InstanceRequirements)
+        using = driver_task_model(using, location)
         check_using(using, location)
         check_device_options(options, bus, name, location)
 
-        device = device_class(klass, model, bus).new(self, name, model, using: using, location: location)
+        device = device_class(klass, model, bus).new(self, name, model, using, location)
         device.adopt_requirements(requirements) if requirements
         bind_driver_service(device, given)
         @devices[name] = device
-        attach(device, bus, location: location, **options) if bus
+        if bus
+          attach_to_bus(device, bus, location, options.fetch(:client_to_bus, true), options.fetch(:bus_to_client, true))
+        end
         profile&.define_device_action(device)
         driver = declared_driver(device)
         device.bind_slaves_early(driver) if driver
@@ -78,27 +81,7 @@ module Syskit
 
       # Attaches +device+ to +bus+ (a ComBus or its name).
       def attach(device, bus, location:, client_to_bus: true, bus_to_client: true)
-        bus = find_bus(bus, location)
-        if device.attached?
-          raise DeclarationError.new("#{device} is already attached to #{device.bus}",
-                                     location: location, hint: 'a device is attached to one bus')
-        end
-        if !client_to_bus && !bus_to_client
-          raise DeclarationError.new(
-            "#{device} would neither read from nor write to #{bus} (client_to_bus: false, bus_to_client: false)",
-            location: location, hint: 'drop one of the two options, or do not attach the device'
-          )
-        end
-
-        check_cycle(device, bus, location)
-        device.attached(bus, client_to_bus, bus_to_client)
-        begin
-          device.check_combus_attachment(location)
-        rescue Syskit::Error
-          device.detached
-          raise
-        end
-        bus.add_attached_device(device)
+        attach_to_bus(device, bus, location, client_to_bus, bus_to_client)
       end
 
       # Resolves the model and driver of every device; returns the errors.
@@ -127,11 +110,38 @@ module Syskit
 
       private
 
+      # #attach, by position: a device declared in a through block is
+      # attached without a keyword hash made for it.
+      def attach_to_bus(device, bus, location, client_to_bus, bus_to_client)
+        bus = find_bus(bus, location)
+        if device.attached?
+          raise DeclarationError.new("#{device} is already attached to #{device.bus}",
+                                     location: location, hint: 'a device is attached to one bus')
+        end
+        if !client_to_bus && !bus_to_client
+          raise DeclarationError.new(
+            "#{device} would neither read from nor write to #{bus} (client_to_bus: false, bus_to_client: false)",
+            location: location, hint: 'drop one of the two options, or do not attach the device'
+          )
+        end
+
+        check_cycle(device, bus, location)
+        device.attached(bus, client_to_bus, bus_to_client)
+        begin
+          device.check_combus_attachment(location)
+        rescue Syskit::Error
+          device.detached
+          raise
+        end
+        bus.add_attached_device(device)
+      end
+
       def check_device_options(options, bus, name, location)
         return if options.empty?
 
-        unknown = options.keys - DEVICE_OPTIONS
-        raise unknown_options(unknown, location) unless unknown.empty?
+        if options.any? { |key, _| !DEVICE_OPTIONS.include?(key) }
+          raise unknown_options(options.keys - DEVICE_OPTIONS, location)
+        end
         return if bus
 
         raise DeclarationError.new(
@@ -169,9 +179,8 @@ module Syskit
       def device_class(klass, model, bus)
         return klass unless model.is_a?(Models::DeviceModel)
 
-        modules = model.device_configuration_modules
-        modules += bus.model.attached_device_configuration_modules if bus
-        klass.including(modules)
+        klass.including(model.device_configuration_modules,
+                        bus ? bus.model.attached_device_configuration_modules : MasterDeviceInstance::NO_MODULES)
       end
 
       def check_name(name, location)
@@ -222,10 +231,11 @@ module Syskit
       # +using:+ names the driver by its task model, or by requirements of
       # it (+Task.with_dynamic_service(...)+, +Task.with_conf(...)+, as
       # Syskit accepts), or by one of its services (+Task.gps_srv+): the
-      # driver model, and the requirements the device takes over.
-      def driver_requirements(using, location)
+      # driver model (the requirements the device takes over are +using+
+      # itself).
+      def driver_task_model(using, location)
         case using
-        when Models::BoundDataService then [using.task_model, nil]
+        when Models::BoundDataService then using.task_model
         when InstanceRequirements
           unless using.arguments.empty? && using.selections.empty? && !using.device
             raise DeclarationError.new(
@@ -234,8 +244,8 @@ module Syskit
                               hint: 'give the device its settings with chained calls (.with_conf, .period, ...)'
             )
           end
-          [using.component_model || using, using]
-        else [using, nil]
+          using.component_model || using
+        else using
         end
       end
 
@@ -280,17 +290,19 @@ module Syskit
       end
 
       def check_cycle(device, bus, location)
-        chain = [device]
         current = bus
         while current
-          chain << current
-          if current.equal?(device)
-            raise NetworkError.new("attaching #{device} to #{bus} makes a cycle: #{chain.map(&:name).join(' -> ')}",
-                                   location: location, hint: 'a bus cannot be attached through itself')
-          end
+          raise cycle_error(device, bus, location) if current.equal?(device)
 
           current = current.bus
         end
+      end
+
+      def cycle_error(device, bus, location)
+        chain = [device, bus]
+        chain << chain.last.bus until chain.last.equal?(device)
+        NetworkError.new("attaching #{device} to #{bus} makes a cycle: #{chain.map(&:name).join(' -> ')}",
+                         location: location, hint: 'a bus cannot be attached through itself')
       end
     end
   end

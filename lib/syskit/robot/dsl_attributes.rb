@@ -21,7 +21,15 @@ module Syskit
         # two objects the garbage collector cannot track cheaply, 20,000
         # of them on a 10,000-device robot).
         frame = caller_locations(2, 1).first
-        (@dsl_attribute_frames ||= {})[attr] = Location.user_frame?(frame) ? Location.from(frame) : nil
+        location = Location.user_frame?(frame) ? Location.from(frame) : nil
+        # Usually chained on the device's own line (the same Location, see
+        # Location.from): nothing to keep then, the device's location is
+        # the answer.
+        if location.nil? || location.equal?(declared_at)
+          @dsl_attribute_frames&.delete(attr)
+        else
+          (@dsl_attribute_frames ||= {})[attr] = location
+        end
         self
       end
 

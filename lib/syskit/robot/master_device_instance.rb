@@ -21,12 +21,17 @@ module Syskit
       include ComBusClient
 
       DEFAULT_CONF = ['default'].freeze
+      # What a device has before any prefer_deployed_tasks; the lists of
+      # configuration modules of a device on no bus.
       NO_HINTS = [].freeze
+      NO_MODULES = [].freeze
 
       attr_reader :name, :robot, :declared_at, :requested_model, :using, :bus,
                   :deployment_hints, :dsl_attributes, :client_to_bus, :bus_to_client
 
-      def initialize(robot, name, requested_model, using: nil, location: nil)
+      # By position: one is made for every device declared, and keywords
+      # given to +new+ cost a hash each.
+      def initialize(robot, name, requested_model, using = nil, location = nil)
         @robot = robot
         @name = name
         @requested_model = requested_model
@@ -37,7 +42,6 @@ module Syskit
         # as it is (see InstanceRequirements#deployment_hints).
         @deployment_hints = NO_HINTS
         @dsl_attributes = {}
-        @settings = {}
         @client_to_bus = true
         @bus_to_client = true
         model = requested_model.is_a?(Models::DeviceModel) ? requested_model : single_driven_model
@@ -77,11 +81,7 @@ module Syskit
       end
 
       def driver_service_of(task_model)
-        services = task_model.driver_services_for(model)
-        # A bus driver's bus services (BusInSrv...) serve the bus too; its
-        # driver service is the one of the bus model itself.
-        own = services.select { |srv| srv.model.fullfills?(model) }
-        services = own unless own.empty?
+        services = own_services(task_model.driver_services_for(model))
         return services.first if services.size == 1
 
         if services.empty?
@@ -130,7 +130,9 @@ module Syskit
           raise DeclarationError.new("prefer_deployed_tasks expects regexps or names, got #{hint.inspect}",
                                      location: Location.of_caller, hint: 'write prefer_deployed_tasks(/forward/)')
         end
-        @deployment_hints = (@deployment_hints + hints).freeze
+        # +hints+ is this call's own array: kept as it is by the first call
+        # (frozen: see above).
+        @deployment_hints = (@deployment_hints.empty? ? hints : @deployment_hints + hints).freeze
         @deployment_hints_location = Location.of_caller
         self
       end
@@ -139,19 +141,33 @@ module Syskit
       attr_reader :deployment_hints_location
 
       # Expected time between two messages of the device, in seconds.
+      # (The settings are instance variables rather than a hash: nearly
+      # every device has a period, and a hash each is one more object.)
       def period(seconds = nil)
-        setting(:period, seconds, 'a positive number of seconds') { |v| v.is_a?(Numeric) && v.positive? }
+        expected = 'a positive number of seconds'
+        return read_attribute(:period, @period, expected) if seconds.nil?
+
+        @period = checked_setting(:period, seconds, expected) { |v| v.is_a?(Numeric) && v.positive? }
+        self
       end
 
       # How many messages the device may send at once, beyond one per
       # period (0, Syskit's default, for none).
       def burst(count = nil)
-        setting(:burst, count, 'an integer, 0 or more') { |v| v.is_a?(Integer) && !v.negative? }
+        expected = 'an integer, 0 or more'
+        return read_attribute(:burst, @burst, expected) if count.nil?
+
+        @burst = checked_setting(:burst, count, expected) { |v| v.is_a?(Integer) && !v.negative? }
+        self
       end
 
       # Size of one message, for drivers that size their buffers.
       def sample_size(size = nil)
-        setting(:sample_size, size, 'a positive integer') { |v| v.is_a?(Integer) && v.positive? }
+        expected = 'a positive integer'
+        return read_attribute(:sample_size, @sample_size, expected) if size.nil?
+
+        @sample_size = checked_setting(:sample_size, size, expected) { |v| v.is_a?(Integer) && v.positive? }
+        self
       end
 
       # Documentation of the device. As Syskit's dsl_attribute: no argument
@@ -200,15 +216,18 @@ module Syskit
       # device and bus models), made once per combination and kept by the
       # first module: devices declared with known model and bus get their
       # methods without a singleton class each.
-      def self.including(modules)
-        return self if modules.empty?
+      # +modules+ are the device model's, +bus_modules+ its bus model's.
+      def self.including(modules, bus_modules = NO_MODULES)
+        owner = modules.first || bus_modules.first
+        return self unless owner
 
-        classes = modules.first.instance_variable_get(:@device_classes) ||
-                  modules.first.instance_variable_set(:@device_classes, {})
-        # By class, then by the list of modules (looked up as given, kept
-        # as a frozen copy).
+        classes = owner.instance_variable_get(:@device_classes) || owner.instance_variable_set(:@device_classes, {})
+        # By class, then by each list of modules (looked up as given, kept
+        # as frozen copies).
         by_modules = classes[self] ||= {}
-        by_modules[modules] || (by_modules[modules.dup.freeze] = Class.new(self) { modules.each { |mod| include mod } })
+        by_bus_modules = by_modules[modules] || (by_modules[modules.dup.freeze] = {})
+        by_bus_modules[bus_modules] ||
+          (by_bus_modules[bus_modules.dup.freeze] = Class.new(self) { (modules + bus_modules).each { include _1 } })
       end
 
       def attached?
@@ -271,6 +290,16 @@ module Syskit
 
       private
 
+      # A bus driver's bus services (BusInSrv...) serve the bus too; its
+      # driver service is the one of the bus model itself. Usually every
+      # service is the device model's own: no list is made then.
+      def own_services(services)
+        return services if services.all? { |srv| srv.model.fullfills?(model) }
+
+        own = services.select { |srv| srv.model.fullfills?(model) }
+        own.empty? ? services : own
+      end
+
       # Adds the methods of +modules+ that the device's class does not have.
       def configure_with(modules)
         modules.each { |mod| extend(mod) unless is_a?(mod) }
@@ -285,16 +314,12 @@ module Syskit
         models.first if models.size == 1
       end
 
-      def setting(key, value, expected)
-        return read_attribute(key, @settings[key], expected) if value.nil?
+      # +value+, once the block accepts it.
+      def checked_setting(key, value, expected)
+        return value if yield(value)
 
-        unless yield(value)
-          raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}",
-                                     location: Location.of_caller, hint: "#{key} takes #{expected}")
-        end
-
-        @settings[key] = value
-        self
+        raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}",
+                                   location: Location.of_caller, hint: "#{key} takes #{expected}")
       end
 
       def chainable_methods

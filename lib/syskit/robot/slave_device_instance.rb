@@ -26,7 +26,6 @@ module Syskit
         @dynamic_service_name = dynamic
         @dynamic_options = options.freeze
         @dsl_attributes = {}
-        @settings = {}
         @client_to_bus = true
         @bus_to_client = true
         @created_ports = NO_PORTS

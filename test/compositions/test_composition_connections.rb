@@ -35,6 +35,21 @@ module Syskit
       assert_equal({ %w[pose follow] => { %w[pose pose] => {} } }, parent.connections)
     end
 
+    # A model's connections are kept between generations: a connection or
+    # an overload declared later, on it or on its parent, still shows.
+    def test_connections_declared_after_they_were_read_show
+      parent = new_cmp do
+        add Rig::Services::Pose, as: 'pose'
+        add OroGen.rig.Follower, as: 'follow'
+      end
+      submodel = parent.new_submodel
+      assert_empty submodel.port_connections
+      parent.pose_child.pose_port.connect_to parent.follow_child.pose_port
+      assert_equal [%w[pose pose]], submodel.port_connections.map { |c| [c.from.key.last, c.to.key.last] }
+      submodel.overload 'pose', OroGen.rig.Tracker.front_pose_srv
+      assert_equal [%w[front pose]], submodel.port_connections.map { |c| [c.from.key.last, c.to.key.last] }
+    end
+
     def test_connect_ports_connects_by_name_within_one_composition
       model = new_cmp do
         add OroGen.rig.Follower, as: 'follow'

@@ -211,6 +211,7 @@ module Syskit
                                                                          facets: facets - requirements.models,
                                                                          parent_model: overloaded_child(existing))
         (@children ||= {})[name] = child
+        Component.declarations_changed # see #port_connections
         define_child_readers(name)
         child
       end

@@ -30,6 +30,16 @@ module Syskit
         inherited.merge(@configurations || {})
       end
 
+      # The configuration +name+ (child name => sections), nil when there
+      # is none: #configurations[name] without merging the hierarchy's
+      # (asked for each child of each composition while generating).
+      def configuration(name)
+        found = @configurations&.[](name)
+        return found if found
+
+        superclass.configuration(name) if superclass.respond_to?(:configuration)
+      end
+
       # Where the named configuration +name+ is declared.
       def configuration_location(name)
         @configuration_locations&.[](name) ||

@@ -117,18 +117,23 @@ module Syskit
         check_grandchild_port(from, location)
         check_connection(from, to, location)
         (@connections ||= []) << Connection.new(from, to, policy, location)
+        Component.declarations_changed
         self
       end
 
       # The connections between children, one per pair of ports (a
       # Connection, which knows where it was declared), inherited ones
       # included, between the ports of the children as this model has them.
+      # Kept (frozen) until a declaration changes (a connection or a child
+      # declared anywhere): generation asks for them once per composition.
       def port_connections
-        inherited = superclass.respond_to?(:port_connections) ? superclass.port_connections : []
-        (inherited + (@connections || [])).map do |c|
-          from = current_port(c.from)
-          to = current_port(c.to)
-          from.equal?(c.from) && to.equal?(c.to) ? c : Connection.new(from, to, c.policy, c.location)
+        cached(:port_connections) do
+          inherited = superclass.respond_to?(:port_connections) ? superclass.port_connections : []
+          (inherited + (@connections || [])).map do |c|
+            from = current_port(c.from)
+            to = current_port(c.to)
+            from.equal?(c.from) && to.equal?(c.to) ? c : Connection.new(from, to, c.policy, c.location)
+          end.freeze
         end
       end
 

@@ -161,10 +161,14 @@ module Syskit
         return requirements if requirements.conf_given?
 
         model = composition.model
-        conf = composition.conf.reverse.find { |c| model.configurations.dig(c, name) }
-        return requirements unless conf
+        # The last of the composition's sections that names the child
+        # (Array#rindex: no reversed copy).
+        sections = composition.conf
+        found = sections.rindex { |c| model.configuration(c)&.[](name) }
+        return requirements unless found
 
-        requirements.with_conf(*model.configurations.dig(conf, name), location: model.configuration_location(conf))
+        conf = sections[found]
+        requirements.with_conf(*model.configuration(conf)[name], location: model.configuration_location(conf))
       end
 
       def sibling_cycle(composition, pending)

@@ -45,9 +45,13 @@ module Syskit
       submodel = parent.new_submodel
       assert_empty submodel.port_connections
       parent.pose_child.pose_port.connect_to parent.follow_child.pose_port
-      assert_equal [%w[pose pose]], submodel.port_connections.map { |c| [c.from.key.last, c.to.key.last] }
+      assert_equal [%w[pose pose]], port_names(submodel)
       submodel.overload 'pose', OroGen.rig.Tracker.front_pose_srv
-      assert_equal [%w[front pose]], submodel.port_connections.map { |c| [c.from.key.last, c.to.key.last] }
+      assert_equal [%w[front pose]], port_names(submodel)
+    end
+
+    def port_names(model)
+      model.port_connections.map { |c| [c.from.key.last, c.to.key.last] }
     end
 
     def test_connect_ports_connects_by_name_within_one_composition

@@ -32,6 +32,17 @@ module Syskit
       assert_same @model, @model.narrow('pose' => OroGen.rig.Tracker.front_pose_srv)
     end
 
+    # A submodel declares none of its own: its parent's apply to it.
+    def test_a_parents_specialization_applies_to_a_submodel
+      submodel = @model.new_submodel
+      refute submodel.specializations?
+      @model.specialize @model.pose_child => Rig::Services::Odometry
+      assert submodel.specializations?
+      narrowed = submodel.narrow('pose' => odometry_source)
+      assert narrowed.specialization?
+      assert narrowed <= submodel
+    end
+
     # As Syskit's: a component selected through one of its services
     # matches the specializations on that service only, whether the
     # service is selected for the child or for the model it requires.

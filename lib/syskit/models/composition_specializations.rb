@@ -52,6 +52,15 @@ module Syskit
         SpecializationManager.new(self, promoted + own_specializations)
       end
 
+      # Whether this model or a parent declares a specialization, without
+      # making the SpecializationManager: asked for every composition
+      # while generating, and most models have none.
+      def specializations?
+        return true if @own_specializations && !@own_specializations.empty?
+
+        superclass.respond_to?(:specializations?) && superclass.specializations?
+      end
+
       # Adds a constraint on which specializations may be combined: the
       # block gets two specializations and says whether they can apply
       # together. It must give the same answer both ways.
@@ -103,7 +112,7 @@ module Syskit
       # selected requirements): this one, or a specialized submodel.
       # +hints+: prefer_specializations' mappings.
       def specialized_model_for(selection, hints: [], location: nil)
-        return self if specialization?
+        return self if specialization? || !specializations?
 
         candidates = specialization_candidates(specializations.select { |s| s.weak_match?(selection) })
         candidates = prefer(candidates, hints) if candidates.size > 1

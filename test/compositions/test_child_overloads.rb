@@ -31,6 +31,16 @@ module Syskit
       assert_same parent.pose_child, parent.find_exported_output('out').child, 'the parent is left as it is'
     end
 
+    # A model's exports are kept between generations: an overload declared
+    # after they were read still shows.
+    def test_exports_read_before_an_overload_follow_it
+      parent, = overloaded_pose_child
+      model = parent.new_submodel
+      assert_equal model.pose_child.pose_port, model.find_exported_output('out')
+      model.overload 'pose', Rig::Services::Odometry
+      assert_equal model.pose_child.odometry_port, model.find_exported_output('out')
+    end
+
     def test_connections_follow_an_overload_in_a_submodel
       parent, model = overloaded_pose_child
       assert_same model.pose_child, model.port_connections.first.from.child

@@ -211,7 +211,7 @@ module Syskit
                                                                          facets: facets - requirements.models,
                                                                          parent_model: overloaded_child(existing))
         (@children ||= {})[name] = child
-        Component.declarations_changed # see #port_connections
+        Component.declarations_changed # see #port_connections and #exports
         define_child_readers(name)
         child
       end

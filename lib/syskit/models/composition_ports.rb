@@ -44,12 +44,15 @@ module Syskit
       end
 
       # Exported ports by name, inherited ones included, each a port of the
-      # child as this model has it (overloaded or not).
+      # child as this model has it (overloaded or not). Kept (frozen) until
+      # a declaration changes (an export, a child), as #port_connections.
       def exports
-        inherited = superclass.respond_to?(:exports) ? superclass.exports : {}
-        inherited.merge(@exports || {}).transform_values do |export|
-          port = current_port(export.port)
-          port.equal?(export.port) ? export : Export.new(export.name, port, export.location)
+        cached(:exports) do
+          inherited = superclass.respond_to?(:exports) ? superclass.exports : {}
+          inherited.merge(@exports || {}).transform_values do |export|
+            port = current_port(export.port)
+            port.equal?(export.port) ? export : Export.new(export.name, port, export.location)
+          end.freeze
         end
       end
 

@@ -66,7 +66,9 @@ module Syskit
           to = composition.resolve_child_port(declared.to)
           next unless from && to
 
-          key = [from, to].flatten.map(&:object_id)
+          # One list per connection (task, port name, task, port name, by
+          # identity): +from+ and +to+ are [task, port name] pairs.
+          key = [from[0].object_id, from[1].object_id, to[0].object_id, to[1].object_id]
           next if seen[key]
 
           seen[key] = true
@@ -77,8 +79,8 @@ module Syskit
       end
 
       def composition_connection(from, to, declared)
-        from_port = port_of(*from, :output, declared)
-        to_port = port_of(*to, :input, declared)
+        from_port = port_of(from[0], from[1], :output, declared)
+        to_port = port_of(to[0], to[1], :input, declared)
         policy = declared.policy
         policy = policy.empty? ? Policy.for_port(to_port) : Policy.declared(Policy.of(policy), to_port)
         Connection.new(from[0], from_port, to[0], to_port, policy, nil, declared.location)

@@ -77,8 +77,10 @@ module Syskit
       dir = Dir.mktmpdir('syskit-suite')
       (@tmpdirs ||= []) << dir
       File.write(File.join(dir, 'suite.rb'), SUITE)
+      # In a directory of its own: a test running beside this one in the
+      # suite's process may be in a directory it is about to remove.
       out, err, status = Open3.capture3(SelfTest.child_env.merge(env), RbConfig.ruby, File.join(dir, 'suite.rb'),
-                                        unsetenv_others: true)
+                                        chdir: dir, unsetenv_others: true)
       ["#{out}#{err}", status]
     end
   end

@@ -26,9 +26,11 @@ module Syskit
       include DataAccessors
 
       class << self
-        # Bumped whenever a component model gains a service or a stub: the
-        # cached views below (which merge a model's declarations with its
-        # parents') are then computed again.
+        # Bumped whenever a component model's declarations change (a
+        # service, a stub, an argument, a child or connection of a
+        # composition, a configuration hook): what models keep computed
+        # from their declarations and their parents' (the views below,
+        # default arguments, port mappings...) is then computed again.
         def declarations_version
           @declarations_version ||= 0
         end

@@ -4,50 +4,40 @@ module Syskit
   module Models
     # Which of Syskit's two configuration hooks a task model uses (see
     # #use_update_properties?). The generator asks for every task it
-    # configures, so the answer is kept per model, and forgotten whenever
-    # any task model defines or removes one of the hooks (a model file
-    # loaded later, a test's class_eval): the answer of a model depends on
-    # its parents too.
+    # configures, so the answer is kept per model, and computed again once
+    # any task model defined or removed one of the hooks (a model file
+    # loaded later, a test's class_eval; the answer of a model depends on
+    # its parents too): those count as declarations that changed (see
+    # Component.declarations_changed).
     module ConfigurationHooks
       HOOKS = %i[update_properties configure].freeze
-
-      class << self
-        # Counts the hook definitions seen so far: an answer kept from an
-        # earlier count is stale.
-        attr_reader :generation
-
-        def hook_changed
-          @generation += 1
-        end
-      end
-      @generation = 0
 
       # Whether the task is configured through +update_properties+ (Syskit's
       # newer hook) rather than +configure+: true unless a model class below
       # Syskit::TaskContext defines +configure+ and none defines
       # +update_properties+. Methods of modules mixed in are not counted.
       def use_update_properties?
-        generation = ConfigurationHooks.generation
-        return @use_update_properties if @use_update_properties_at == generation
+        version = Component.declarations_version
+        return @use_update_properties if @use_update_properties_version == version
 
-        @use_update_properties_at = generation
+        @use_update_properties_version = version
         @use_update_properties = compute_use_update_properties
       end
 
       # Ruby's hooks, called on the class a method is defined in.
       def method_added(name)
         super
-        ConfigurationHooks.hook_changed if HOOKS.include?(name)
+        Component.declarations_changed if HOOKS.include?(name)
       end
 
       def method_removed(name)
         super
-        ConfigurationHooks.hook_changed if HOOKS.include?(name)
+        Component.declarations_changed if HOOKS.include?(name)
       end
 
       def method_undefined(name)
         super
-        ConfigurationHooks.hook_changed if HOOKS.include?(name)
+        Component.declarations_changed if HOOKS.include?(name)
       end
 
       private

@@ -20,7 +20,7 @@ module Syskit
         end
 
         (@argument_declarations ||= {})[name] = [default, location, doc]
-        TaskArguments.declared
+        Component.declarations_changed
         define_method(name) do
           value = arguments.fetch(name) { self.class.argument_default(name, Location.of_caller) }
           value.is_a?(Compat::Roby::DefaultArgument) ? value.value : value
@@ -76,29 +76,17 @@ module Syskit
       #
       # Every task of the model starts with them: they are made once per
       # model (frozen, DefaultArgument being a frozen value), and made again
-      # only after an argument was declared on any model, this one's
-      # parents included.
+      # after declarations changed on any model (see
+      # Component.declarations_changed), this one's parents included.
       def default_arguments
-        if @default_arguments.nil? || @default_arguments_count != TaskArguments.declarations
-          @default_arguments_count = TaskArguments.declarations
+        version = Component.declarations_version
+        unless @default_arguments && @default_arguments_version == version
+          @default_arguments_version = version
           @default_arguments = argument_declarations.each_with_object({}) do |(name, (default, _)), defaults|
             defaults[name] = Compat::Roby::DefaultArgument.new(default) unless default.equal?(NO_DEFAULT)
           end.freeze
         end
         @default_arguments
-      end
-
-      @declarations = 0
-
-      class << self
-        # How many arguments were declared so far, on all models: what
-        # tells a model its #default_arguments are no longer up to date.
-        attr_reader :declarations
-
-        # Counts an argument declared.
-        def declared
-          @declarations += 1
-        end
       end
 
       # Whether +name+ (a symbol) is an argument declared with +argument+,

@@ -8,6 +8,10 @@ module Syskit
   # when something is registered, so they are the same object, and
   # +class OroGen::GpsUblox::Task ... end+ reopens the task model.
   class Namespace < Module
+    # An argument not given to an entry's method (see #define_entry).
+    NONE = Object.new.freeze
+    private_constant :NONE
+
     # Segments of the path from the root ('canbus', 'Message').
     attr_reader :segments
 
@@ -88,8 +92,14 @@ module Syskit
       # ...): it stays reachable as a constant and through #entry.
       # The method reads the entry rather than keeping it (see #forget).
       if name.match?(/\A[A-Za-z_]\w*\z/) && !Module.public_method_defined?(name)
-        define_singleton_method(name) do |*args|
-          raise ArgumentError, "expected 0 arguments, got #{args.size}" unless args.empty?
+        # Optional parameters rather than *args, which would make an array
+        # on every call (once per device of a robot file): Syskit's message
+        # for up to three arguments, Ruby's beyond.
+        define_singleton_method(name) do |first = NONE, second = NONE, third = NONE|
+          unless first.equal?(NONE)
+            given = [first, second, third].count { |a| !a.equal?(NONE) }
+            raise ArgumentError, "expected 0 arguments, got #{given}"
+          end
 
           @entries.fetch(name)
         end

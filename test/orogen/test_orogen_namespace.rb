@@ -39,6 +39,8 @@ module Syskit
       @namespace.register_syskit_model(model('project::Task'))
       error = assert_raises(ArgumentError) { @namespace.project.Task('x') }
       assert_equal 'expected 0 arguments, got 1', error.message
+      error = assert_raises(ArgumentError) { @namespace.project(nil, false) }
+      assert_equal 'expected 0 arguments, got 2', error.message
     end
 
     def test_the_project_is_a_constant_only_when_constant_registration_is_on

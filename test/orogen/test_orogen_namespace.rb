@@ -39,7 +39,7 @@ module Syskit
       @namespace.register_syskit_model(model('project::Task'))
       error = assert_raises(ArgumentError) { @namespace.project.Task('x') }
       assert_equal 'expected 0 arguments, got 1', error.message
-      error = assert_raises(ArgumentError) { @namespace.project(nil, false) }
+      error = assert_raises(ArgumentError) { @namespace.project.Task(nil, false) }
       assert_equal 'expected 0 arguments, got 2', error.message
     end
 

@@ -60,7 +60,13 @@ module Syskit
       # The value the filter block makes of +args+; what it raises says the
       # value is refused (exits and endless recursions are located too).
       def filter_value(attr, args, filter_method)
-        send(filter_method, *args)
+        # Spelled out for one and two arguments: the splat would copy
+        # +args+ on every call (can_id, period... once per device).
+        case args.size
+        when 1 then send(filter_method, args[0])
+        when 2 then send(filter_method, args[0], args[1])
+        else send(filter_method, *args)
+        end
       rescue Syskit::Error
         raise
       rescue StandardError => e

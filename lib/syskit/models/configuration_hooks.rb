@@ -8,7 +8,7 @@ module Syskit
     # any task model defined or removed one of the hooks (a model file
     # loaded later, a test's class_eval; the answer of a model depends on
     # its parents too): those count as declarations that changed (see
-    # Component.declarations_changed).
+    # Component#cached).
     module ConfigurationHooks
       HOOKS = %i[update_properties configure].freeze
 
@@ -17,11 +17,7 @@ module Syskit
       # Syskit::TaskContext defines +configure+ and none defines
       # +update_properties+. Methods of modules mixed in are not counted.
       def use_update_properties?
-        version = Component.declarations_version
-        return @use_update_properties if @use_update_properties_version == version
-
-        @use_update_properties_version = version
-        @use_update_properties = compute_use_update_properties
+        cached(:use_update_properties) { compute_use_update_properties }
       end
 
       # Ruby's hooks, called on the class a method is defined in.

@@ -111,15 +111,18 @@ module Syskit
       # declaration asks its model and its bus model for their
       # configuration modules, which do not change while a robot is
       # declared.
-      def hierarchy_view(name)
+      #
+      # With +subkey+, one value per +subkey+ (compared by identity) under
+      # +name+, as Component#cached keeps them.
+      def hierarchy_view(name, subkey = nil)
         version = DataServiceModel.hierarchy_version
-        views = (@hierarchy_views ||= {})
-        view = views[name]
-        return view.last if view && view.first == version
-
-        value = yield.freeze
-        views[name] = [version, value]
-        value
+        if @hierarchy_views_version != version
+          @hierarchy_views = {}
+          @hierarchy_views_version = version
+        end
+        table = subkey.nil? ? @hierarchy_views : (@hierarchy_views[name] ||= {}.compare_by_identity)
+        slot = subkey.nil? ? name : subkey
+        table.fetch(slot) { table[slot] = yield.freeze }
       end
 
       # Enumerates {#fullfilled_models}.
@@ -135,12 +138,7 @@ module Syskit
       def port_mappings_for(model)
         return (@identity_mappings ||= ports.keys.to_h { |n| [n, n] }.freeze) if model.equal?(self)
 
-        version = DataServiceModel.hierarchy_version
-        if @port_mappings_version != version
-          @port_mappings = {}.compare_by_identity
-          @port_mappings_version = version
-        end
-        @port_mappings.fetch(model) { @port_mappings[model] = inherited_port_mappings(model).freeze }
+        hierarchy_view(:port_mappings, model) { inherited_port_mappings(model) }
       end
 
       private

@@ -76,17 +76,14 @@ module Syskit
       #
       # Every task of the model starts with them: they are made once per
       # model (frozen, DefaultArgument being a frozen value), and made again
-      # after declarations changed on any model (see
-      # Component.declarations_changed), this one's parents included.
+      # after declarations changed on any model (see Component#cached), this
+      # one's parents included.
       def default_arguments
-        version = Component.declarations_version
-        unless @default_arguments && @default_arguments_version == version
-          @default_arguments_version = version
-          @default_arguments = argument_declarations.each_with_object({}) do |(name, (default, _)), defaults|
+        cached(:default_arguments) do
+          argument_declarations.each_with_object({}) do |(name, (default, _)), defaults|
             defaults[name] = Compat::Roby::DefaultArgument.new(default) unless default.equal?(NO_DEFAULT)
           end.freeze
         end
-        @default_arguments
       end
 
       # Whether +name+ (a symbol) is an argument declared with +argument+,

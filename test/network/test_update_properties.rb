@@ -49,15 +49,19 @@ module Syskit
       assert_equal 5.0, plan.find_task('b').properties['threshold']
     end
 
-    def test_update_properties_of_a_module_runs_through_configure_s_super
-      plan = sensor_plan(<<~RUBY)
-        prepend(Module.new do
-          def update_properties
-            super
-            properties.threshold = 7.0
-          end
-        end)
+    # An update_properties of a module (a plugin's), which does not count
+    # for use_update_properties?.
+    MODULE_UPDATE_PROPERTIES = <<~RUBY
+      prepend(Module.new do
+        def update_properties
+          super
+          properties.threshold = 7.0
+        end
+      end)
+    RUBY
 
+    def test_update_properties_of_a_module_runs_through_configure_s_super
+      plan = sensor_plan(MODULE_UPDATE_PROPERTIES + <<~RUBY)
         def configure
           super
           properties.threshold += 1
@@ -67,14 +71,7 @@ module Syskit
     end
 
     def test_configure_without_super_does_not_run_update_properties
-      plan = sensor_plan(<<~RUBY)
-        prepend(Module.new do
-          def update_properties
-            super
-            properties.threshold = 7.0
-          end
-        end)
-
+      plan = sensor_plan(MODULE_UPDATE_PROPERTIES + <<~RUBY)
         def configure
           properties.threshold += 1
         end
@@ -94,6 +91,7 @@ module Syskit
       RUBY
       assert_match(/in sensor::Task's update_properties for device 'a': .*no property 'threshhold'/, error.message)
       assert_equal [File.join(@root, 'models/orogen/sensor.rb'), 5], [error.location.path, error.location.lineno]
+      assert_equal 'its properties are limits, threshold', error.hint
     end
   end
 end

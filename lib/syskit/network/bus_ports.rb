@@ -60,6 +60,13 @@ module Syskit
         name = service_port_of(model, service_model, service_port)
         return [name, false] if name
 
+        per_device_port_of(model, direction, service_model, dynamic_name)
+      end
+
+      # The second half of #bus_port_of, for a driver without a service
+      # port serving every device: +dynamic_name+ when a dynamic port
+      # pattern allows it, else its single port of the bus's message type.
+      def self.per_device_port_of(model, direction, service_model, dynamic_name)
         type = service_model.bus_model.message_type
         return [dynamic_name, true] if model.spec&.dynamic_port_for(direction, dynamic_name, type)
 
@@ -86,7 +93,7 @@ module Syskit
         return shared if shared
 
         dynamic_name = prefix.empty? ? @device.name : "#{prefix}#{@device.name}"
-        name, dynamic = BusPorts.bus_port_of(@bus_task.model, direction, service_model, service_port, dynamic_name)
+        name, dynamic = BusPorts.per_device_port_of(@bus_task.model, direction, service_model, dynamic_name)
         raise no_bus_port(direction, dynamic_name) unless name
 
         @expected << Context::ExpectedPort.new(dynamic_name, direction, @type, @device) if dynamic

@@ -141,33 +141,19 @@ module Syskit
       attr_reader :deployment_hints_location
 
       # Expected time between two messages of the device, in seconds.
-      # (The settings are instance variables rather than a hash: nearly
-      # every device has a period, and a hash each is one more object.)
       def period(seconds = nil)
-        expected = 'a positive number of seconds'
-        return read_attribute(:period, @period, expected) if seconds.nil?
-
-        @period = checked_setting(:period, seconds, expected) { |v| v.is_a?(Numeric) && v.positive? }
-        self
+        setting(:period, :@period, seconds, 'a positive number of seconds') { |v| v.is_a?(Numeric) && v.positive? }
       end
 
       # How many messages the device may send at once, beyond one per
       # period (0, Syskit's default, for none).
       def burst(count = nil)
-        expected = 'an integer, 0 or more'
-        return read_attribute(:burst, @burst, expected) if count.nil?
-
-        @burst = checked_setting(:burst, count, expected) { |v| v.is_a?(Integer) && !v.negative? }
-        self
+        setting(:burst, :@burst, count, 'an integer, 0 or more') { |v| v.is_a?(Integer) && !v.negative? }
       end
 
       # Size of one message, for drivers that size their buffers.
       def sample_size(size = nil)
-        expected = 'a positive integer'
-        return read_attribute(:sample_size, @sample_size, expected) if size.nil?
-
-        @sample_size = checked_setting(:sample_size, size, expected) { |v| v.is_a?(Integer) && v.positive? }
-        self
+        setting(:sample_size, :@sample_size, size, 'a positive integer') { |v| v.is_a?(Integer) && v.positive? }
       end
 
       # Documentation of the device. As Syskit's dsl_attribute: no argument
@@ -314,12 +300,20 @@ module Syskit
         models.first if models.size == 1
       end
 
-      # +value+, once the block accepts it.
-      def checked_setting(key, value, expected)
-        return value if yield(value)
+      # Reads the setting +key+ (without +value+) or sets it, once the
+      # block accepts +value+. Settings are instance variables (+ivar+)
+      # rather than a hash: nearly every device has a period, and a hash
+      # each is one more object.
+      def setting(key, ivar, value, expected)
+        return read_attribute(key, instance_variable_get(ivar), expected) if value.nil?
 
-        raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}",
-                                   location: Location.of_caller, hint: "#{key} takes #{expected}")
+        unless yield(value)
+          raise DeclarationError.new("invalid #{key} #{value.inspect} for #{self}",
+                                     location: Location.of_caller, hint: "#{key} takes #{expected}")
+        end
+
+        instance_variable_set(ivar, value)
+        self
       end
 
       def chainable_methods

@@ -112,14 +112,15 @@ module Syskit
         robot
       end
 
-      # Defines +<device>_dev+ on the profile module: an alias of one shared
-      # method, which finds the device from the name it is called by.
+      # Defines +<device>_dev+ on the profile module: one shared method
+      # under the action's name, which finds the device from the name it is
+      # called by. (Defined from the method itself rather than aliased:
+      # an alias, made public, costs one more object per device.)
       def define_device_action(device)
         action = "#{device.name}_dev"
         return define_singleton_method(action) { find_action(action) } if namespace.equal?(self)
 
-        namespace.singleton_class.send(:alias_method, action, :syskit_device_action)
-        namespace.singleton_class.send(:public, action)
+        namespace.singleton_class.send(:define_method, action, ModuleMethods::DEVICE_ACTION)
       end
 
       # Action names (+gps_dev+, ...), in declaration order, each device's
@@ -266,11 +267,13 @@ module Syskit
           @syskit_profile
         end
 
-        # What every +<device>_dev+ method is an alias of.
+        # What every +<device>_dev+ method is (see
+        # Profile#define_device_action): +__callee__+ is the action's name.
         def syskit_device_action
           @syskit_profile.find_action(__callee__)
         end
-        private :syskit_device_action
+        DEVICE_ACTION = instance_method(:syskit_device_action)
+        remove_method(:syskit_device_action)
 
         def explain_missing(name)
           actions = syskit_profile.action_names + syskit_profile.tags.keys.map { |t| "#{t}_tag" }

@@ -181,6 +181,29 @@ module Syskit
       end
     end
 
+    # can_id's filter takes (id, mask = id): a value it refuses names the
+    # call and its parameters; a third argument is refused by Ruby, at
+    # the same line.
+    def test_invalid_can_id_arguments
+      cases = {
+        "can_id('a', 2)" => [/can_id\("a", 2\) on device 't': the id must be an integer, got "a"/,
+                             /can_id takes \(id, mask = \.\.\.\)/],
+        'can_id(1, 0x4000_0000)' => [/can_id\(1, 1073741824\) on device 't': the mask 0x40000000 does not fit/,
+                                     /can_id takes \(id, mask = \.\.\.\)/],
+        'can_id(1, 2, 3)' => [/wrong number of arguments \(given 3, expected 0\.\.2\)/, /fix the code at this line/]
+      }
+      cases.each do |call, (message, hint)|
+        robot = <<~RUBY
+          com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
+          device(Devices::TemperatureSensor, as: 't').attach_to('can0')
+            .#{call}
+        RUBY
+        error, root = problem(robot)
+        assert_reported error, message, at: 'models/profiles/base.rb:11', hint: hint, root: root
+        @loaded_apps.pop.unload
+      end
+    end
+
     def test_unknown_statement_in_a_robot_block
       error, root = problem("devise(Devices::IMU, as: 'imu')\n")
       assert_reported error, /unknown statement 'devise' in a robot block \(did you mean 'device'\?\)/,
@@ -243,6 +266,8 @@ module Syskit
         com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
         device(Devices::TemperatureSensor, as: 't').attach_to('can0').can_id(1).with_conf('default', 'x')
           .prefer_deployed_tasks('t')
+        device(Devices::TemperatureSensor, as: 'u').attach_to('can0')
+          .can_id(2, 0x7ff)
       RUBY
       load_app(root)
       device = MyApp::Profiles::Base.t_dev.device
@@ -251,6 +276,9 @@ module Syskit
       assert_same device.declared_at, device.conf_location
       assert_equal 'models/profiles/base.rb:11', device.deployment_hints_location.to_s(root)
       refute_same device.declared_at, device.deployment_hints_location
+      other = MyApp::Profiles::Base.u_dev.device
+      assert_equal [[2, 0x7ff], 'models/profiles/base.rb:13'],
+                   [other.can_id, other.dsl_attribute_location(:can_id).to_s(root)]
     end
   end
 end

@@ -19,15 +19,10 @@ module Syskit
         filter_method = :"__dsl_attribute_filter_#{attr}"
         # define_method gives the filter a method's strict arity.
         define_method(filter_method, &filter) if filter
-        # An if rather than an early return: a return from the block of
-        # define_method costs an object at each read (generation reads an
-        # attribute per device).
-        define_method(attr) do |*args|
-          if args.empty?
-            read_attribute(attr, dsl_attributes[attr])
-          else
-            set_dsl_attribute(attr, args, filter ? filter_method : nil)
-          end
+        if filter && two_positional_parameters?(filter_method)
+          define_pair_attribute(attr, filter_method)
+        else
+          define_list_attribute(attr, filter ? filter_method : nil)
         end
         (@dsl_attribute_names ||= []) << attr
         attr
@@ -40,6 +35,40 @@ module Syskit
           filter = :"__dsl_attribute_filter_#{attr}"
           [attr, method_defined?(filter) ? instance_method(filter).parameters : [[:rest]]]
         end
+      end
+
+      # The attribute's method for a filter of two positional parameters,
+      # as CAN's +can_id(id, mask = id)+ (a robot calls it once per device):
+      # taking them as they are rather than as a list saves the list. Ruby
+      # refuses a third argument itself ("given 3, expected 0..2"), the
+      # filter a missing one.
+      def define_pair_attribute(attr, filter_method)
+        # Ifs rather than an early return: a return from the block of
+        # define_method costs an object at each read (generation reads an
+        # attribute per device).
+        define_method(attr) do |first = Robot::DslAttributes::NONE, second = Robot::DslAttributes::NONE|
+          if first.equal?(Robot::DslAttributes::NONE)
+            read_attribute(attr, dsl_attributes[attr])
+          else
+            set_dsl_attribute_pair(attr, first, second, filter_method)
+          end
+        end
+      end
+
+      # The attribute's method for any other filter, or none.
+      def define_list_attribute(attr, filter_method)
+        define_method(attr) do |*args|
+          if args.empty?
+            read_attribute(attr, dsl_attributes[attr])
+          else
+            set_dsl_attribute(attr, args, filter_method)
+          end
+        end
+      end
+
+      def two_positional_parameters?(filter_method)
+        parameters = instance_method(filter_method).parameters
+        parameters.size == 2 && parameters.all? { |kind, _| %i[req opt].include?(kind) }
       end
 
       # Whether devices already have a method +name+: a public one, or a

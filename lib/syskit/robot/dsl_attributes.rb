@@ -8,19 +8,35 @@ module Syskit
     # set through their filter, read back, and where each was last set.
     # Part of Device (kept in its +dsl_attributes+).
     module DslAttributes
-      # Sets a dsl_attribute (see DeviceConfigurationModule#dsl_attribute).
+      # What an attribute method's second parameter is when not given.
+      NONE = Object.new.freeze
+
+      # Sets a dsl_attribute (see DeviceConfigurationModule#dsl_attribute)
+      # from the list of its arguments.
       def set_dsl_attribute(attr, args, filter_method)
-        value = if filter_method
-                  filter_value(attr, args, filter_method)
-                else
-                  (args.size == 1 ? args.first : args)
+        # Spelled out for one and two arguments: the splat would copy
+        # +args+ on every call.
+        value = if !filter_method then (args.size == 1 ? args.first : args)
+                elsif args.size == 1 then filter_value(attr, filter_method, args[0])
+                elsif args.size == 2 then filter_value(attr, filter_method, args[0], args[1])
+                else filter_value(attr, filter_method, nil, nil, args)
                 end
+        store_dsl_attribute(attr, value, caller_locations(2, 1).first)
+      end
+
+      # Sets a dsl_attribute whose filter takes two positional parameters
+      # from its one or two arguments (+second+ NONE when not given).
+      def set_dsl_attribute_pair(attr, first, second, filter_method)
+        value = filter_value(attr, filter_method, first, second)
+        store_dsl_attribute(attr, value, caller_locations(2, 1).first)
+      end
+
+      # Keeps +value+ and +frame+, the frame that called the attribute's
+      # method, if it is the user's (as a Location: Ruby's frame objects
+      # would keep its backtrace alive, two objects the garbage collector
+      # cannot track cheaply, 20,000 of them on a 10,000-device robot).
+      def store_dsl_attribute(attr, value, frame)
         dsl_attributes[attr] = value
-        # The frame that called the attribute's method, if it is the user's
-        # (a Location: Ruby's frame objects would keep its backtrace alive,
-        # two objects the garbage collector cannot track cheaply, 20,000
-        # of them on a 10,000-device robot).
-        frame = caller_locations(2, 1).first
         location = Location.user_frame?(frame) ? Location.from(frame) : nil
         # Usually chained on the device's own line (the same Location, see
         # Location.from): nothing to keep then, the device's location is
@@ -57,20 +73,19 @@ module Syskit
 
       private
 
-      # The value the filter block makes of +args+; what it raises says the
-      # value is refused (exits and endless recursions are located too).
-      def filter_value(attr, args, filter_method)
-        # Spelled out for one and two arguments: the splat would copy
-        # +args+ on every call (can_id, period... once per device).
-        case args.size
-        when 1 then send(filter_method, args[0])
-        when 2 then send(filter_method, args[0], args[1])
-        else send(filter_method, *args)
+      # The value the filter block makes of the arguments: +first+, and
+      # +second+ unless NONE, or the list +more+ when there are more; what
+      # it raises says the value is refused (exits and endless recursions
+      # are located too).
+      def filter_value(attr, filter_method, first, second = NONE, more = nil)
+        if more then send(filter_method, *more)
+        elsif second.equal?(NONE) then send(filter_method, first)
+        else send(filter_method, first, second)
         end
       rescue Syskit::Error
         raise
       rescue StandardError => e
-        raise invalid_attribute(attr, args, filter_method, e)
+        raise invalid_attribute(attr, more || (second.equal?(NONE) ? [first] : [first, second]), filter_method, e)
       rescue Exception => e # rubocop:disable Lint/RescueException -- user code may raise anything
         raise if e.is_a?(SignalException)
 

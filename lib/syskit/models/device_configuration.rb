@@ -46,8 +46,9 @@ module Syskit
         # Ifs rather than an early return: a return from the block of
         # define_method costs an object at each read (generation reads an
         # attribute per device).
-        define_method(attr) do |first = Robot::DslAttributes::NONE, second = Robot::DslAttributes::NONE|
-          if first.equal?(Robot::DslAttributes::NONE)
+        none = Robot::DslAttributes::NONE
+        define_method(attr) do |first = none, second = none|
+          if first.equal?(none)
             read_attribute(attr, dsl_attributes[attr])
           else
             set_dsl_attribute_pair(attr, first, second, filter_method)

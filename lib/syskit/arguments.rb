@@ -82,6 +82,16 @@ module Syskit
                                                                        hint: 'give each value once')
     end
 
+    # How each kind of parameter (Method#parameters) is written in a call.
+    AS_WRITTEN = { req: '%s', opt: '%s = ...', rest: '*%s', keyreq: '%s:', key: '%s: ...', keyrest: '**%s',
+                   block: '&%s' }.freeze
+
+    # The parameters +parameters+ (as Method#parameters gives them) as they
+    # are written in a call, for hints: ['id', 'mask = ...'].
+    def as_written(parameters)
+      parameters.map { |kind, name| format(AS_WRITTEN.fetch(kind), name) }
+    end
+
     # A value as the user wrote it, cut short when long.
     def shown(value)
       text = value.inspect

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require 'syskit/refused_call'
+
 module Syskit
   # Runs code users wrote (model files, .orogen specs, configure methods) and
   # turns whatever it raises into a Syskit::Error that says what went wrong,
@@ -72,8 +74,9 @@ module Syskit
         ["#{exception.class}: #{first_line(exception.message)}",
          renamed_app_hint(exception.path) || 'fix the code at this line (run with --trace for the backtrace)']
       else
-        ["#{exception.class}: #{first_line(exception.message)}",
-         'fix the code at this line (run with --trace for the backtrace)']
+        RefusedCall.of(exception)&.describe ||
+          ["#{exception.class}: #{first_line(exception.message)}",
+           'fix the code at this line (run with --trace for the backtrace)']
       end
     end
 

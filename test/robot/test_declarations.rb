@@ -182,15 +182,15 @@ module Syskit
     end
 
     # can_id's filter takes (id, mask = id): a value it refuses names the
-    # call and its parameters; a third argument is refused by Ruby, at
-    # the same line.
+    # call and its parameters, as does Ruby's refusal of a third argument.
     def test_invalid_can_id_arguments
       cases = {
         "can_id('a', 2)" => [/can_id\("a", 2\) on device 't': the id must be an integer, got "a"/,
                              /can_id takes \(id, mask = \.\.\.\)/],
         'can_id(1, 0x4000_0000)' => [/can_id\(1, 1073741824\) on device 't': the mask 0x40000000 does not fit/,
                                      /can_id takes \(id, mask = \.\.\.\)/],
-        'can_id(1, 2, 3)' => [/wrong number of arguments \(given 3, expected 0\.\.2\)/, /fix the code at this line/]
+        'can_id(1, 2, 3)' => [/\Acan_id: wrong number of arguments \(given 3, expected 0\.\.2\)/,
+                              /\Acan_id takes \(id, mask = \.\.\.\)\z/]
       }
       cases.each do |call, (message, hint)|
         robot = <<~RUBY
@@ -200,6 +200,27 @@ module Syskit
         RUBY
         error, root = problem(robot)
         assert_reported error, message, at: 'models/profiles/base.rb:11', hint: hint, root: root
+        @loaded_apps.pop.unload
+      end
+    end
+
+    # Ruby refuses these calls before the statement runs; the message
+    # names the statement and the hint says what it takes.
+    def test_a_call_ruby_refuses_names_the_statement
+      cases = {
+        "device(Devices::IMU, 'imu')\n" =>
+          [/\Adevice: wrong number of arguments \(given 2, expected 1\)/,
+           /\Adevice takes \(model, as: \.\.\., using: \.\.\., doc: \.\.\., \*\*options\)\z/, ROBOT],
+        "device(Devices::IMU, as: 'imu')\n  .period(0.1, 2)\n" =>
+          [/\Aperiod: wrong number of arguments \(given 2, expected 0\.\.1\)/, /\Aperiod takes \(seconds = \.\.\.\)\z/,
+           'models/profiles/base.rb:10'],
+        "com_bus CommonModels::Devices::Bus::CAN, as: 'can0'\nthrough('can0', true) { }\n" =>
+          [/\Athrough: wrong number of arguments \(given 2, expected 1\)/, /\Athrough takes \(bus_name, &block\)\z/,
+           'models/profiles/base.rb:10']
+      }
+      cases.each do |robot, (message, hint, at)|
+        error, root = problem(robot)
+        assert_reported error, message, at: at, hint: hint, root: root
         @loaded_apps.pop.unload
       end
     end

@@ -72,6 +72,12 @@ module Syskit
         parameters.size == 2 && parameters.all? { |kind, _| %i[req opt].include?(kind) }
       end
 
+      # What the attribute +name+ takes, as Method#parameters (see
+      # RefusedCall): its filter's parameters; nil for other methods.
+      def parameters_of(name)
+        dsl_attribute_parameters[name] if @dsl_attribute_names&.include?(name)
+      end
+
       # Whether devices already have a method +name+: a public one, or a
       # private one of the gem's device classes or of Ruby itself (raise,
       # format...), on which their own code relies. Private methods other

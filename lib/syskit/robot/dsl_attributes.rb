@@ -97,7 +97,7 @@ module Syskit
         filter = :"__dsl_attribute_filter_#{attr}"
         return unless respond_to?(filter)
 
-        method(filter).parameters.map { |kind, n| kind == :opt ? "#{n} = ..." : n.to_s }
+        Arguments.as_written(method(filter).parameters)
       end
 
       def invalid_attribute(attr, args, filter_method, error)

@@ -24,6 +24,11 @@ module Syskit
         assert_equal expected, plan('SYSKIT_CACHE_DIR' => dir)
         entries = Dir[File.join(dir, '*', '*.iseq')].map { |f| File.basename(f) }
         assert(entries.any? { |e| e.end_with?('-lib-syskit-network-generator.rb.iseq') }, entries.inspect)
+        # The installed libraries it loads are kept too (Psych, from Ruby's
+        # own directory), the app's small files are not.
+        psych = "#{File.join(RbConfig::CONFIG['rubylibdir'], 'psych.rb').tr('/', '-')}.iseq"
+        assert_includes entries, psych
+        refute(entries.any? { |e| e.include?('awesome_robot') }, entries.inspect)
         assert_equal expected, plan('SYSKIT_CACHE_DIR' => dir)
       end
     end

@@ -1,11 +1,16 @@
 # frozen_string_literal: true
 
+require 'rbconfig'
+
 module Syskit
   # Compiled code of the gem's own files, kept between runs: compiling
   # lib/ takes most of a command's start-up (about 80 of 150 ms for
   # `syskit plan`), loading the compiled form a fifth of that. Ruby asks
   # RubyVM::InstructionSequence.load_iseq for each file it loads; for the
-  # gem's files this answers from the cache, other files are left to Ruby.
+  # gem's files, and those of the installed libraries it loads (Thor,
+  # Psych...: Ruby's, site and vendor directories and the gem
+  # directories), this answers from the cache; other files, the user's,
+  # are left to Ruby.
   #
   # The cache is a directory of one file per source file, named by its path
   # (SYSKIT_CACHE_DIR, else $XDG_CACHE_HOME/syskit, else ~/.cache/syskit),
@@ -36,13 +41,15 @@ module Syskit
         return unless @dir
 
         @installed = true
+        @libraries = library_dirs
         RubyVM::InstructionSequence.singleton_class.prepend(Hook)
       end
 
       # The compiled code of +path+, from the cache when it is current;
-      # nil for files that are not the gem's (Ruby compiles them).
+      # nil for files that are neither the gem's nor an installed
+      # library's (Ruby compiles them).
       def fetch(path)
-        return unless path.start_with?(LIB)
+        return unless path.start_with?(*@libraries)
 
         entry = entry_of(path)
         key = key_of(path)
@@ -75,6 +82,15 @@ module Syskit
       end
 
       private
+
+      # Where installed Ruby libraries are: their files change only when
+      # they are installed again, which changes their size or time.
+      def library_dirs
+        config = RbConfig::CONFIG
+        dirs = [LIB, config['rubylibdir'], config['sitedir'], config['vendordir']]
+        dirs.concat(Gem.path.map { |dir| File.join(dir, 'gems') }) if defined?(Gem)
+        dirs.compact.map { |dir| File.join(dir, '') }.uniq
+      end
 
       def cache_dir
         base = ENV.fetch('SYSKIT_CACHE_DIR') { user_cache_dir }

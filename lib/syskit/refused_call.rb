@@ -64,25 +64,25 @@ module Syskit
       found
     end
 
-    attr_reader :method
+    attr_reader :callee
 
-    def initialize(method, ruby_message)
-      @method = method
+    def initialize(callee, ruby_message)
+      @callee = callee
       @ruby_message = ruby_message
     end
 
     # [message, hint] as UserCode.describe gives them.
     def describe
-      ["#{method.name}: #{@ruby_message}", "#{method.name} takes (#{parameters})"]
+      ["#{callee.name}: #{@ruby_message}", "#{callee.name} takes (#{parameters})"]
     end
 
     # The method's parameters as they are written in a call; a module may
     # say what a method it made takes (+parameters_of(name)+: a device
     # attribute takes what its filter takes).
     def parameters
-      owner = method.owner
-      parameters = owner.respond_to?(:parameters_of) && owner.parameters_of(method.name)
-      Arguments.as_written(parameters || method.parameters).join(', ')
+      owner = callee.owner
+      parameters = owner.respond_to?(:parameters_of) && owner.parameters_of(callee.name)
+      Arguments.as_written(parameters || callee.parameters).join(', ')
     end
   end
 end

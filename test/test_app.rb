@@ -286,6 +286,23 @@ module Syskit
                       hint: %r{directory is named 'my_app_copy': rename it to 'my_app', or require 'models/devices/imu'}
     end
 
+    # A file the app's own bundle does not have: what its directory has
+    # that is closest.
+    def test_a_missing_file_of_the_apps_bundle_is_told_what_is_close
+      files = { 'config/syskit.yml' => "name: MyApp\n", 'models/devices/imu.rb' => "# the IMU\n" }
+      cases = {
+        'my_app/models/devices/imus' => %r{has no models/devices/imus\.rb \(did you mean 'imu'\?\)\z},
+        'my_app/models/device/imu' => %r{has no directory models/device \(did you mean 'devices'\?\)\z}
+      }
+      cases.each do |required, hint|
+        root = write_app(files.merge('models/devices/a.rb' => "require '#{required}'\n"), name: 'my_app')
+        error = assert_reported load_problem(root), /LoadError: cannot load such file -- #{required}/,
+                                at: 'models/devices/a.rb:1', root: root, hint: hint
+        assert_includes error.hint, "the bundle my_app (#{root})"
+        @loaded_apps.pop.unload
+      end
+    end
+
     def test_a_missing_file_under_another_bundles_name_keeps_the_plain_hint
       root = write_app({ 'models/devices/a.rb' => "require 'other_bundle/models/devices/none'\n" }, name: 'my_app')
       error = load_problem(root)

@@ -72,7 +72,8 @@ module Syskit
         ["out of memory (#{first_line(exception.message)})", 'look for a loop that builds ever bigger values']
       when LoadError
         ["#{exception.class}: #{first_line(exception.message)}",
-         renamed_app_hint(exception.path) || 'fix the code at this line (run with --trace for the backtrace)']
+         renamed_app_hint(exception.path) || missing_file_hint(exception.path) ||
+           'fix the code at this line (run with --trace for the backtrace)']
       else
         RefusedCall.of(exception)&.describe ||
           ["#{exception.class}: #{first_line(exception.message)}",
@@ -92,6 +93,36 @@ module Syskit
       "'#{name}/#{relative}' is this app's own #{relative}, found through the name of the app's " \
         "directory as Rock does, but the directory is named '#{File.basename(root)}': rename it to " \
         "'#{name}', or require '#{relative}'"
+    end
+
+    # A file of one of the app's bundles ('NAME/models/x') that does not
+    # exist: what its directory has that is closest. nil for another file.
+    def missing_file_hint(required)
+      name, relative = required.to_s.match(%r{\A([^/]+)/(models/.+)\z})&.captures
+      bundle = name && Syskit.app&.bundles&.find { |b| File.basename(b.root) == name }
+      return unless bundle
+
+      missing = "the bundle #{name} (#{bundle.root}) has no"
+      dir = File.dirname(relative)
+      if File.directory?(File.join(bundle.root, dir))
+        file = "#{relative.delete_suffix('.rb')}.rb"
+        "#{missing} #{file}#{closest(File.join(bundle.root, file), '.rb')}"
+      else
+        "#{missing} directory #{dir}#{closest(File.join(bundle.root, dir), nil)}"
+      end
+    end
+
+    # " (did you mean 'x'?)" for the names beside +path+ closest to its own:
+    # files ending in +suffix+, or directories when it is nil; '' for none.
+    def closest(path, suffix)
+      dir = File.dirname(path)
+      names = File.directory?(dir) ? Dir.children(dir) : []
+      names = if suffix
+                names.grep(/#{Regexp.escape(suffix)}\z/).map { |n| n.delete_suffix(suffix) }
+              else
+                names.select { |n| File.directory?(File.join(dir, n)) }
+              end
+      Naming.did_you_mean(File.basename(path, suffix.to_s), names)
     end
 
     def location_of(exception, path, root = nil)

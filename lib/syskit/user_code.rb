@@ -17,6 +17,10 @@ module Syskit
     TOPLEVEL_INSTANCE_EVAL =
       TOPLEVEL_BINDING.eval('->(receiver, source, path) { receiver.instance_eval(source, path, 1) }')
 
+    # A file required through its bundle's name, as Rock finds them:
+    # 'NAME/models/x' (the bundle's directory name, the path in it).
+    BUNDLE_FILE = %r{\A([^/]+)/(models/.+)\z}
+
     module_function
 
     # Evaluates the file at +path+ with +receiver+ as self; what it raises
@@ -85,7 +89,7 @@ module Syskit
     # app copied or cloned under another name no longer finds its own
     # files required that way. The hint for such a require, nil otherwise.
     def renamed_app_hint(required)
-      name, relative = required.to_s.match(%r{\A([^/]+)/(models/.+)\z})&.captures
+      name, relative = required.to_s.match(BUNDLE_FILE)&.captures
       root = Syskit.app&.root
       return unless name && root && File.basename(root) != name &&
                     File.file?(File.join(root, "#{relative.delete_suffix('.rb')}.rb"))
@@ -98,7 +102,7 @@ module Syskit
     # A file of one of the app's bundles ('NAME/models/x') that does not
     # exist: what its directory has that is closest. nil for another file.
     def missing_file_hint(required)
-      name, relative = required.to_s.match(%r{\A([^/]+)/(models/.+)\z})&.captures
+      name, relative = required.to_s.match(BUNDLE_FILE)&.captures
       bundle = name && Syskit.app&.bundles&.find { |b| File.basename(b.root) == name }
       return unless bundle
 

@@ -170,13 +170,23 @@ module Syskit
     end
 
     def test_invalid_chained_values
-      { ".prefer_deployed_tasks(3)\n" => [/prefer_deployed_tasks expects regexps or names, got 3/,
+      cases = {
+        ".prefer_deployed_tasks(3)\n" => [/prefer_deployed_tasks expects regexps or names, got 3/,
                                           %r{prefer_deployed_tasks\(/forward/\)}],
         ".with_conf\n" => [/with_conf needs at least one section name/, /with_conf\('default', 'forward'\)/],
         ".period(-1)\n" => [/invalid period -1 for device 'imu'/, /period takes a positive number of seconds/],
-        ".doc(3)\n" => [/invalid doc 3 for device 'imu'/, /doc takes a string/] }.each do |call, (message, hint)|
-        error, root = problem("device(Devices::IMU, as: 'imu')\n  #{call}")
-        assert_reported error, message, at: 'models/profiles/base.rb:10', hint: hint, root: root
+        ".doc(3)\n" => [/invalid doc 3 for device 'imu'/, /doc takes a string/]
+      }
+      assert_each_reported(cases.transform_keys { |call| "device(Devices::IMU, as: 'imu')\n  #{call}" },
+                           at: 'models/profiles/base.rb:10')
+    end
+
+    # Each robot block of +cases+ (robot => [message, hint, location]) fails
+    # to load with that message and hint, at that location or +at+.
+    def assert_each_reported(cases, at: nil)
+      cases.each do |robot, (message, hint, location)|
+        error, root = problem(robot)
+        assert_reported error, message, at: location || at, hint: hint, root: root
         @loaded_apps.pop.unload
       end
     end
@@ -192,16 +202,14 @@ module Syskit
         'can_id(1, 2, 3)' => [/\Acan_id: wrong number of arguments \(given 3, expected 0\.\.2\)/,
                               /\Acan_id takes \(id, mask = \.\.\.\)\z/]
       }
-      cases.each do |call, (message, hint)|
-        robot = <<~RUBY
+      robots = cases.transform_keys do |call|
+        <<~RUBY
           com_bus CommonModels::Devices::Bus::CAN, as: 'can0'
           device(Devices::TemperatureSensor, as: 't').attach_to('can0')
             .#{call}
         RUBY
-        error, root = problem(robot)
-        assert_reported error, message, at: 'models/profiles/base.rb:11', hint: hint, root: root
-        @loaded_apps.pop.unload
       end
+      assert_each_reported(robots, at: 'models/profiles/base.rb:11')
     end
 
     # Ruby refuses these calls before the statement runs; the message
@@ -218,11 +226,7 @@ module Syskit
           [/\Athrough: wrong number of arguments \(given 2, expected 1\)/, /\Athrough takes \(bus_name, &block\)\z/,
            'models/profiles/base.rb:10']
       }
-      cases.each do |robot, (message, hint, at)|
-        error, root = problem(robot)
-        assert_reported error, message, at: at, hint: hint, root: root
-        @loaded_apps.pop.unload
-      end
+      assert_each_reported(cases)
     end
 
     def test_unknown_statement_in_a_robot_block
